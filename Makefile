@@ -1,0 +1,42 @@
+# asymslip -- the user's entry points.  `make` sets up .venv if needed, regenerates the formulas
+# and prints the demo; `make test` runs every test.  Both create the environment on first use.
+
+PYTHON ?= python3
+VENV   := .venv
+PY     := $(VENV)/bin/python
+STAMP  := $(VENV)/.installed-stamp
+EXTRAS := derive,dev,plot
+
+.DEFAULT_GOAL := all
+.PHONY: all env demo generate check-generated verify test bench figures report accuracy clean help
+
+all: generate demo ## set up the environment, regenerate the formulas, print the demo
+
+help: ## list the targets
+	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 20
+
+# Reinstall only when the project metadata changed; the editable install sees code edits.
+$(STAMP): pyproject.toml
+	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --disable-pip-version-check -e '.[$(EXTRAS)]'
+	@touch $(STAMP)
+
+env: $(STAMP) ## create .venv and install asymslip with its extras
+
+generate: $(STAMP) ## run the derivations and write generated/asymslip_gen
+	$(PY) -m asymslip.codegen generate
+
+check-generated: $(STAMP) ## regenerate (two hash seeds) and diff against the committed package
+	$(PY) -m asymslip.codegen check
+
+verify: $(STAMP) ## run every derivation, one line per paper equation
+	$(PY) -m asymslip.codegen verify
+
+demo: $(STAMP) ## the paper's Fig. 5 example: a1, a2, b and the slip-zone width
+	$(PY) -m asymslip slip-zone --law hertz --R 1 --E-star 1 --mu 0.1 --P1 100 --Q1 0 --P2 105 --Q2 1
+
+test: $(STAMP) ## run the whole test suite (pytest -W error)
+	$(PY) -m pytest
+
+clean: ## remove the virtual environment and caches
+	rm -rf $(VENV) .pytest_cache .ruff_cache .hypothesis build src/*.egg-info
