@@ -119,6 +119,16 @@ def derive() -> Derivation:
         returns="P [force/length].",
     )
     d.emit(
+        name="hertz_load_slope",
+        args=(Argument(a, "Contact half-width a > 0 [length]."), RADIUS, MODULUS),
+        expr=sympy.diff(hertz_load(), a),
+        equations=("29",),
+        summary="Slope dP/da of the Hertzian contact law.",
+        doc="Derivative of (29) as P(a); positive, so the law is increasing.",
+        module="hertz",
+        returns="dP/da [force/length^2].",
+    )
+    d.emit(
         name="hertz_half_width",
         args=(LOAD, RADIUS, MODULUS),
         expr=hertz_half_width(),
@@ -137,6 +147,16 @@ def derive() -> Derivation:
         doc="(19) applied to the Hertz law (29).",
         module="hertz",
         returns="L_I [force/length^(5/2)].",
+    )
+    d.emit(
+        name="hertz_normal_edge_multiplier_slope",
+        args=(LOAD, RADIUS, MODULUS),
+        expr=sympy.simplify(sympy.diff(hertz_multiplier(), P)),
+        equations=("30",),
+        summary="Slope dL_I/dP of the Hertzian normal edge multiplier (= L_I / 4P).",
+        doc="Derivative of (31) with respect to the load; enters the validity measure (26).",
+        module="hertz",
+        returns="dL_I/dP.",
     )
     d.emit(
         name="hertz_half_width_growth",

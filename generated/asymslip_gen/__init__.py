@@ -18,8 +18,10 @@ from asymslip_gen.edge_multipliers import (
 )
 from asymslip_gen.hertz import (
     hertz_load,
+    hertz_load_slope,
     hertz_half_width,
     hertz_normal_edge_multiplier,
+    hertz_normal_edge_multiplier_slope,
     hertz_half_width_growth,
 )
 from asymslip_gen.validity import (
@@ -37,7 +39,9 @@ __all__ = [
     "hertz_half_width",
     "hertz_half_width_growth",
     "hertz_load",
+    "hertz_load_slope",
     "hertz_normal_edge_multiplier",
+    "hertz_normal_edge_multiplier_slope",
     "multiplier_growth_measure",
     "normal_edge_multiplier",
     "relative_slip_zone_measure",

@@ -14,8 +14,10 @@ FloatArray = NDArray[numpy.float64] | numpy.float64
 
 __all__ = [
     "hertz_load",
+    "hertz_load_slope",
     "hertz_half_width",
     "hertz_normal_edge_multiplier",
+    "hertz_normal_edge_multiplier_slope",
     "hertz_half_width_growth",
 ]
 
@@ -42,6 +44,30 @@ def hertz_load(a: ArrayLike, R: ArrayLike, E_star: ArrayLike) -> FloatArray:
         P [force/length].
     """
     return (1 / 4) * numpy.pi * E_star * a**2 / R
+
+
+def hertz_load_slope(a: ArrayLike, R: ArrayLike, E_star: ArrayLike) -> FloatArray:
+    """Slope dP/da of the Hertzian contact law.
+
+    Derivative of (29) as P(a); positive, so the law is increasing.
+
+    Implements Eq. (29) of the paper; derived in ``derivations/contact_law_hertz.py``.
+
+    Parameters
+    ----------
+    a : array_like
+        Contact half-width a > 0 [length].
+    R : array_like
+        Radius of the cylinder, R > 0 [length].
+    E_star : array_like
+        Plane-strain contact modulus E* > 0 [force/length^2].
+
+    Returns
+    -------
+    ndarray or float64
+        dP/da [force/length^2].
+    """
+    return (1 / 2) * numpy.pi * E_star * a / R
 
 
 def hertz_half_width(P: ArrayLike, R: ArrayLike, E_star: ArrayLike) -> FloatArray:
@@ -90,6 +116,30 @@ def hertz_normal_edge_multiplier(P: ArrayLike, R: ArrayLike, E_star: ArrayLike) 
         L_I [force/length^(5/2)].
     """
     return E_star ** (3 / 4) * P ** (1 / 4) / (numpy.pi ** (1 / 4) * R ** (3 / 4))
+
+
+def hertz_normal_edge_multiplier_slope(P: ArrayLike, R: ArrayLike, E_star: ArrayLike) -> FloatArray:
+    """Slope dL_I/dP of the Hertzian normal edge multiplier (= L_I / 4P).
+
+    Derivative of (31) with respect to the load; enters the validity measure (26).
+
+    Implements Eq. (30) of the paper; derived in ``derivations/contact_law_hertz.py``.
+
+    Parameters
+    ----------
+    P : array_like
+        Normal load per unit length, P > 0 [force/length].
+    R : array_like
+        Radius of the cylinder, R > 0 [length].
+    E_star : array_like
+        Plane-strain contact modulus E* > 0 [force/length^2].
+
+    Returns
+    -------
+    ndarray or float64
+        dL_I/dP.
+    """
+    return (1 / 4) * E_star ** (3 / 4) / (numpy.pi ** (1 / 4) * P ** (3 / 4) * R ** (3 / 4))
 
 
 def hertz_half_width_growth(

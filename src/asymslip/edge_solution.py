@@ -1,0 +1,235 @@
+"""Steady-state slip zone at a contact edge: the paper's Section 2 applied to a law and a cycle.
+
+:func:`slip_zone` is the public, validating entry point (one cycle, or arrays of cycles that
+are all valid).  :func:`edge_quantities` is the vectorised core that sweeps reuse.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+from typing import Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from asymslip_gen.corrective_slip import slip_zone_width, stick_boundary_proportional
+from asymslip_gen.edge_multipliers import shear_edge_multiplier_proportional
+from asymslip_gen.validity import (
+    contact_growth_measure,
+    multiplier_growth_measure,
+    relative_slip_zone_measure,
+    slip_zone_growth_measure,
+    stick_ratio_first_order,
+)
+
+from .cycle import LoadCycle
+from .errors import InputError, positive
+from .laws.base import ContactLaw
+
+FloatArray = NDArray[np.float64]
+Edge = Literal["right", "left"]
+
+#: A validity measure above this is reported in ``warnings`` ("<< 1" made concrete).
+VALIDITY_THRESHOLD = 0.1
+
+VALIDITY_MEANING = {
+    "eq24": "contact growth dP a'(P)/a1",
+    "eq25": "slip-zone size |b - a1|/a1",
+    "eq26": "edge-multiplier growth dP |L_I'(P)|/L_I1",
+    "eq27": "necessary condition dP a'(P)/a1 |1 - lam/mu - pi eta a1/(4 mu)|",
+}
+
+
+@dataclass(frozen=True)
+class SlipZoneResult:
+    """Everything `asymslip slip-zone` reports for one edge; field names are the JSON keys.
+
+    Lengths are in the units of the law's parameters.  ``b`` is measured from the contact
+    centre along the edge's outward direction (for the left edge, b is the distance of the
+    left stick boundary from the centre).
+    """
+
+    a1: float
+    a2: float
+    lam: float
+    eta: float
+    L_I1: float
+    L_I2: float
+    L_II1: float
+    L_II2: float
+    b: float
+    slip_zone_width: float
+    b_first_order: float
+    b_exact: float | None
+    b_corrective_stick: float | None
+    validity: dict[str, float]
+    warnings: list[str] = field(default_factory=list)
+    left: SlipZoneResult | None = None
+
+    def to_dict(self) -> dict[str, object]:
+        """The JSON object: these keys, with ``left`` only when both edges were asked for."""
+        data = asdict(self)
+        data.pop("left")
+        if self.left is not None:
+            data["left"] = self.left.to_dict()
+        return data
+
+
+def edge_quantities(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> dict[str, FloatArray]:
+    """All slip-zone quantities of the right-hand edge, elementwise, without validation.
+
+    Call :func:`slip_zone` unless the inputs are already known to be valid.
+    """
+    mu = np.asarray(mu, dtype=np.float64)
+    lam, eta, dP = cycle.lam, cycle.eta, cycle.dP
+    a1 = law.half_width(cycle.P1)
+    da = law.half_width_growth(cycle.P1, dP)
+    a2 = a1 + da
+    L_I1 = law.normal_multiplier(cycle.P1)
+    L_I2 = law.normal_multiplier(cycle.P2)
+    slope1 = law.half_width_slope(cycle.P1)
+    # The measures ask for the worst a'(P), L_I'(P) on (P1, P2); the ends stand in for it.
+    worst_slope = np.maximum(slope1, law.half_width_slope(cycle.P2))
+    worst_multiplier_slope = np.maximum(
+        np.abs(law.normal_multiplier_slope(cycle.P1)),
+        np.abs(law.normal_multiplier_slope(cycle.P2)),
+    )
+    width = slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2)
+    return {
+        "a1": a1,
+        "a2": a2,
+        "lam": lam,
+        "eta": eta,
+        "L_I1": L_I1,
+        "L_I2": L_I2,
+        "L_II1": shear_edge_multiplier_proportional(lam, eta, a1, L_I1),
+        "L_II2": shear_edge_multiplier_proportional(lam, eta, a2, L_I2),
+        "b": stick_boundary_proportional(mu, lam, eta, a1, a2, L_I1, L_I2),
+        "slip_zone_width": width,
+        "b_first_order": a1 * stick_ratio_first_order(mu, lam, eta, a1, dP, slope1),
+        "eq24": contact_growth_measure(dP, worst_slope, a1),
+        "eq25": relative_slip_zone_measure(mu, lam, eta, a1, da, L_I1, L_I2),
+        "eq26": multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),
+        "eq27": slip_zone_growth_measure(mu, lam, eta, a1, dP, worst_slope),
+        "denominator": L_I1 * (mu + lam + np.pi * eta * a1 / 4)
+        + L_I2 * (mu - lam - np.pi * eta * a2 / 4),
+    }
+
+
+def permanent_stick_load(cycle: LoadCycle, mu: ArrayLike) -> FloatArray:
+    """P_K of (33): where the lines of slope -+mu through states 1 and 2 meet."""
+    return (cycle.P1 + cycle.P2) / 2 - cycle.dQ / (2 * np.asarray(mu, dtype=np.float64))
+
+
+def _exact_stick_boundary(law: ContactLaw, cycle: LoadCycle, mu: float,
+                          warnings: list[str]) -> float | None:
+    """b = a(P_K) (Jaeger-Ciavarella), exact for any symmetric law when eta = 0."""
+    if float(cycle.eta) != 0.0:
+        return None
+    P_K = float(permanent_stick_load(cycle, mu))
+    if P_K <= 0:
+        warnings.append(
+            f"P_K = {P_K:.6g} <= 0: the shear change exceeds friction over the whole cycle, "
+            "so this is not a cycle of partial slip and b_exact does not exist"
+        )
+        return None
+    b_exact = float(law.half_width(P_K))
+    if P_K >= float(cycle.P2):
+        warnings.append(
+            f"P_K = {P_K:.6g} >= P2: the whole state-2 contact sticks at this edge (no slip)"
+        )
+    return b_exact
+
+
+def _single_edge(law: ContactLaw, cycle: LoadCycle, mu: float) -> SlipZoneResult:
+    values = {key: float(value) for key, value in edge_quantities(law, cycle, mu).items()}
+    law.check_increasing(np.asarray(values["a1"]), np.asarray(values["a2"]))
+    denominator = values.pop("denominator")
+    scale = values["L_I1"] * mu + abs(values["L_II1"]) + values["L_I2"] * mu + abs(values["L_II2"])
+    if abs(denominator) <= 64 * np.finfo(float).eps * scale:
+        raise InputError(
+            "mu",
+            "the denominator of (17), mu (L_I1 + L_I2) + L_II1 - L_II2, is zero for this "
+            "friction coefficient and load path: no stick boundary exists",
+            mu,
+        )
+    warnings: list[str] = []
+    validity = {key: values.pop(key) for key in VALIDITY_MEANING}
+    for key, value in validity.items():
+        if value > VALIDITY_THRESHOLD:
+            warnings.append(
+                f"{key} = {value:.3g} > {VALIDITY_THRESHOLD}: {VALIDITY_MEANING[key]} is not "
+                "small, so the asymptotic solution is doubtful"
+            )
+    if denominator < 0:
+        warnings.append("the denominator of (17) is negative: no steady partial-slip state")
+    if values["b"] >= values["a2"]:
+        warnings.append("b >= a2: the edge sticks over the whole cycle (no slip zone)")
+    elif values["slip_zone_width"] <= 0:
+        warnings.append(
+            "b >= a1: the loading needs no slip inside the state-1 contact "
+            "(lam + pi eta a2/4 <= mu); slip, if any, lies in (a1, a2), outside the range "
+            "of Section 2's solution"
+        )
+    b_exact = _exact_stick_boundary(law, cycle, mu, warnings)
+    return SlipZoneResult(
+        **values,
+        b_exact=b_exact,
+        b_corrective_stick=None,
+        validity=validity,
+        warnings=warnings,
+    )
+
+
+def slip_zone(
+    law: ContactLaw,
+    cycle: LoadCycle,
+    mu: float,
+    *,
+    edge: Literal["right", "left", "both"] = "right",
+) -> SlipZoneResult:
+    """Steady-state slip zone at a contact edge for one load cycle.
+
+    Parameters
+    ----------
+    law
+        The contact law, e.g. ``HertzLaw(R=1, E_star=1)``.
+    cycle
+        The load cycle (states 1 and 2, P2 > P1).
+    mu
+        Coefficient of friction, > 0.
+    edge
+        ``"right"`` (the paper's edge), ``"left"``, or ``"both"`` (right-edge fields at the
+        top level and the left edge's in ``.left``).
+
+    Returns
+    -------
+    SlipZoneResult
+        b from (22), the slip-zone width a1 - b (cancellation-free), b/a1 to first order (28),
+        the exact b = a(P_K) of (33)-(34) when eta = 0, and the validity measures (24)-(27).
+
+    Raises
+    ------
+    InputError
+        Naming the parameter and the rule: mu <= 0, non-finite values, a decreasing law, a zero
+        denominator in (17).
+
+    Examples
+    --------
+    >>> from asymslip import HertzLaw, LoadCycle, slip_zone
+    >>> result = slip_zone(HertzLaw(R=1, E_star=1), LoadCycle(100, 0, 105, 1), mu=0.1)
+    >>> round(result.slip_zone_width, 6)
+    0.141908
+    """
+    mu = float(positive("mu", mu))
+    if np.ndim(cycle.P1) or np.ndim(cycle.P2):
+        raise InputError("cycle", "slip_zone takes one cycle; use asymslip sweep for many")
+    if edge not in ("right", "left", "both"):
+        raise InputError("edge", "must be 'right', 'left' or 'both'", edge)
+    if edge == "left":
+        return _single_edge(law, cycle.mirrored(), mu)
+    right = _single_edge(law, cycle, mu)
+    if edge == "both":
+        left = _single_edge(law, cycle.mirrored(), mu)
+        return SlipZoneResult(**{**right.__dict__, "left": left})
+    return right
