@@ -198,8 +198,8 @@ def stick_ratio_first_order(
     ndarray or float64
         b / a1, dimensionless.
     """
-    tmp0 = a1 ** (-1.0)
-    tmp1 = mu ** (-1.0)
+    tmp0 = 1 / a1
+    tmp1 = 1 / mu
     tmp2 = dP * da_dP
     return (
         (1 / 2) * dP * da_dP * tmp0

@@ -31,6 +31,13 @@ class GeneratedCodePrinter(NumPyPrinter):
     def _print_Min(self, expr: sympy.Min) -> str:
         return self._print_elementwise_fold("numpy.minimum", expr.args)
 
+    def _print_Pow(self, expr: sympy.Pow, rational: bool = False) -> str:
+        # NumPyPrinter writes x**(-1.0) so that integer arrays do not fail; a division says the
+        # same thing plainly and is just as safe.
+        if expr.exp == -1:
+            return f"1/{self.parenthesize(expr.base, sympy.printing.precedence.PRECEDENCE['Pow'])}"
+        return super()._print_Pow(expr, rational=rational)
+
     def _print_Piecewise(self, expr: sympy.Piecewise) -> str:
         raise TypeError("Piecewise is not allowed in generated code; use a branch-free form")
 
