@@ -5,7 +5,7 @@ PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
-EXTRAS := derive,dev,plot
+EXTRAS := derive,dev,plot,bench
 
 .DEFAULT_GOAL := all
 .PHONY: all env demo generate check-generated verify test bench figures report accuracy clean help
@@ -23,8 +23,8 @@ $(STAMP): pyproject.toml
 
 env: $(STAMP) ## create .venv and install asymslip with its extras
 
-generate: $(STAMP) ## run the derivations and write generated/asymslip_gen
-	$(PY) -m asymslip.codegen generate
+generate: $(STAMP) ## run the derivations, write generated/asymslip_gen and the report
+	$(PY) -m asymslip.codegen generate --report generated/report/derivation.md
 
 check-generated: $(STAMP) ## regenerate (two hash seeds) and diff against the committed package
 	$(PY) -m asymslip.codegen check
@@ -37,6 +37,18 @@ demo: $(STAMP) ## the paper's Fig. 5 example: a1, a2, b and the slip-zone width
 
 test: $(STAMP) ## run the whole test suite (pytest -W error)
 	$(PY) -m pytest
+
+figures: $(STAMP) ## write generated/figures/fig5.png and fig5.csv (the paper's Fig. 5)
+	$(PY) -m asymslip figure fig5 --out generated/figures
+
+report: $(STAMP) ## write generated/report/derivation.md from the derivation records
+	$(PY) -m asymslip.codegen report
+
+bench: $(STAMP) ## benchmark ratios measured in one process (needs the bench extra)
+	$(PY) tests/benchmarks/run_benchmarks.py
+
+accuracy: $(STAMP) ## the long accuracy run against 50-digit mpmath
+	$(PY) -m tests.accuracy.harness --samples 20000
 
 clean: ## remove the virtual environment and caches
 	rm -rf $(VENV) .pytest_cache .ruff_cache .hypothesis build src/*.egg-info

@@ -1,18 +1,27 @@
-"""Both contact edges: the left-hand edge's problem mapped onto the paper's right-hand edge.
+"""Both contact edges and both slip directions, mapped onto the paper's Section 2 problem.
 
-Mirror the plane, x' = -x.  Normal tractions keep their sign, tangential tractions change sign.
-The full-stick shear traction of a bonded strip of half-width c under shear force Q and
-differential bulk tension sigma is q = (Q/pi + sigma x/4) / sqrt(c^2 - x^2), the building block
-of (20): the Q part is even in x, the sigma part odd.  In the mirrored frame the left edge
-becomes a right edge whose shear traction is that of loads (-Q, +sigma), and the pressure
-(even) is unchanged.  So the left edge is the paper's problem with lambda -> -lambda, eta -> eta.
+Section 2 treats the right-hand edge with forward slip on loading, q2 = +mu p2 (8) and
+q1 = -mu p1 (11).  Two symmetries carry every other case onto it:
+
+* Mirror, x' = -x (E1): normal tractions keep their sign, tangential ones change sign.  The
+  full-stick shear traction of a bonded strip, q = (Q/pi + sigma x/4)/sqrt(c^2 - x^2) -- the
+  building block of (20) -- has an even Q part and an odd sigma part, so the left edge is a
+  right edge loaded by (-Q, +sigma): lambda -> -lambda, eta -> eta.
+* Reversal, q -> -q (E2): backward slip on loading (q2 = -mu p2, q1 = +mu p1) under loads
+  (L_II1, L_II2) is forward slip under (-L_II1, -L_II2) with the dislocation traction negated:
+  lambda -> -lambda, eta -> -eta.
+
+Near the state-2 edge (a1 < x < a2) the state-1 traction is zero, so loading slips there iff
+|L_II2| > mu L_I2: forward if L_II2 > mu L_I2, backward if L_II2 < -mu L_I2, none otherwise.
 """
 
 from __future__ import annotations
 
 import sympy
 
+from _glossary import L_I1, L_I2, L_II1, L_II2, mu
 from asymslip.codegen import Derivation
+from section2_integral_equation import dislocations_12, edge1, edge2, integral_equation, q1
 
 x, c = sympy.symbols("x c", real=True)
 Q, sigma = sympy.symbols("Q sigma", real=True)
@@ -21,6 +30,15 @@ Q, sigma = sympy.symbols("Q sigma", real=True)
 def bonded_strip_shear(position: sympy.Expr, shear: sympy.Expr, tension: sympy.Expr) -> sympy.Expr:
     """Full-stick shear traction of a bonded strip (the integrand of (20)'s superposition)."""
     return (shear / sympy.pi + tension * position / 4) / sympy.sqrt(c**2 - position**2)
+
+
+def backward_slip_traction() -> sympy.Expr:
+    """The dislocation traction (12) when loading slips backwards: (7) with q2 = -mu p2."""
+    change_full_stick = L_II2 * edge2 - L_II1 * edge1
+    loading = sympy.Eq(q1 + change_full_stick + dislocations_12, -mu * L_I2 * edge2)
+    unloading = sympy.Eq(q1, mu * L_I1 * edge1)
+    (solution,) = sympy.solve([loading, unloading], [dislocations_12, q1], dict=True)
+    return sympy.expand(solution[dislocations_12])
 
 
 def derive() -> Derivation:
@@ -34,5 +52,15 @@ def derive() -> Derivation:
             "in x) changes sign, the bulk-tension term (odd in x) does not; so at the left edge "
             "lambda -> -lambda and eta -> eta, and the pressure multiplier L_I is unchanged",
             derived=bonded_strip_shear(x, -Q, sigma),
+        )
+    with d.equation("E2", "Backward slip = forward slip with L_II -> -L_II, traction negated") as eq:
+        eq.beyond_paper("the paper's (8) and (11) assume forward slip on loading (lambda > mu)")
+        forward_reversed = integral_equation().subs({L_II1: -L_II1, L_II2: -L_II2},
+                                                    simultaneous=True)  # fmt: skip
+        eq.holds(
+            backward_slip_traction() + forward_reversed,
+            how="(12) with q2 = -mu p2, q1 = +mu p1 is minus (12) with L_II -> -L_II: the "
+            "density and q_diff change sign, b is that of (lambda, eta) -> (-lambda, -eta)",
+            derived=backward_slip_traction(),
         )
     return d

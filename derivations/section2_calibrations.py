@@ -35,7 +35,12 @@ from _glossary import (
     mu,
 )
 from asymslip.codegen import Derivation
-from section2_consistency import stick_boundary
+from section2_consistency import (
+    coefficient1,
+    coefficient2,
+    load_coefficients,
+    stick_boundary_in_coefficients,
+)
 
 delta, v, c = sympy.symbols("delta v c", positive=True)  # delta = a - x
 load_slope = sympy.Function("Pprime")  # P'(a) of an arbitrary contact law
@@ -81,23 +86,36 @@ def shear_multiplier_proportional() -> sympy.Expr:
     return ratio * L_I
 
 
+def proportional_coefficients(growth: sympy.Expr | None = None) -> dict:
+    """C1, C2 of (17) with L_II,i = (lam + pi eta a_i / 4) L_I,i from (21), factored.
+
+    With ``growth``, a2 is written a1 + growth.
+    """
+    top = a2 if growth is None else a1 + growth
+    at_state = {
+        L_II1: shear_multiplier_proportional().subs({L_I: L_I1, a: a1}),
+        L_II2: shear_multiplier_proportional().subs({L_I: L_I2, a: top}),
+    }
+    return {
+        symbol: sympy.factor(value.subs(at_state).subs(a2, top))
+        for symbol, value in load_coefficients().items()
+    }
+
+
 @functools.cache
 def stick_boundary_proportional() -> sympy.Expr:
     """(22): (17) with L_II,i = (lam + pi eta a_i / 4) L_I,i."""
-    at_state = {
-        L_II1: shear_multiplier_proportional().subs({L_I: L_I1, a: a1}),
-        L_II2: shear_multiplier_proportional().subs({L_I: L_I2, a: a2}),
-    }
-    return sympy.factor(stick_boundary().subs(at_state))
+    return stick_boundary_in_coefficients().subs(proportional_coefficients())
 
 
 @functools.cache
 def slip_zone_width() -> sympy.Expr:
-    """a1 - b from (22) with a2 = a1 + da, factored so that da multiplies it exactly."""
-    width = sympy.factor(a1 - stick_boundary_proportional().subs(a2, a1 + da))
+    """a1 - b from (17) with a2 = a1 + da: -C2 da / (C1 + C2), da an exact factor."""
+    width = sympy.factor(a1 - stick_boundary_in_coefficients().subs(a2, a1 + da))
     numerator, _ = sympy.fraction(width)
     assert sympy.Mul.make_args(numerator).count(da) == 1, "da must factor out of a1 - b"
-    return width
+    assert width.free_symbols == {coefficient1, coefficient2, da}
+    return width.subs(proportional_coefficients(growth=da))
 
 
 def _paper_bracket(sign: int, a_i: sympy.Expr) -> sympy.Expr:

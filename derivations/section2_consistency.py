@@ -21,19 +21,35 @@ def scaled_weight_integral(lower: sympy.Expr, top: sympy.Expr) -> sympy.Expr:
     return sympy.simplify(top * weight_integral().subs(beta, lower / top))
 
 
+# The two load coefficients of (12), kept as symbols while solving so that the root keeps the
+# structure (C2 a2 + C1 a1)/(C2 + C1): four array operations at run time instead of a dozen.
+coefficient1, coefficient2 = sympy.symbols("C_1 C_2", real=True)
+
+
+def load_coefficients() -> dict[sympy.Symbol, sympy.Expr]:
+    """C1 = mu L_I1 + L_II1 and C2 = mu L_I2 - L_II2, the coefficients in (12) and (16)."""
+    return {coefficient1: mu * L_I1 + L_II1, coefficient2: mu * L_I2 - L_II2}
+
+
 @functools.cache
 def consistency_condition() -> sympy.Expr:
     """Right side of (16), as a function of the stick boundary b."""
-    return (mu * L_I1 + L_II1) * scaled_weight_integral(b, a1) + (
-        mu * L_I2 - L_II2
-    ) * scaled_weight_integral(b, a2)
+    return coefficient1 * scaled_weight_integral(b, a1) + coefficient2 * scaled_weight_integral(
+        b, a2
+    )
+
+
+@functools.cache
+def stick_boundary_in_coefficients() -> sympy.Expr:
+    """(17) in terms of C1, C2: the root of (16) in b."""
+    (root,) = sympy.solve(consistency_condition(), b)
+    return sympy.factor(root)
 
 
 @functools.cache
 def stick_boundary() -> sympy.Expr:
-    """(17): the root of (16) in b."""
-    (root,) = sympy.solve(consistency_condition(), b)
-    return sympy.factor(root)
+    """(17) in terms of the edge multipliers."""
+    return stick_boundary_in_coefficients().subs(load_coefficients())
 
 
 def derive() -> Derivation:

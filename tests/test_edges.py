@@ -1,4 +1,9 @@
-"""Both edges: the left edge is the paper's problem with the shear force reversed."""
+"""Both edges and both slip directions (derivations/edge_symmetry.py), against Jaeger-Ciavarella.
+
+With no bulk tension a Hertzian contact is symmetric, so both edges must give the same slip
+zone; the exact stick zone is a(P_K) with P_K from the wedge of slopes -+mu enclosing the path:
+(33) for lam >= mu, its mirror image for lam <= -mu, and P1 itself for |lam| < mu.
+"""
 
 from __future__ import annotations
 
@@ -6,41 +11,66 @@ import numpy as np
 import pytest
 
 from asymslip import HertzLaw, LoadCycle, slip_zone
+from asymslip.tractions import traction_difference
 
 LAW = HertzLaw(R=1.0, E_star=1.0)
 MU = 0.3
+P1, DP = 100.0, 0.5
 
 
 def _hertz_half_width(P: float) -> float:
     return np.sqrt(4 * P / np.pi)  # (29) with R = E* = 1, typed from the paper
 
 
-def test_left_edge_slips_when_the_shear_force_falls_faster_than_friction_allows():
-    # lam = -0.5 < -mu: by Jaeger-Ciavarella the left edge's permanent stick zone is a(P_K')
-    # with P_K' = (P1 + P2)/2 + (Q2 - Q1)/(2 mu), the mirror image of (33).
-    P1, dP, lam = 100.0, 0.5, -0.5
-    cycle = LoadCycle(P1, 0.0, P1 + dP, lam * dP)
-    result = slip_zone(LAW, cycle, MU, edge="both")
-    P_K_left = (2 * P1 + dP) / 2 + lam * dP / (2 * MU)
-    assert result.left.b_exact == pytest.approx(_hertz_half_width(P_K_left), rel=1e-14)
-    assert result.left.slip_zone_width > 0
-    # (22) agrees with the exact stick boundary through second order in dP/P1 for Hertz:
-    # the difference is O((dP/P1)^3) of a1, here (5e-3)^3 ~ 1e-7.
-    assert abs(result.left.b - result.left.b_exact) / result.left.a1 < 1e-6
+def _hertz_pressure(x, P):
+    a = _hertz_half_width(P)
+    return 2 * P / (np.pi * a**2) * np.sqrt(np.maximum(a**2 - np.asarray(x) ** 2, 0))  # (48)
 
 
-def test_right_edge_of_the_same_cycle_sticks():
-    cycle = LoadCycle(100.0, 0.0, 100.5, -0.25)
-    result = slip_zone(LAW, cycle, MU)
-    assert result.b >= result.a2
-    assert any("no slip" in warning for warning in result.warnings)
+@pytest.mark.parametrize("lam", [0.5, -0.5, 1.2, -1.2])
+def test_without_bulk_tension_both_edges_of_a_hertz_contact_slip_alike(lam):
+    result = slip_zone(LAW, LoadCycle(P1, 0.0, P1 + DP, lam * DP), MU, edge="both")
+    for key in ("b", "slip_zone_width", "b_first_order", "b_exact", "b_corrective_stick"):
+        assert getattr(result.left, key) == pytest.approx(getattr(result, key), rel=1e-14), key
+    assert result.left.lam == -result.lam
 
 
-def test_bulk_tension_keeps_its_sign_at_the_left_edge():
-    cycle = LoadCycle(100.0, 0.0, 101.0, 0.5, sigma1=0.0, sigma2=0.02)
+@pytest.mark.parametrize("lam", [0.5, -0.5])
+def test_the_exact_stick_zone_is_a_of_P_K_from_the_enclosing_wedge(lam):
+    result = slip_zone(LAW, LoadCycle(P1, 0.0, P1 + DP, lam * DP), MU)
+    P_K = P1 + DP * (MU - abs(lam)) / (2 * MU)  # (33) and its mirror image
+    assert result.b_exact == pytest.approx(_hertz_half_width(P_K), rel=1e-14)
+    # (22) agrees with the exact result through second order in dP/P1 for Hertz.
+    assert abs(result.b - result.b_exact) / result.a1 < 1e-6
+
+
+@pytest.mark.parametrize("lam", [0.0, 0.29, -0.29])
+def test_no_slip_when_the_shear_change_stays_within_friction(lam):
+    result = slip_zone(LAW, LoadCycle(P1, 0.0, P1 + DP, lam * DP), MU)
+    assert result.slip_zone_width == 0.0
+    assert result.b == result.a1 == result.b_exact
+    assert any(warning.startswith("no slip at this edge") for warning in result.warnings)
+
+
+def test_backward_slip_reverses_the_traction_difference():
+    cycle = LoadCycle(P1, 0.0, P1 + DP, -0.5 * DP)
+    x = np.array([0.0, 0.5 * _hertz_half_width(P1), 0.9 * _hertz_half_width(P1 + DP)])
+    result = traction_difference(LAW, cycle, MU, x, stick_boundary="exact")
+    P_K = P1 + DP * (MU - 0.5) / (2 * MU)
+    exact = -MU * (_hertz_pressure(x, P1 + DP) + _hertz_pressure(x, P1)
+                   - 2 * _hertz_pressure(x, P_K))  # (47), negated for backward slip
+    np.testing.assert_allclose(result.q_diff_exact, exact, rtol=1e-12)
+    forward = traction_difference(LAW, LoadCycle(P1, 0.0, P1 + DP, 0.5 * DP), MU, x,
+                                  stick_boundary="exact")  # fmt: skip
+    np.testing.assert_allclose(result.q_diff, -np.array(forward.q_diff), rtol=1e-14)
+
+
+def test_bulk_tension_keeps_its_sign_at_the_left_edge_and_breaks_the_symmetry():
+    cycle = LoadCycle(P1, 0.0, P1 + 1.0, 0.5, sigma1=0.0, sigma2=0.02)
     right = slip_zone(LAW, cycle, MU)
     left = slip_zone(LAW, cycle, MU, edge="left")
     assert (left.lam, left.eta) == (-right.lam, right.eta)
     # L_II = (lam + pi eta a/4) L_I (21): the tension term enters both edges alike.
     tension_term = np.pi * right.eta * right.a1 / 4 * right.L_I1
     assert left.L_II1 + right.L_II1 == pytest.approx(2 * tension_term, rel=1e-12)
+    assert left.b != pytest.approx(right.b, rel=1e-6)

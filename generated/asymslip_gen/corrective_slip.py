@@ -61,17 +61,11 @@ def stick_boundary_proportional(
         Stick boundary b, same units as a1.
     """
     tmp0 = 4 * lam
-    tmp1 = L_I1 * tmp0
-    tmp2 = 4 * mu
-    tmp3 = L_I1 * tmp2
-    tmp4 = L_I2 * tmp0
-    tmp5 = L_I2 * tmp2
-    tmp6 = numpy.pi * eta
-    tmp7 = L_I1 * tmp6
-    tmp8 = L_I2 * tmp6
-    return (a1**2 * tmp7 + a1 * tmp1 + a1 * tmp3 - a2**2 * tmp8 - a2 * tmp4 + a2 * tmp5) / (
-        a1 * tmp7 - a2 * tmp8 + tmp1 + tmp3 - tmp4 + tmp5
-    )
+    tmp1 = 4 * mu
+    tmp2 = numpy.pi * eta
+    tmp3 = (1 / 4) * L_I1 * (a1 * tmp2 + tmp0 + tmp1)
+    tmp4 = (1 / 4) * L_I2 * (a2 * tmp2 + tmp0 - tmp1)
+    return (a1 * tmp3 - a2 * tmp4) / (tmp3 - tmp4)
 
 
 def slip_zone_width(
@@ -115,25 +109,11 @@ def slip_zone_width(
     ndarray or float64
         a1 - b, same units as a1.
     """
-    tmp0 = 4 * lam
-    tmp1 = 4 * mu
-    tmp2 = numpy.pi * eta
-    tmp3 = a1 * tmp2
-    tmp4 = da * tmp2
-    return (
-        L_I2
-        * da
-        * (tmp0 - tmp1 + tmp3 + tmp4)
-        / (
-            L_I1 * tmp0
-            + L_I1 * tmp1
-            + L_I1 * tmp3
-            - L_I2 * tmp0
-            + L_I2 * tmp1
-            - L_I2 * tmp3
-            - L_I2 * tmp4
-        )
-    )
+    tmp0 = 4 * mu
+    tmp1 = numpy.pi * eta
+    tmp2 = a1 * tmp1 + 4 * lam
+    tmp3 = (1 / 4) * L_I2 * (da * tmp1 - tmp0 + tmp2)
+    return da * tmp3 / ((1 / 4) * L_I1 * (tmp0 + tmp2) - tmp3)
 
 
 def stick_boundary(
@@ -176,9 +156,9 @@ def stick_boundary(
     ndarray or float64
         Stick boundary b, same units as a1.
     """
-    tmp0 = L_I1 * mu
-    tmp1 = L_I2 * mu
-    return (L_II1 * a1 - L_II2 * a2 + a1 * tmp0 + a2 * tmp1) / (L_II1 - L_II2 + tmp0 + tmp1)
+    tmp0 = L_I1 * mu + L_II1
+    tmp1 = L_I2 * mu - L_II2
+    return (a1 * tmp0 + a2 * tmp1) / (tmp0 + tmp1)
 
 
 def dislocation_density(

@@ -86,28 +86,12 @@ def relative_slip_zone_measure(
     ndarray or float64
         Dimensionless measure.
     """
-    tmp0 = 4 * lam
-    tmp1 = 4 * mu
-    tmp2 = numpy.pi * eta
-    tmp3 = a1 * tmp2
-    tmp4 = da * tmp2
-    return (
-        L_I2
-        * da
-        * abs(
-            (tmp0 - tmp1 + tmp3 + tmp4)
-            / (
-                L_I1 * tmp0
-                + L_I1 * tmp1
-                + L_I1 * tmp3
-                - L_I2 * tmp0
-                + L_I2 * tmp1
-                - L_I2 * tmp3
-                - L_I2 * tmp4
-            )
-        )
-        / a1
-    )
+    tmp0 = 4 * mu
+    tmp1 = numpy.pi * eta
+    tmp2 = a1 * tmp1 + 4 * lam
+    tmp3 = da * tmp1 - tmp0 + tmp2
+    tmp4 = (1 / 4) * L_I2
+    return da * tmp4 * abs(tmp3 / ((1 / 4) * L_I1 * (tmp0 + tmp2) - tmp3 * tmp4)) / a1
 
 
 def multiplier_growth_measure(dP: ArrayLike, dL_I_dP: ArrayLike, L_I1: ArrayLike) -> FloatArray:

@@ -13,9 +13,12 @@ from collections.abc import Callable, Sequence
 from typing import NoReturn
 
 from .cycle import LoadCycle
+from pathlib import Path
+
 from .edge_solution import VALIDITY_MEANING, SlipZoneResult, slip_zone
 from .errors import InputError
 from .laws import ContactLaw, HertzLaw
+from .tractions import traction_difference
 
 #: API parameter name -> the option that sets it, for error messages.
 OPTION_OF = {
@@ -89,6 +92,31 @@ def build_parser() -> argparse.ArgumentParser:
                       "and the left edge's under 'left')")
     slip.add_argument("--json", action="store_true", help="print one JSON object")
     slip.set_defaults(run=_run_slip_zone)
+
+    traction = commands.add_parser(
+        "traction",
+        help="shear-traction difference q2 - q1 near the right-hand edge",
+        description="Asymptotic q_diff of (49), in closed form, and the exact (47) where the "
+        "law has a pressure distribution and eta = 0, at the given positions x (measured from "
+        "the contact centre, -a2 < x < a2).",
+    )
+    _add_law_options(traction)
+    _add_cycle_options(traction)
+    traction.add_argument("--x", type=float, nargs="+", required=True, metavar="X",
+                          help="positions from the contact centre")
+    traction.add_argument("--b", choices=["consistent", "exact"], default="consistent",
+                          help="stick boundary in (15): consistent = (17)/(22) (default), "
+                          "exact = a(P_K), the paper's choice for Fig. 5")
+    traction.add_argument("--json", action="store_true", help="print one JSON object")
+    traction.set_defaults(run=_run_traction)
+
+    figure = commands.add_parser(
+        "figure", help="draw one of the paper's figures",
+        description="Write the paper's Fig. 5 (exact solid, asymptotic dashed) as PNG and CSV.",
+    )  # fmt: skip
+    figure.add_argument("name", choices=["fig5"], help="which figure")
+    figure.add_argument("--out", type=Path, required=True, help="output folder")
+    figure.set_defaults(run=_run_figure)
     return parser
 
 
@@ -134,6 +162,28 @@ def _run_slip_zone(args: argparse.Namespace) -> int:
         print(format_table(result.left, "left", law.name, args.mu))
     else:
         print(format_table(result, args.edge, law.name, args.mu))
+    return 0
+
+
+def _run_traction(args: argparse.Namespace) -> int:
+    result = traction_difference(build_law(args), build_cycle(args), args.mu, args.x,
+                                 stick_boundary=args.b)  # fmt: skip
+    if args.json:
+        print(json.dumps(result.to_dict(), indent=2))
+        return 0
+    print(f"q_diff = q2 - q1 at the right-hand edge (b = {result.b:.12g}, {args.b} choice)")
+    print(f"  {'x':>20} {'q_diff (49)':>20} {'q_diff_exact (47)':>20}")
+    exact = result.q_diff_exact or [None] * len(result.x)
+    for x, q, q_exact in zip(result.x, result.q_diff, exact, strict=True):
+        print(f"  {x:>20.12g} {q:>20.12g} {_format_number(q_exact):>20}")
+    return 0
+
+
+def _run_figure(args: argparse.Namespace) -> int:
+    from .figures import write_fig5
+
+    for path in write_fig5(args.out):
+        print(path)
     return 0
 
 

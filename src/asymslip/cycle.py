@@ -84,7 +84,3 @@ class LoadCycle:
     def eta(self) -> FloatArray:
         """eta = dsigma/dP (18)."""
         return self.dsigma / self.dP
-
-    def mirrored(self) -> LoadCycle:
-        """The same cycle seen from the left-hand edge: Q changes sign, sigma does not."""
-        return LoadCycle(self.P1, -self.Q1, self.P2, -self.Q2, self.sigma1, self.sigma2)

@@ -13,7 +13,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from asymslip_gen.corrective_slip import slip_zone_width, stick_boundary_proportional
+from asymslip_gen.corrective_stick import corrective_stick_slip_zone_width
 from asymslip_gen.edge_multipliers import shear_edge_multiplier_proportional
+from asymslip_gen.exact_solution import permanent_stick_load
 from asymslip_gen.validity import (
     contact_growth_measure,
     multiplier_growth_measure,
@@ -61,7 +63,7 @@ class SlipZoneResult:
     slip_zone_width: float
     b_first_order: float
     b_exact: float | None
-    b_corrective_stick: float | None
+    b_corrective_stick: float
     validity: dict[str, float]
     warnings: list[str] = field(default_factory=list)
     left: SlipZoneResult | None = None
@@ -75,18 +77,38 @@ class SlipZoneResult:
         return data
 
 
-def edge_quantities(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> dict[str, FloatArray]:
-    """All slip-zone quantities of the right-hand edge, elementwise, without validation.
+def slip_direction(mu: ArrayLike, lam: ArrayLike, eta: ArrayLike, a2: ArrayLike) -> FloatArray:
+    """+1 (forward), -1 (backward) or 0 (no slip) on loading, at the right-hand edge.
 
-    Call :func:`slip_zone` unless the inputs are already known to be valid.
+    Next to the state-2 edge (a1 < x < a2) the state-1 traction is zero, so loading slips there
+    iff |L_II2| > mu L_I2, i.e. |lam + pi eta a2 / 4| > mu by (21) (derivations/edge_symmetry).
+    """
+    slope = np.asarray(lam) + np.pi * np.asarray(eta) * np.asarray(a2) / 4
+    return np.where(slope > mu, 1.0, np.where(slope < -np.asarray(mu), -1.0, 0.0))
+
+
+def edge_quantities(
+    law: ContactLaw, cycle: LoadCycle, mu: ArrayLike, edge: Edge = "right"
+) -> dict[str, FloatArray]:
+    """All slip-zone quantities of one edge, elementwise, without validation.
+
+    The left edge is the right edge of the mirrored cycle (lam -> -lam, eta kept); backward
+    slip is forward slip with (lam, eta) -> (-lam, -eta) (derivations/edge_symmetry.py).  The
+    paper's formulas are evaluated on the forward-slip ("oriented") slopes.  Where the edge does
+    not slip, b = a1 and the width is zero.  Call :func:`slip_zone` unless the inputs are
+    already known to be valid.
     """
     mu = np.asarray(mu, dtype=np.float64)
-    lam, eta, dP = cycle.lam, cycle.eta, cycle.dP
+    lam = cycle.lam if edge == "right" else -cycle.lam
+    eta, dP = cycle.eta, cycle.dP
     a1 = law.half_width(cycle.P1)
     da = law.half_width_growth(cycle.P1, dP)
     a2 = a1 + da
     L_I1 = law.normal_multiplier(cycle.P1)
     L_I2 = law.normal_multiplier(cycle.P2)
+    direction = slip_direction(mu, lam, eta, a2)
+    orientation = np.where(direction == 0, 1.0, direction)
+    lam_o, eta_o = orientation * lam, orientation * eta
     slope1 = law.half_width_slope(cycle.P1)
     # The measures ask for the worst a'(P), L_I'(P) on (P1, P2); the ends stand in for it.
     worst_slope = np.maximum(slope1, law.half_width_slope(cycle.P2))
@@ -94,7 +116,11 @@ def edge_quantities(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> dict[st
         np.abs(law.normal_multiplier_slope(cycle.P1)),
         np.abs(law.normal_multiplier_slope(cycle.P2)),
     )
-    width = slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2)
+    slips = direction != 0
+    width = np.where(slips, slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, L_I2), 0.0)
+    b = np.where(slips, stick_boundary_proportional(mu, lam_o, eta_o, a1, a2, L_I1, L_I2), a1)
+    first_order = a1 * stick_ratio_first_order(mu, lam_o, eta_o, a1, dP, slope1)
+    stick_method = a1 - corrective_stick_slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, dP)
     return {
         "a1": a1,
         "a2": a2,
@@ -104,56 +130,68 @@ def edge_quantities(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> dict[st
         "L_I2": L_I2,
         "L_II1": shear_edge_multiplier_proportional(lam, eta, a1, L_I1),
         "L_II2": shear_edge_multiplier_proportional(lam, eta, a2, L_I2),
-        "b": stick_boundary_proportional(mu, lam, eta, a1, a2, L_I1, L_I2),
+        "b": b,
         "slip_zone_width": width,
-        "b_first_order": a1 * stick_ratio_first_order(mu, lam, eta, a1, dP, slope1),
+        "b_first_order": np.where(slips, first_order, a1),
+        "b_corrective_stick": np.where(slips, stick_method, a1),
         "eq24": contact_growth_measure(dP, worst_slope, a1),
-        "eq25": relative_slip_zone_measure(mu, lam, eta, a1, da, L_I1, L_I2),
+        "eq25": relative_slip_zone_measure(mu, lam_o, eta_o, a1, da, L_I1, L_I2),
         "eq26": multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),
-        "eq27": slip_zone_growth_measure(mu, lam, eta, a1, dP, worst_slope),
-        "denominator": L_I1 * (mu + lam + np.pi * eta * a1 / 4)
-        + L_I2 * (mu - lam - np.pi * eta * a2 / 4),
+        "eq27": slip_zone_growth_measure(mu, lam_o, eta_o, a1, dP, worst_slope),
+        # Internal: not part of the result.
+        "direction": direction,
+        "lam_oriented": lam_o,
+        "eta_oriented": eta_o,
+        "denominator": L_I1 * (mu + lam_o + np.pi * eta_o * a1 / 4)
+        + L_I2 * (mu - lam_o - np.pi * eta_o * a2 / 4),
+        "permanent_stick_load": np.where(
+            slips, permanent_stick_load(cycle.P1, dP, lam_o, mu), cycle.P1
+        ),
     }
 
 
-def permanent_stick_load(cycle: LoadCycle, mu: ArrayLike) -> FloatArray:
-    """P_K of (33): where the lines of slope -+mu through states 1 and 2 meet."""
-    return (cycle.P1 + cycle.P2) / 2 - cycle.dQ / (2 * np.asarray(mu, dtype=np.float64))
+INTERNAL_KEYS = ("direction", "lam_oriented", "eta_oriented", "denominator",
+                 "permanent_stick_load")  # fmt: skip
 
 
-def _exact_stick_boundary(law: ContactLaw, cycle: LoadCycle, mu: float,
+def _exact_stick_boundary(law: ContactLaw, cycle: LoadCycle, P_K: float,
                           warnings: list[str]) -> float | None:
     """b = a(P_K) (Jaeger-Ciavarella), exact for any symmetric law when eta = 0."""
     if float(cycle.eta) != 0.0:
         return None
-    P_K = float(permanent_stick_load(cycle, mu))
     if P_K <= 0:
         warnings.append(
             f"P_K = {P_K:.6g} <= 0: the shear change exceeds friction over the whole cycle, "
             "so this is not a cycle of partial slip and b_exact does not exist"
         )
         return None
-    b_exact = float(law.half_width(P_K))
-    if P_K >= float(cycle.P2):
-        warnings.append(
-            f"P_K = {P_K:.6g} >= P2: the whole state-2 contact sticks at this edge (no slip)"
-        )
-    return b_exact
+    return float(law.half_width(P_K))
 
 
-def _single_edge(law: ContactLaw, cycle: LoadCycle, mu: float) -> SlipZoneResult:
-    values = {key: float(value) for key, value in edge_quantities(law, cycle, mu).items()}
+def _single_edge(law: ContactLaw, cycle: LoadCycle, mu: float, edge: Edge) -> SlipZoneResult:
+    values = {key: float(value) for key, value in edge_quantities(law, cycle, mu, edge).items()}
     law.check_increasing(np.asarray(values["a1"]), np.asarray(values["a2"]))
-    denominator = values.pop("denominator")
-    scale = values["L_I1"] * mu + abs(values["L_II1"]) + values["L_I2"] * mu + abs(values["L_II2"])
-    if abs(denominator) <= 64 * np.finfo(float).eps * scale:
-        raise InputError(
-            "mu",
-            "the denominator of (17), mu (L_I1 + L_I2) + L_II1 - L_II2, is zero for this "
-            "friction coefficient and load path: no stick boundary exists",
-            mu,
-        )
+    internal = {key: values.pop(key) for key in INTERNAL_KEYS}
     warnings: list[str] = []
+    if internal["direction"] == 0:
+        warnings.append(
+            "no slip at this edge: |L_II2| <= mu L_I2 (|lam + pi eta a2/4| <= mu), so the edge "
+            "sticks wherever it is in contact; b = a1 and the slip-zone width is 0"
+        )
+    else:
+        denominator = internal["denominator"]
+        scale = 2 * mu * (values["L_I1"] + values["L_I2"]) + abs(values["L_II1"]) + abs(
+            values["L_II2"]
+        )
+        if abs(denominator) <= 64 * np.finfo(float).eps * scale:
+            raise InputError(
+                "mu",
+                "the denominator of (17), mu (L_I1 + L_I2) + L_II1 - L_II2, is zero for this "
+                "friction coefficient and load path: no stick boundary exists",
+                mu,
+            )
+        if denominator < 0:
+            warnings.append("the denominator of (17) is negative: no steady partial-slip state")
     validity = {key: values.pop(key) for key in VALIDITY_MEANING}
     for key, value in validity.items():
         if value > VALIDITY_THRESHOLD:
@@ -161,24 +199,8 @@ def _single_edge(law: ContactLaw, cycle: LoadCycle, mu: float) -> SlipZoneResult
                 f"{key} = {value:.3g} > {VALIDITY_THRESHOLD}: {VALIDITY_MEANING[key]} is not "
                 "small, so the asymptotic solution is doubtful"
             )
-    if denominator < 0:
-        warnings.append("the denominator of (17) is negative: no steady partial-slip state")
-    if values["b"] >= values["a2"]:
-        warnings.append("b >= a2: the edge sticks over the whole cycle (no slip zone)")
-    elif values["slip_zone_width"] <= 0:
-        warnings.append(
-            "b >= a1: the loading needs no slip inside the state-1 contact "
-            "(lam + pi eta a2/4 <= mu); slip, if any, lies in (a1, a2), outside the range "
-            "of Section 2's solution"
-        )
-    b_exact = _exact_stick_boundary(law, cycle, mu, warnings)
-    return SlipZoneResult(
-        **values,
-        b_exact=b_exact,
-        b_corrective_stick=None,
-        validity=validity,
-        warnings=warnings,
-    )
+    b_exact = _exact_stick_boundary(law, cycle, internal["permanent_stick_load"], warnings)
+    return SlipZoneResult(**values, b_exact=b_exact, validity=validity, warnings=warnings)
 
 
 def slip_zone(
@@ -227,9 +249,9 @@ def slip_zone(
     if edge not in ("right", "left", "both"):
         raise InputError("edge", "must be 'right', 'left' or 'both'", edge)
     if edge == "left":
-        return _single_edge(law, cycle.mirrored(), mu)
-    right = _single_edge(law, cycle, mu)
+        return _single_edge(law, cycle, mu, "left")
+    right = _single_edge(law, cycle, mu, "right")
     if edge == "both":
-        left = _single_edge(law, cycle.mirrored(), mu)
+        left = _single_edge(law, cycle, mu, "left")
         return SlipZoneResult(**{**right.__dict__, "left": left})
     return right

@@ -100,6 +100,13 @@ def write_package(files: dict[str, str], target: Path) -> None:
             path.write_text(text)
 
 
+def write_report(text: str, path: Path) -> None:
+    """Write the derivation report, leaving the file untouched when nothing changed."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    if not path.exists() or path.read_text() != text:
+        path.write_text(text)
+
+
 def _equation_key(number: str) -> tuple[int, str]:
     match = re.match(r"(\d+)", number)
     return (int(match.group(1)) if match else 10_000, number)
@@ -135,8 +142,17 @@ def diff_trees(expected: dict[str, str], committed: Path) -> list[str]:
     return lines
 
 
-def check_fresh(derivations: Path, committed: Path, seeds: tuple[str, ...] = ("0", "4242")) -> int:
-    """Regenerate under each PYTHONHASHSEED in parallel and diff against the committed tree."""
+def check_fresh(
+    derivations: Path,
+    committed: Path,
+    seeds: tuple[str, ...] = ("0", "4242"),
+    *,
+    report: Path | None = None,
+) -> int:
+    """Regenerate under each PYTHONHASHSEED in parallel and diff against the committed tree.
+
+    With ``report``, the derivation report is regenerated in the same runs and diffed too.
+    """
     with tempfile.TemporaryDirectory() as scratch:
         jobs = []
         for seed in seeds:
@@ -144,8 +160,10 @@ def check_fresh(derivations: Path, committed: Path, seeds: tuple[str, ...] = ("0
             env = {**os.environ, "PYTHONHASHSEED": seed}
             command = [
                 sys.executable, "-m", "asymslip.codegen", "generate",
-                "--derivations", str(derivations), "--out", str(out), "--quiet",
+                "--derivations", str(derivations), "--out", str(out / "asymslip_gen"), "--quiet",
             ]
+            if report is not None:
+                command += ["--report", str(out / report.name)]
             jobs.append((seed, out, subprocess.Popen(command, env=env)))
         failed = False
         for seed, out, process in jobs:
@@ -153,15 +171,42 @@ def check_fresh(derivations: Path, committed: Path, seeds: tuple[str, ...] = ("0
                 print(f"regeneration with PYTHONHASHSEED={seed} failed", file=sys.stderr)
                 failed = True
                 continue
-            files = {p.name: p.read_text() for p in out.glob("*.py")}
+            files = {p.name: p.read_text() for p in (out / "asymslip_gen").glob("*.py")}
             diff = diff_trees(files, committed)
+            if report is not None:
+                old = report.read_text().splitlines(keepends=True) if report.exists() else []
+                new = (out / report.name).read_text().splitlines(keepends=True)
+                diff += difflib.unified_diff(
+                    old, new, f"committed/{report.name}", f"regenerated/{report.name}"
+                )
             if diff:
                 sys.stdout.writelines(diff)
                 print(
-                    f"\n{committed} is stale (PYTHONHASHSEED={seed}): run `make generate`",
+                    f"\n{committed} or its report is stale (PYTHONHASHSEED={seed}): "
+                    "run `make generate`",
                     file=sys.stderr,
                 )
                 failed = True
         if not failed:
             print(f"{committed}: fresh under PYTHONHASHSEED in {list(seeds)}")
         return 1 if failed else 0
+
+
+def check_figure_data(folder: Path) -> int:
+    """The committed figure data (fig5.csv) equals what `make figures` writes now.
+
+    The PNG is not compared: its bytes depend on the matplotlib version.
+    """
+    from asymslip.figures import fig5_csv_text, fig5_curves
+
+    committed = folder / "fig5.csv"
+    fresh = fig5_csv_text(fig5_curves())
+    old = committed.read_text().splitlines(keepends=True) if committed.exists() else []
+    diff = list(difflib.unified_diff(old, fresh.splitlines(keepends=True),
+                                     f"committed/{committed.name}", "regenerated/fig5.csv"))
+    if diff:
+        sys.stdout.writelines(diff)
+        print(f"\n{committed} is stale: run `make figures`", file=sys.stderr)
+        return 1
+    print(f"{committed}: fresh")
+    return 0

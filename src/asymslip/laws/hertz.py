@@ -15,6 +15,8 @@ from asymslip_gen.hertz import (
     hertz_normal_edge_multiplier_slope,
 )
 
+from asymslip_gen.tractions import hertz_pressure
+
 from ..errors import positive
 from .base import ContactLaw, FloatArray
 
@@ -52,6 +54,10 @@ class HertzLaw(ContactLaw):
 
     def normal_multiplier(self, P: ArrayLike) -> FloatArray:
         return hertz_normal_edge_multiplier(P, self.R, self.E_star)
+
+    def pressure(self, x: ArrayLike, P: ArrayLike) -> FloatArray:
+        """Hertz pressure (48), zero outside the contact."""
+        return hertz_pressure(x, P, self.R, self.E_star)
 
     def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
         return hertz_normal_edge_multiplier_slope(P, self.R, self.E_star)

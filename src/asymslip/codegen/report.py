@@ -1,0 +1,300 @@
+"""Render the derivation report, ``generated/report/derivation.md``, from the derivation records.
+
+The report is built from the same :class:`EquationCheck` and :class:`Formula` records that the
+code generator turns into ``asymslip_gen``, so it cannot drift from the code: every numbered
+equation of the paper, in order, as printed and as derived, how it was obtained or verified and
+its status; equations no derivation covers are listed as missing.  Then the errata (status
+ERRATUM, any label) and the results beyond the paper (status BEYOND, any label).
+
+Nothing here needs registering when a derivation adds an equation or a result: the report
+picks up every record.  The only tables in this module are cosmetic (LaTeX names of symbols).
+
+The file is committed and freshness-checked, so it holds no timestamps, timings or tool versions,
+and its bytes must not depend on ``PYTHONHASHSEED`` (records keep the scripts' fixed order).
+"""
+
+from __future__ import annotations
+
+import importlib
+import re
+from collections import defaultdict
+from collections.abc import Iterable, Mapping, Sequence
+from typing import TYPE_CHECKING
+
+import sympy
+
+from .formula import EquationCheck, Formula, Status
+
+if TYPE_CHECKING:  # runner imports the engine; the report only reads a finished run
+    from .runner import DerivationRun
+
+PAPER = "Moore, Hills et al., Theoretical and Applied Fracture Mechanics 2022, 103457"
+NUMBERED_EQUATIONS = tuple(str(number) for number in range(1, 52))
+REPORT_PATH = "generated/report/derivation.md"
+
+# How symbol names print in LaTeX.  Cosmetic only; unknown names keep SymPy's own rendering.
+SYMBOL_LATEX: dict[str, str] = {
+    "lam": r"\lambda",
+    "E_star": r"E^{*}",
+    "L_I": r"L_{I}",
+    "L_I1": r"L_{I,1}",
+    "L_I2": r"L_{I,2}",
+    "L_II": r"L_{II}",
+    "L_II1": r"L_{II,1}",
+    "L_II2": r"L_{II,2}",
+    "da": r"\Delta a",
+    "dP": r"\Delta P",
+    "dQ": r"\Delta Q",
+    "dsigma": r"\Delta \sigma",
+    "da_dP": r"a'(P)",
+    "dL_I_dP": r"L_{I}'(P)",
+    "dP_da": r"\frac{dP}{da}",
+    "dQ_da": r"\frac{dQ}{da}",
+    "dsigma_da": r"\frac{d\sigma}{da}",
+    "P_K": r"P_{K}",
+    "K_II": r"K_{II}",
+    "q_diff": r"q_{\mathrm{diff}}",
+}
+
+_STATUS_ORDER = (Status.GIVEN, Status.DERIVED, Status.NUMERIC, Status.ERRATUM, Status.BEYOND)
+
+
+def equation_key(label: str) -> tuple[int, str]:
+    """Sort key: paper numbers numerically, other labels ("conclusion", "B1") after them."""
+    match = re.match(r"(\d+)", label)
+    return (int(match.group(1)) if match else 10_000, label)
+
+
+def latex(expr: sympy.Basic) -> str:
+    """SymPy's LaTeX with the project's symbol names (lam -> lambda, L_I1 -> L_{I,1}, ...)."""
+    names = {
+        symbol: SYMBOL_LATEX[symbol.name]
+        for symbol in expr.free_symbols
+        if isinstance(symbol, sympy.Symbol) and symbol.name in SYMBOL_LATEX
+    }
+    return sympy.latex(expr, symbol_names=names)
+
+
+def markdown_text(text: str) -> str:
+    """Plain prose safe in Markdown: ``*``, ``_`` and friends are shown, not interpreted."""
+    text = text.replace("\\", "\\\\")
+    for character in "*_`[]|#":
+        text = text.replace(character, "\\" + character)
+    return text.replace("<", "&lt;").replace(">", "&gt;")
+
+
+def display_math(tex: str) -> list[str]:
+    """A ``$$ ... $$`` block that GitHub and common Markdown viewers render."""
+    # Blank lines inside a display block end it on GitHub; collapse all whitespace runs.
+    return ["", "$$", re.sub(r"\s+", " ", tex).strip(), "$$", ""]
+
+
+def anchor(label: str) -> str:
+    return "eq-" + re.sub(r"[^a-z0-9]+", "-", label.lower()).strip("-")
+
+
+def _load_paper_equations() -> Mapping[str, str]:
+    # derivations/ is on sys.path once the derivations have run (runner.run_derivations).
+    try:
+        module = importlib.import_module("_paper_equations")
+    except ImportError as error:  # pragma: no cover - only without the derivations folder
+        raise RuntimeError(
+            "derivations/_paper_equations.py not importable: run the derivations first"
+        ) from error
+    return module.PAPER_EQUATIONS
+
+
+def _source_link(source: str) -> str:
+    # The report sits in generated/report/, two levels below the repository root.
+    return f"[`{source}`](../../{source})"
+
+
+def _implementing(formulas: Sequence[Formula], label: str) -> list[str]:
+    return [
+        f"`asymslip_gen.{formula.module}.{formula.name}`"
+        for formula in formulas
+        if label in formula.equations
+    ]
+
+
+def _check_block(check: EquationCheck, printed: str | None, code: list[str]) -> list[str]:
+    lines = [
+        f"**Status:** {check.status.value} · **Derivation:** {_source_link(check.source)}"
+        + (f" · **Code:** {', '.join(code)}" if code else ""),
+        "",
+    ]
+    if printed is not None:
+        lines += ["As printed in the paper:", *display_math(printed)]
+    if check.derived is not None:
+        lines += ["As derived here:", *display_math(latex(check.derived))]
+    elif check.status is Status.GIVEN:
+        lines += ["", "As derived here: nothing to derive (taken as given).", ""]
+    else:
+        lines += ["", "As derived here: no expression recorded; see how it was verified.", ""]
+    lines.append("How it was obtained or verified:")
+    lines.append("")
+    lines += [f"- {markdown_text(item)}" for item in (check.how, *check.details) if item]
+    lines.append("")
+    return lines
+
+
+def _summary(by_label: Mapping[str, list[EquationCheck]], missing: list[str]) -> list[str]:
+    per_status: dict[Status, list[str]] = defaultdict(list)
+    for label in sorted(by_label, key=equation_key):
+        for status in dict.fromkeys(check.status for check in by_label[label]):
+            per_status[status].append(label)
+    lines = ["| Status | Count | Equations |", "| --- | ---: | --- |"]
+    for status in _STATUS_ORDER:
+        labels = per_status.get(status, [])
+        if labels:
+            links = ", ".join(f"[({label})](#{anchor(label)})" for label in labels)
+            lines.append(f"| {status.value} | {len(labels)} | {links} |")
+    links = ", ".join(f"[({label})](#{anchor(label)})" for label in missing) or "none"
+    lines.append(f"| **missing** (no derivation yet) | {len(missing)} | {links} |")
+    return lines
+
+
+def _labelled_section(
+    title: str,
+    checks: Iterable[EquationCheck],
+    printed: Mapping[str, str] | None,
+    formulas: Sequence[Formula],
+    empty: str,
+    anchored: set[str],
+) -> list[str]:
+    """Errata or beyond-the-paper results; ``printed`` None shows only a check's own form."""
+    lines = [f"## {title}", ""]
+    found = False
+    for check in sorted(checks, key=lambda c: equation_key(c.equation)):
+        found = True
+        label = check.equation
+        if label not in anchored:
+            anchored.add(label)
+            lines += [f'<a id="{anchor(label)}"></a>', ""]
+        number = f"({label})" if label in NUMBERED_EQUATIONS else label
+        lines += [f"### {number} {markdown_text(check.title)}", ""]
+        shown = check.printed or (printed.get(label) if printed is not None else None)
+        lines += _check_block(check, shown, _implementing(formulas, label))
+    if not found:
+        lines += [empty, ""]
+    return lines
+
+
+def render_report(run: DerivationRun, paper_equations: Mapping[str, str] | None = None) -> str:
+    """Markdown text of ``generated/report/derivation.md`` for a :class:`DerivationRun`.
+
+    Reads ``run.checks`` (EquationCheck records) and ``run.formulas`` (Formula records);
+    ``paper_equations`` maps equation numbers to the paper's printed LaTeX (default:
+    ``derivations/_paper_equations.py``), used where a check recorded no ``printed`` form.
+    """
+    checks: list[EquationCheck] = list(run.checks)
+    formulas: list[Formula] = list(run.formulas)
+    printed = dict(paper_equations if paper_equations is not None else _load_paper_equations())
+
+    by_label: dict[str, list[EquationCheck]] = defaultdict(list)
+    for check in checks:
+        by_label[check.equation].append(check)
+    missing = [number for number in NUMBERED_EQUATIONS if number not in by_label]
+    others = sorted(
+        (label for label in by_label if label not in NUMBERED_EQUATIONS), key=equation_key
+    )
+
+    lines = [
+        "<!-- Generated by `make report` from the records of derivations/*.py. Do not edit: "
+        "change a derivation and run `make report`. -->",
+        "",
+        "# asymslip derivation report",
+        "",
+        f"The paper: {PAPER}.",
+        "",
+        "For every numbered equation of the paper, in order: the equation as the paper prints "
+        "it, as the derivations here produce it (SymPy's LaTeX printer), how it was obtained or "
+        "verified, and its status. Equations that no derivation covers yet are listed as "
+        "**missing**. Then the errata of the paper, with the evidence, and the results that go "
+        "beyond the paper. The report is written from the same records as the generated code "
+        "in `generated/asymslip_gen/` (the functions named under **Code**), never by hand.",
+        "",
+        "Statuses: *starting point* (a model statement the derivations start from), *derived "
+        "and verified* (derived by SymPy and proved equal to the printed form), *verified "
+        "numerically* (checked at 30+ digits where SymPy cannot decide), *erratum found* (the "
+        "printed form is wrong; the derived one is right), *beyond the paper*.",
+        "",
+        "## Summary",
+        "",
+        *_summary(by_label, missing),
+        "",
+        f"## Equations (1)-({NUMBERED_EQUATIONS[-1]})",
+        "",
+    ]
+    for number in NUMBERED_EQUATIONS:
+        lines.append(f'<a id="{anchor(number)}"></a>')
+        lines.append("")
+        records = by_label.get(number, [])
+        code = _implementing(formulas, number)
+        if not records:
+            lines += [
+                f"### ({number}) missing",
+                "",
+                "**Status:** missing: no derivation covers "
+                "this equation yet" + (f" · **Code:** {', '.join(code)}" if code else ""),
+            ]
+            if number in printed:
+                lines += ["", "As printed in the paper:", *display_math(printed[number])]
+            else:
+                lines.append("")
+            continue
+        lines += [f"### ({number}) {markdown_text(records[0].title)}", ""]
+        for index, check in enumerate(records):
+            if index:
+                lines += [f"Also recorded: {markdown_text(check.title)}", ""]
+            # The paper's form is shown once per equation; a check may override it.
+            shown = check.printed or (printed.get(number) if index == 0 else None)
+            lines += _check_block(check, shown, code if index == 0 else [])
+
+    # Unnumbered statements appear once: errata and results beyond the paper in their own
+    # sections, anything else here.
+    anchored = set(NUMBERED_EQUATIONS)
+    plain = [
+        label
+        for label in others
+        if any(check.status not in (Status.ERRATUM, Status.BEYOND) for check in by_label[label])
+    ]
+    if plain:
+        lines += ["## Other statements of the paper", ""]
+        for label in plain:
+            anchored.add(label)
+            lines += [f'<a id="{anchor(label)}"></a>', ""]
+            lines += [f"### {markdown_text(label)}: {markdown_text(by_label[label][0].title)}", ""]
+            for check in by_label[label]:
+                if check.status not in (Status.ERRATUM, Status.BEYOND):
+                    lines += _check_block(check, check.printed, _implementing(formulas, label))
+
+    lines += _labelled_section(
+        "Errata of the paper",
+        (check for check in checks if check.status is Status.ERRATUM),
+        printed,
+        formulas,
+        "No erratum recorded by the derivations yet.",
+        anchored,
+    )
+    lines += _labelled_section(
+        "Results beyond the paper",
+        (check for check in checks if check.status is Status.BEYOND),
+        None,
+        formulas,
+        "No result beyond the paper recorded by the derivations yet.",
+        anchored,
+    )
+
+    lines += ["## Generated functions", ""]
+    lines += ["| Function | Module | Equations | Derivation |", "| --- | --- | --- | --- |"]
+    for formula in sorted(formulas, key=lambda f: (f.module, f.name)):
+        equations = ", ".join(f"({label})" for label in formula.equations)
+        lines.append(
+            f"| `{formula.name}` | `asymslip_gen.{formula.module}` | {equations} | "
+            f"{_source_link(formula.source)} |"
+        )
+    lines.append("")
+    text = "\n".join(lines)
+    # One blank line between blocks, a single trailing newline: stable bytes for the diff.
+    return re.sub(r"\n{3,}", "\n\n", text).rstrip("\n") + "\n"

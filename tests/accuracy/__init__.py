@@ -1,0 +1,1 @@
+"""Accuracy harness: generated quantities against independent 50-digit mpmath references."""
