@@ -96,7 +96,9 @@ def derive() -> Derivation:
             inside,
             -sympy.pi,
             how="u = sqrt((1-t)/(t-beta)) rationalises; apart; symmetric limit around the pole",
-            printed=r"-\pi \quad (\beta < x < 1)",
+            printed=r"\int_{\beta}^{1}\sqrt{\frac{1-t}{t-\beta}}\frac{dt}{t-x}="
+            r"\begin{cases}-\pi & \beta<x<1\\ -\pi\left(1-\sqrt{\frac{x-1}{x-\beta}}\right)"
+            r" & x>1\end{cases}",
         )
         paper_outside = -sympy.pi * (1 - sympy.sqrt((x - 1) / (x - beta)))
         eq.holds(
