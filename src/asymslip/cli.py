@@ -15,6 +15,7 @@ from typing import NoReturn
 from .cycle import LoadCycle
 from pathlib import Path
 
+from . import cli_extra
 from .edge_solution import VALIDITY_MEANING, SlipZoneResult, slip_zone
 from .errors import InputError
 from .laws import ContactLaw, HertzLaw
@@ -41,7 +42,8 @@ def _hertz(args: argparse.Namespace) -> ContactLaw:
     return HertzLaw(R=args.R, E_star=args.E_star)
 
 
-LAWS: dict[str, LawBuilder] = {"hertz": _hertz}
+LAWS: dict[str, LawBuilder] = {"hertz": _hertz, **cli_extra.LAWS}
+OPTION_OF.update(cli_extra.OPTION_OF)
 
 
 class _Parser(argparse.ArgumentParser):
@@ -57,6 +59,7 @@ def _add_law_options(parser: argparse.ArgumentParser) -> None:
                        + ", ".join(sorted(LAWS)))
     group.add_argument("--R", type=float, help="cylinder radius R (hertz)")
     group.add_argument("--E-star", dest="E_star", type=float, help="plane-strain modulus E*")
+    cli_extra.add_law_options(group)
 
 
 def _add_cycle_options(parser: argparse.ArgumentParser) -> None:
@@ -117,6 +120,7 @@ def build_parser() -> argparse.ArgumentParser:
     figure.add_argument("name", choices=["fig5"], help="which figure")
     figure.add_argument("--out", type=Path, required=True, help="output folder")
     figure.set_defaults(run=_run_figure)
+    cli_extra.register(commands, _add_law_options)
     return parser
 
 

@@ -200,6 +200,7 @@ def _single_edge(law: ContactLaw, cycle: LoadCycle, mu: float, edge: Edge) -> Sl
                 "small, so the asymptotic solution is doubtful"
             )
     b_exact = _exact_stick_boundary(law, cycle, internal["permanent_stick_load"], warnings)
+    warnings.extend(law.load_warnings(float(cycle.P1), float(cycle.P2)))
     return SlipZoneResult(**values, b_exact=b_exact, validity=validity, warnings=warnings)
 
 

@@ -2,5 +2,7 @@
 
 from .base import ContactLaw
 from .hertz import HertzLaw
+from .module_law import ModuleLaw
+from .table import TableLaw
 
-__all__ = ["ContactLaw", "HertzLaw"]
+__all__ = ["ContactLaw", "HertzLaw", "ModuleLaw", "TableLaw"]

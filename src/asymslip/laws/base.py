@@ -67,6 +67,10 @@ class ContactLaw(abc.ABC):
         """Contact pressure p(x, P) over the whole contact (zero outside it)."""
         raise NotImplementedError(f"the {self.name} law has no pressure distribution")
 
+    def load_warnings(self, P1: float, P2: float) -> list[str]:
+        """Messages for load states where the law is extrapolated (default: none)."""
+        return []
+
     def check_increasing(self, *half_widths: FloatArray) -> None:
         """Refuse a law that is not increasing where it is used (dP/da <= 0)."""
         for a in half_widths:

@@ -1,0 +1,128 @@
+"""A contact law from a module written by ``asymslip derive`` (or by hand in the same form).
+
+The module defines ``load(a, *params)``, ``load_slope(a, *params)``,
+``normal_edge_multiplier(a, *params)`` and optionally ``normal_edge_multiplier_slope(a,
+*params)`` (dL_I/dP), and describes itself in ``__asymslip_law__ = {"name": ..., "params":
+[...]}``.  a(P) is found by inverting the increasing P(a) (:func:`laws.roots.invert_increasing`).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib.util
+from collections import OrderedDict
+from collections.abc import Callable, Mapping
+from pathlib import Path
+from types import ModuleType
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from ..errors import InputError, as_float_array
+from .base import ContactLaw, FloatArray
+
+REQUIRED_FUNCTIONS = ("load", "load_slope", "normal_edge_multiplier")
+_CACHE_SIZE = 4  # a(P) of the last few load arrays: one cycle asks for a(P1), a(P2) repeatedly
+
+
+def import_law_module(path: str | Path) -> ModuleType:
+    """Import a law module by file path, refusing files that are not one."""
+    path = Path(path)
+    if not path.is_file():
+        raise InputError("module", "no such file", str(path))
+    digest = hashlib.sha1(str(path.resolve()).encode()).hexdigest()[:12]
+    spec = importlib.util.spec_from_file_location(f"asymslip_user_law_{digest}", path)
+    if spec is None or spec.loader is None:
+        raise InputError("module", "is not a Python module (expected a .py file)", str(path))
+    module = importlib.util.module_from_spec(spec)
+    try:
+        spec.loader.exec_module(module)
+    except Exception as error:  # any failure of the user's file is a bad --module
+        raise InputError("module", f"could not be imported ({type(error).__name__}: {error})",
+                         str(path)) from None  # fmt: skip
+    description = getattr(module, "__asymslip_law__", None)
+    if not isinstance(description, Mapping) or not isinstance(description.get("params"), list):
+        raise InputError("module", "is not an asymslip law module (it has no __asymslip_law__ "
+                         "description; write one with `asymslip derive`)", str(path))  # fmt: skip
+    missing = [name for name in REQUIRED_FUNCTIONS if not callable(getattr(module, name, None))]
+    if missing:
+        raise InputError("module", f"is not an asymslip law module: it lacks "
+                         f"{', '.join(missing)}", str(path))  # fmt: skip
+    return module
+
+
+class ModuleLaw(ContactLaw):
+    """The contact law defined by a law module, with its parameters bound to values.
+
+    Examples
+    --------
+    >>> law = ModuleLaw.from_file("hertz_user.py", R=1.0, E_star=1.0)  # doctest: +SKIP
+    >>> float(law.half_width(100.0))  # doctest: +SKIP
+    11.283791670955125
+    """
+
+    def __init__(self, module: ModuleType, source: str = "module", **param_values: float) -> None:
+        description = module.__asymslip_law__
+        self.module = module
+        self.source = source
+        self.name = str(description.get("name", Path(source).stem))
+        self.param_names: tuple[str, ...] = tuple(description["params"])
+        listed = ", ".join(self.param_names) or "none"
+        missing = [name for name in self.param_names if name not in param_values]
+        if missing:
+            raise InputError("param", f"{', '.join(missing)} required by the law {self.name} in "
+                             f"{source} (its parameters: {listed}); give NAME=VALUE")  # fmt: skip
+        unknown = sorted(set(param_values) - set(self.param_names))
+        if unknown:
+            raise InputError("param", f"{', '.join(unknown)} is not a parameter of the law "
+                             f"{self.name} in {source} (its parameters: {listed})")  # fmt: skip
+        self.params = {name: float(as_float_array(name, param_values[name]))
+                       for name in self.param_names}  # fmt: skip
+        self._values = tuple(self.params.values())
+        self._half_widths: OrderedDict[tuple[tuple[int, ...], bytes], FloatArray] = OrderedDict()
+
+    @classmethod
+    def from_file(cls, path: str | Path, **param_values: float) -> ModuleLaw:
+        """Import the law module at ``path`` and bind its parameters."""
+        return cls(import_law_module(path), str(path), **param_values)
+
+    def __repr__(self) -> str:
+        values = ", ".join(f"{k}={v!r}" for k, v in self.params.items())
+        return f"ModuleLaw({self.name} from {self.source}: {values})"
+
+    def _call(self, function: Callable[..., FloatArray], a: ArrayLike) -> FloatArray:
+        return np.asarray(function(np.asarray(a, dtype=np.float64), *self._values),
+                          dtype=np.float64)  # fmt: skip
+
+    def load(self, a: ArrayLike) -> FloatArray:
+        return self._call(self.module.load, a)
+
+    def load_slope(self, a: ArrayLike) -> FloatArray:
+        return self._call(self.module.load_slope, a)
+
+    def half_width(self, P: ArrayLike) -> FloatArray:
+        """a(P) by inverting P(a); the last few results are kept (the inversion bisects)."""
+        P = np.asarray(P, dtype=np.float64)
+        key = (P.shape, P.tobytes())
+        if key in self._half_widths:
+            self._half_widths.move_to_end(key)
+            return self._half_widths[key]
+        a = super().half_width(P)
+        self._half_widths[key] = a
+        if len(self._half_widths) > _CACHE_SIZE:
+            self._half_widths.popitem(last=False)
+        return a
+
+    def half_width_slope(self, P: ArrayLike) -> FloatArray:
+        return 1.0 / self.load_slope(self.half_width(P))
+
+    def normal_multiplier(self, P: ArrayLike) -> FloatArray:
+        """L_I of (19), from the module's derived form."""
+        return self._call(self.module.normal_edge_multiplier, self.half_width(P))
+
+    def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
+        """dL_I/dP from the module when it has it, else central differences."""
+        function = getattr(self.module, "normal_edge_multiplier_slope", None)
+        if function is None:
+            return super().normal_multiplier_slope(P)
+        return self._call(function, self.half_width(P))

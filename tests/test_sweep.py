@@ -1,0 +1,272 @@
+"""The sweep: every row of a cases file evaluated like slip_zone; bad rows reported, not fatal."""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import io
+
+import numpy as np
+import pytest
+
+import asymslip_gen as gen
+from asymslip import HertzLaw, InputError, LoadCycle, slip_zone
+from asymslip.sweep import WARNING_SEPARATOR, edge_columns, format_numbers, sweep_file
+
+LAW = HertzLaw(R=1.0, E_star=1.0)
+
+# Line numbers count the header as line 1.  Good rows cover every warning slip_zone gives:
+# none, no slip (lam < mu), validity (large dP), P_K <= 0, eta != 0 (no b_exact), a row-level
+# mu, and an empty mu cell taking --mu.
+CASES = """\
+case,P1,Q1,P2,Q2,sigma1,sigma2,mu
+fig5,100,0,105,1,0,0,0.1
+swapped,105,0,100,1,0,0,0.1
+no-slip,100,0.5,110,2.5,0,0,0.3
+big-step,100,0,160,30,0,0,0.1
+mu-zero,100,0,105,1,0,0,0
+text,100,abc,105,1,0,0,0.1
+no-partial-slip,100,0,101,90,0,0,0.2
+tension,100,0,104,1,0.5,0.9,0.1
+
+default-mu,100,0,103,2,,,
+negative-mu,100,0,105,1,0,0,-0.3
+short,100,0,105
+nan-load,nan,0,105,1,0,0,0.1
+backward,200,1,210,-3,0,0,0.15
+"""
+BAD_LINES = {3: r"^P2: must exceed P1", 6: r"^mu: must be > 0 \(got 0\.0\)",
+             7: r"^Q1: 'abc' is not a number", 12: r"^mu: must be > 0 \(got -0\.3\)",
+             13: r"^line has 4 fields, the header has 8", 14: r"^P1: must be finite"}  # fmt: skip
+DEFAULT_MU = 0.25
+
+
+def read(path):
+    with open(path, newline="") as handle:
+        return list(csv.DictReader(handle))
+
+
+@pytest.fixture
+def swept(tmp_path):
+    cases = tmp_path / "cases.csv"
+    cases.write_text(CASES)
+    out = tmp_path / "results.csv"
+    summary = sweep_file(cases, LAW, out, mu=DEFAULT_MU, progress=False)
+    return summary, read(out)
+
+
+def expected_row(fields: dict[str, str], edge: str):
+    mu = float(fields["mu"]) if fields["mu"] else DEFAULT_MU
+    cycle = LoadCycle(*(float(fields[name]) if fields[name] else 0.0
+                        for name in ("P1", "Q1", "P2", "Q2", "sigma1", "sigma2")))  # fmt: skip
+    return slip_zone(LAW, cycle, mu, edge=edge)
+
+
+def test_bad_rows_are_reported_by_line_number_and_the_others_are_kept(swept):
+    summary, rows = swept
+    assert [line for line, _ in summary.invalid] == sorted(BAD_LINES)
+    assert len(rows) == summary.rows == 13  # every non-blank data line, in order
+    assert [row["case"] for row in rows][:3] == ["fig5", "swapped", "no-slip"]
+    by_case = {row["case"]: row for row in rows}
+    for line, message in summary.invalid:
+        assert pytest.importorskip("re").match(BAD_LINES[line], message), message
+    assert by_case["swapped"]["b"] == "" and by_case["swapped"]["error"].startswith("P2:")
+    good = [row for row in rows if not row["error"]]
+    assert {row["case"] for row in good} == {"fig5", "no-slip", "big-step", "no-partial-slip",
+                                             "tension", "default-mu", "backward"}  # fmt: skip
+
+
+def test_error_messages_are_the_ones_the_api_raises_for_that_row(swept):
+    _, rows = swept
+    row = next(row for row in rows if row["case"] == "swapped")
+    with pytest.raises(InputError) as raised:
+        LoadCycle(105, 0, 100, 1)
+    assert row["error"] == str(raised.value)
+
+
+def test_good_rows_equal_slip_zone_for_both_edges_to_1e_14(swept):
+    _, rows = swept
+    for row in (row for row in rows if not row["error"]):
+        expected = expected_row(row, "both")
+        for prefix, result in (("", expected), ("left_", expected.left)):
+            data = result.to_dict()
+            data.update(data.pop("validity"))
+            for key in edge_columns():
+                written = row[prefix + key]
+                if key == "warnings":
+                    assert written == WARNING_SEPARATOR.join(data[key]), (row["case"], key)
+                elif data[key] is None:
+                    assert written == "", (row["case"], key)
+                else:
+                    value = float(written)
+                    assert value == pytest.approx(data[key], rel=1e-14, abs=1e-300), (
+                        row["case"],
+                        prefix + key,
+                    )
+
+
+def test_rows_exercise_every_warning_kind(swept):
+    _, rows = swept
+    warnings = " ".join(row["warnings"] + row["left_warnings"] for row in rows)
+    for start in ("no slip at this edge", "eq24 = ", "P_K = "):
+        assert start in warnings
+    tension = next(row for row in rows if row["case"] == "tension")
+    assert tension["b_exact"] == "" and tension["eta"] != "0"
+
+
+def test_chunked_and_single_chunk_sweeps_write_the_same_bytes(tmp_path):
+    cases = tmp_path / "cases.csv"
+    cases.write_text(CASES)
+    sweep_file(cases, LAW, tmp_path / "one.csv", mu=DEFAULT_MU, progress=False)
+    sweep_file(cases, LAW, tmp_path / "many.csv", mu=DEFAULT_MU, chunk_rows=3, progress=False)
+    assert (tmp_path / "one.csv").read_bytes() == (tmp_path / "many.csv").read_bytes()
+
+
+def test_one_edge_gives_only_its_columns(tmp_path):
+    cases = tmp_path / "cases.csv"
+    cases.write_text("P1,Q1,P2,Q2\n100,0,105,1\n")
+    sweep_file(cases, LAW, tmp_path / "left.csv", mu=0.1, edge="left", progress=False)
+    header = (tmp_path / "left.csv").read_text().splitlines()[0].split(",")
+    assert header == ["P1", "Q1", "P2", "Q2", *("left_" + key for key in edge_columns()), "error"]
+    (row,) = read(tmp_path / "left.csv")
+    left = slip_zone(LAW, LoadCycle(100, 0, 105, 1), 0.1, edge="left")
+    assert float(row["left_b"]) == left.b and float(row["left_lam"]) == -0.2
+
+
+def test_a_file_wide_problem_is_one_input_error(tmp_path):
+    cases = tmp_path / "cases.csv"
+    cases.write_text("P1,Q1,P2\n100,0,105\n")
+    with pytest.raises(InputError, match=r"^cases: .*line 1: the header has no column Q2"):
+        sweep_file(cases, LAW, tmp_path / "out.csv", mu=0.1)
+    cases.write_text("P1,Q1,P2,Q2\n100,0,105,1\n")
+    with pytest.raises(InputError, match=r"^mu: is required: give --mu or a mu column"):
+        sweep_file(cases, LAW, tmp_path / "out.csv")
+
+
+def test_an_empty_mu_cell_without_a_default_is_a_row_error(tmp_path):
+    cases = tmp_path / "cases.csv"
+    cases.write_text("P1,Q1,P2,Q2,mu\n100,0,105,1,\n100,0,105,1,0.1\n")
+    summary = sweep_file(cases, LAW, tmp_path / "out.csv", progress=False)
+    assert summary.invalid == [(2, "mu: missing (give --mu or a value in the mu column)")]
+
+
+def test_many_rows_breaking_one_rule_each_get_the_api_message_with_their_value(tmp_path):
+    cases = tmp_path / "cases.csv"
+    P1 = 100 + np.arange(60)
+    cases.write_text("P1,Q1,P2,Q2\n" + "".join(f"{p},0,{p - 1},1\n" for p in P1))
+    summary = sweep_file(cases, LAW, tmp_path / "out.csv", mu=0.1, progress=False)
+    assert len(summary.invalid) == 60
+    for (line, message), p in zip(summary.invalid, P1, strict=True):
+        with pytest.raises(InputError) as raised:
+            LoadCycle(float(p), 0, float(p - 1), 1)
+        assert message == str(raised.value), line
+
+
+def test_progress_bar_only_when_asked_or_on_a_terminal(tmp_path):
+    cases = tmp_path / "cases.csv"
+    cases.write_text("P1,Q1,P2,Q2\n100,0,105,1\n100,0,106,1\n")
+    quiet, loud = io.StringIO(), io.StringIO()
+    sweep_file(cases, LAW, tmp_path / "a.csv", mu=0.1, stream=quiet)  # StringIO is no tty
+    sweep_file(cases, LAW, tmp_path / "b.csv", mu=0.1, stream=loud, progress=True)
+    assert quiet.getvalue() == ""
+    assert "2/2 rows" in loud.getvalue()
+
+
+def test_numbers_are_written_with_17_digits_that_read_back_exactly():
+    rng = np.random.default_rng(7)
+    values = rng.uniform(1, 10, 20_000) * 10.0 ** rng.integers(-320, 308, 20_000)
+    values *= rng.choice([-1.0, 1.0], values.size)
+    values[:8] = [0.1, 1.0, -2.5, 5e-324, 1.7976931348623157e308, 100.0, 1e22, 2.0**-1074 * 3]
+    matrix = format_numbers(values)
+    texts = [bytes(row[row != 0]).decode() for row in matrix]
+    assert [float(text) for text in texts] == values.tolist()
+    assert texts[:3] == ["1.0000000000000001e-01", "1e+00", "-2.5e+00"]
+    empty = format_numbers(np.array([0.0, np.nan, -np.inf, 3.0]), np.array([0, 0, 0, 1], bool))
+    assert [bytes(row[row != 0]).decode() for row in empty] == ["0", "nan", "-inf", ""]
+
+
+def test_sweep_with_a_table_law_warns_of_loads_outside_the_table(tmp_path):
+    from asymslip.laws.table import TableLaw
+
+    P = np.linspace(90.0, 110.0, 6)
+    law = TableLaw(P, np.sqrt(4 * P / np.pi))
+    cases = tmp_path / "cases.csv"
+    cases.write_text("P1,Q1,P2,Q2\n100,0,105,1\n100,0,115,3\n")
+    sweep_file(cases, law, tmp_path / "out.csv", mu=0.1, edge="right", progress=False)
+    inside, outside = read(tmp_path / "out.csv")
+    assert inside["warnings"] == ""
+    assert outside["warnings"].endswith(
+        "P2 = 115 is outside the table's loads [90, 110] (table): a(P) there is the end "
+        "power law, extrapolated"
+    )
+
+
+def test_cli_sweep_and_derive_through_the_registered_commands(tmp_path, monkeypatch, capsys):
+    from asymslip import cli, cli_extra
+
+    monkeypatch.setattr(cli, "LAWS", {**cli.LAWS, **cli_extra.LAWS})
+
+    def add_law_options(parser):
+        cli._add_law_options(parser)
+        group = next(g for g in parser._action_groups if g.title == "contact law")
+        if not any(action.dest == "table" for action in group._group_actions):
+            cli_extra.add_law_options(group)
+
+    parser = argparse.ArgumentParser(prog="asymslip")
+    commands = parser.add_subparsers(dest="command", required=True)
+    cli_extra.register(commands, add_law_options)
+    law_file = tmp_path / "hertz_user.py"
+    args = parser.parse_args(
+        ["derive", "--P-of-a", "pi*E_star*a**2/(4*R)", "--params", "R E_star",
+         "--name", "hertz_user", "--out", str(law_file)]
+    )  # fmt: skip
+    assert args.run(args) == 0 and law_file.exists()
+    cases = tmp_path / "cases.csv"
+    cases.write_text(CASES)
+    args = parser.parse_args(["sweep", str(cases), "--law", "module", "--module", str(law_file),
+                              "--param", "R=1", "--param", "E_star=1", "--mu", "0.25",
+                              "--out", str(tmp_path / "out.csv")])  # fmt: skip
+    assert args.run(args) == 1  # some rows are invalid
+    report = capsys.readouterr().err
+    assert "6 invalid rows" in report and "line 3: P2: must exceed P1" in report
+    rows = read(tmp_path / "out.csv")
+    fig5 = slip_zone(LAW, LoadCycle(100, 0, 105, 1), 0.1)
+    assert float(rows[0]["b"]) == pytest.approx(fig5.b, rel=1e-13)
+
+
+# --- the generated kernels work on chunked dask arrays unchanged --------------------------
+def test_generated_kernels_give_the_numpy_values_on_chunked_dask_arrays():
+    da = pytest.importorskip("dask.array")
+    rng = np.random.default_rng(3)
+    n = 10_000
+    a1 = rng.uniform(1, 10, n)
+    da_ = a1 * rng.uniform(1e-6, 0.05, n)
+    inputs = {
+        "mu": rng.uniform(0.05, 1, n), "lam": rng.uniform(-2, 2, n),
+        "eta": rng.uniform(-0.05, 0.05, n),
+        "a1": a1, "a2": a1 + da_, "da": da_, "L_I1": rng.uniform(1, 3, n),
+        "x": a1 * rng.uniform(0.5, 1.2, n), "E_star": rng.uniform(0.5, 2, n),
+    }  # fmt: skip
+    inputs["L_I2"] = inputs["L_I1"] * rng.uniform(0.99, 1.01, n)
+    stick_args = ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2")
+    inputs["b"] = gen.stick_boundary_proportional(*(inputs[k] for k in stick_args))
+    inputs["L_II1"] = gen.shear_edge_multiplier_proportional(
+        inputs["lam"], inputs["eta"], a1, inputs["L_I1"]
+    )
+    inputs["L_II2"] = gen.shear_edge_multiplier_proportional(
+        inputs["lam"], inputs["eta"], inputs["a2"], inputs["L_I2"]
+    )
+    chunked = {key: da.from_array(value, chunks=2_500) for key, value in inputs.items()}
+    kernels = {
+        gen.stick_boundary_proportional: ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2"),
+        gen.slip_zone_width: ("mu", "lam", "eta", "a1", "da", "L_I1", "L_I2"),
+        gen.dislocation_density: ("x", "b", "a1", "mu", "L_I1", "L_I2", "L_II1", "L_II2", "E_star"),
+        gen.hertz_half_width: ("a1", "mu", "E_star"),
+    }
+    for kernel, names in kernels.items():
+        lazy = kernel(*(chunked[name] for name in names))
+        assert isinstance(lazy, da.Array), kernel.__name__
+        assert lazy.chunks == ((2_500,) * 4,)
+        assert np.array_equal(lazy.compute(), kernel(*(inputs[name] for name in names))), (
+            kernel.__name__
+        )
