@@ -5,7 +5,7 @@ PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
-EXTRAS := derive,dev,plot,bench,dask
+EXTRAS := derive,dev,plot,bench,dask,special
 
 .DEFAULT_GOAL := all
 .PHONY: all env demo generate check-generated verify test bench figures report accuracy clean help

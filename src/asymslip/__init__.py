@@ -13,8 +13,19 @@ Examples
 
 from .cycle import LoadCycle
 from .errors import InputError
-from .laws import ContactLaw, HertzLaw
+from .laws import ContactLaw, FlatRoundedLaw, HertzLaw, ModuleLaw, PowerLaw, TableLaw
 from .edge_solution import SlipZoneResult, slip_zone
 
-__all__ = ["ContactLaw", "HertzLaw", "InputError", "LoadCycle", "SlipZoneResult", "slip_zone"]
+__all__ = [
+    "ContactLaw",
+    "FlatRoundedLaw",
+    "HertzLaw",
+    "InputError",
+    "LoadCycle",
+    "ModuleLaw",
+    "PowerLaw",
+    "SlipZoneResult",
+    "TableLaw",
+    "slip_zone",
+]
 __version__ = "0.1.0"

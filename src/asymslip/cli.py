@@ -18,14 +18,14 @@ from pathlib import Path
 from . import cli_extra
 from .edge_solution import VALIDITY_MEANING, SlipZoneResult, slip_zone
 from .errors import InputError
-from .laws import ContactLaw, HertzLaw
+from .laws import ContactLaw, FlatRoundedLaw, HertzLaw, PowerLaw
 from .tractions import traction_difference
 
 #: API parameter name -> the option that sets it, for error messages.
 OPTION_OF = {
     "P1": "--P1", "Q1": "--Q1", "P2": "--P2", "Q2": "--Q2", "sigma1": "--sigma1",
     "sigma2": "--sigma2", "mu": "--mu", "R": "--R", "E_star": "--E-star", "law": "--law",
-    "edge": "--edge", "x": "--x", "b": "--b",
+    "edge": "--edge", "x": "--x", "b": "--b", "c": "--flat-half-width", "A": "--A", "n": "--n",
 }  # fmt: skip
 
 LawBuilder = Callable[[argparse.Namespace], ContactLaw]
@@ -42,7 +42,22 @@ def _hertz(args: argparse.Namespace) -> ContactLaw:
     return HertzLaw(R=args.R, E_star=args.E_star)
 
 
-LAWS: dict[str, LawBuilder] = {"hertz": _hertz, **cli_extra.LAWS}
+def _flat_rounded(args: argparse.Namespace) -> ContactLaw:
+    _require_options(args, "flat-rounded", ["c", "R", "E_star"])
+    return FlatRoundedLaw(c=args.c, R=args.R, E_star=args.E_star)
+
+
+def _power(args: argparse.Namespace) -> ContactLaw:
+    _require_options(args, "power", ["A", "n", "E_star"])
+    return PowerLaw(A=args.A, n=args.n, E_star=args.E_star)
+
+
+LAWS: dict[str, LawBuilder] = {
+    "hertz": _hertz,
+    "flat-rounded": _flat_rounded,
+    "power": _power,
+    **cli_extra.LAWS,
+}
 OPTION_OF.update(cli_extra.OPTION_OF)
 
 
@@ -57,8 +72,14 @@ def _add_law_options(parser: argparse.ArgumentParser) -> None:
     group = parser.add_argument_group("contact law")
     group.add_argument("--law", default="hertz", help="contact law (default: hertz); one of: "
                        + ", ".join(sorted(LAWS)))
-    group.add_argument("--R", type=float, help="cylinder radius R (hertz)")
-    group.add_argument("--E-star", dest="E_star", type=float, help="plane-strain modulus E*")
+    group.add_argument("--R", type=float,
+                       help="cylinder radius (hertz) or corner radius (flat-rounded)")
+    group.add_argument("--E-star", dest="E_star", type=float,
+                       help="plane-strain modulus E* (hertz, flat-rounded, power)")
+    group.add_argument("--flat-half-width", dest="c", type=float,
+                       help="half-width c of the flat (flat-rounded)")
+    group.add_argument("--A", type=float, help="profile coefficient A of h = A |x|^n (power)")
+    group.add_argument("--n", type=float, help="profile exponent n >= 1 of h = A |x|^n (power)")
     cli_extra.add_law_options(group)
 
 

@@ -37,16 +37,17 @@ class ContactLaw(abc.ABC):
         """Contact half-width a(P), the inverse of :meth:`load`."""
         from .roots import invert_increasing
 
-        return invert_increasing(self.load, np.asarray(P, dtype=np.float64))
+        return invert_increasing(self.load, np.asarray(P, dtype=np.float64), self.load_slope)
 
     def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:
-        """a(P1 + dP) - a(P1).
+        """a(P1 + dP) - a(P1), as the integral of da/dP over (P1, P1 + dP).
 
-        The default subtracts two half-widths and so loses relative precision as dP/P1 -> 0;
-        laws with a cancellation-free form override it.
+        A sum of positive terms, so it keeps full relative precision however small dP/P1 is;
+        laws with a closed form override it.
         """
-        P1 = np.asarray(P1, dtype=np.float64)
-        return self.half_width(P1 + dP) - self.half_width(P1)
+        from .roots import inverse_growth
+
+        return inverse_growth(self.half_width, self.load_slope, P1, dP)
 
     def half_width_slope(self, P: ArrayLike) -> FloatArray:
         """a'(P) = 1 / (dP/da)."""

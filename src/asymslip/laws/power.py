@@ -1,0 +1,143 @@
+"""Power-law punch h = A |x|^n, n >= 1: law, closed-form inverse, multiplier and pressure.
+
+The formulas are generated from ``derivations/contact_law_power.py`` (beyond the paper).
+Everything is NumPy-only except the pressure for n other than 1 (wedge) and 2 (cylinder), which
+needs the Gauss hypergeometric function from SciPy: install the ``special`` extra.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from asymslip_gen.power_law import (
+    power_law_half_width,
+    power_law_half_width_growth,
+    power_law_hypergeometric_argument,
+    power_law_load,
+    power_law_load_slope,
+    power_law_normal_edge_multiplier,
+    power_law_normal_edge_multiplier_slope,
+    power_law_pressure,
+    wedge_pressure,
+)
+
+from ..errors import as_float_array, positive, require
+from .base import ContactLaw, FloatArray
+
+#: Above this n, Gamma((n + 1)/2) overflows a double; use log-Gamma instead.
+_GAMMA_LIMIT = 300.0
+
+
+def shape_factor(n: float) -> float:
+    """K(n) = sqrt(pi) Gamma((n + 1)/2) / Gamma(n/2) of P = K E* A a^n.
+
+    Derived (and checked against quadrature) in ``derivations/contact_law_power.py``; NumPy has
+    no Gamma function, so the generated kernels take K as an argument.  K(1) = 1, K(2) = pi/2.
+    """
+    if n < _GAMMA_LIMIT:
+        return math.sqrt(math.pi) * math.gamma((n + 1) / 2) / math.gamma(n / 2)
+    return math.sqrt(math.pi) * math.exp(math.lgamma((n + 1) / 2) - math.lgamma(n / 2))
+
+
+def _hyp2f1():
+    """SciPy's hyp2f1, imported only when a pressure needs it."""
+    try:
+        from scipy.special import hyp2f1
+    except ImportError as missing:  # pragma: no cover - exercised by monkeypatching in tests
+        raise ImportError(
+            "PowerLaw.pressure for n other than 1 or 2 needs scipy.special.hyp2f1: "
+            "install the 'special' extra, e.g. pip install 'asymslip[special]'"
+        ) from missing
+    return hyp2f1
+
+
+@dataclass(frozen=True)
+class PowerLaw(ContactLaw):
+    """Punch of profile h = A |x|^n (n >= 1) on a half-plane: P = K(n) E* A a^n.
+
+    n = 1 is the wedge (A = the tangent of its base angle), n = 2 with A = 1/(2R) the cylinder
+    of (29).  n < 1 is refused: its slope h' is unbounded at the apex, outside the smooth
+    incomplete contacts the method is built for.
+
+    Parameters
+    ----------
+    A
+        Profile coefficient, A > 0 [length^(1-n)].
+    n
+        Profile exponent, n >= 1.
+    E_star
+        Plane-strain contact modulus E* > 0 [force/length^2].
+
+    Examples
+    --------
+    >>> law = PowerLaw(A=0.5, n=2.0, E_star=1.0)   # the cylinder of radius 1
+    >>> round(float(law.half_width(100.0)), 6)
+    11.283792
+    """
+
+    A: float
+    n: float
+    E_star: float
+    name = "power"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "A", float(positive("A", self.A)))
+        exponent = as_float_array("n", self.n)
+        require(exponent >= 1, "n", "must be >= 1 (n < 1 is not an incomplete contact)", exponent)
+        object.__setattr__(self, "n", float(exponent))
+        object.__setattr__(self, "E_star", float(positive("E_star", self.E_star)))
+
+    @property
+    def shape_factor(self) -> float:
+        """K(n) of P = K E* A a^n."""
+        return shape_factor(self.n)
+
+    @property
+    def _parameters(self) -> tuple[float, float, float, float]:
+        return self.n, self.A, self.E_star, self.shape_factor
+
+    def load(self, a: ArrayLike) -> FloatArray:
+        return power_law_load(a, *self._parameters)
+
+    def load_slope(self, a: ArrayLike) -> FloatArray:
+        return power_law_load_slope(a, *self._parameters)
+
+    def half_width(self, P: ArrayLike) -> FloatArray:
+        """a(P) = (P/(K E* A))^(1/n), closed form."""
+        return power_law_half_width(positive("P", P), *self._parameters)
+
+    def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:
+        """a1 expm1(log1p(dP/P1)/n): full relative precision however small dP/P1 is."""
+        change = as_float_array("dP", dP)
+        require(change >= 0, "dP", "must be >= 0", change)
+        return power_law_half_width_growth(positive("P1", P1), change, *self._parameters)
+
+    def normal_multiplier(self, P: ArrayLike) -> FloatArray:
+        return power_law_normal_edge_multiplier(positive("P", P), *self._parameters)
+
+    def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
+        """(1 - 3/(2n)) L_I / P: negative for n < 3/2."""
+        return power_law_normal_edge_multiplier_slope(positive("P", P), *self._parameters)
+
+    def pressure(self, x: ArrayLike, P: ArrayLike) -> FloatArray:
+        """Contact pressure p(x) at load P; zero for |x| >= a(P).
+
+        NumPy-only for n = 1 (the wedge, p = (E* A/pi) arccosh(a/|x|), +inf at the apex x = 0)
+        and n = 2 (the cylinder); any other n needs SciPy (the ``special`` extra).
+        """
+        position = as_float_array("x", x)
+        a = self.half_width(P)
+        if self.n == 1.0:
+            # The wedge's pressure is logarithmically infinite at the apex: +inf, not a warning.
+            with np.errstate(divide="ignore"):
+                return wedge_pressure(position, a, self.A, self.E_star)
+        if self.n == 2.0:
+            factor = np.ones(np.broadcast_shapes(position.shape, np.shape(a)))  # 2F1(0, 1; 3/2; z)
+        else:
+            argument = power_law_hypergeometric_argument(position, a)
+            factor = _hyp2f1()(1 - self.n / 2, 1.0, 1.5, argument)
+        return power_law_pressure(position, a, *self._parameters, factor)
