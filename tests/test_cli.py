@@ -73,3 +73,61 @@ def test_every_command_has_help():
         completed = subprocess.run([sys.executable, "-m", "asymslip", *command, "--help"],
                                    capture_output=True, text=True)  # fmt: skip
         assert completed.returncode == 0 and "usage:" in completed.stdout
+
+
+def test_traction_json_gives_the_paper_fig5_errors_at_the_centre_and_near_the_edge(capsys):
+    a2 = float(HertzLaw(1, 1).half_width(105.0))
+    assert main(["traction", *FIG5, "--x", "0", str(0.9 * a2), "--b", "exact", "--json"]) == 0
+    printed = json.loads(capsys.readouterr().out)
+    assert list(printed) == ["x", "q_diff", "q_diff_exact", "b", "stick_boundary"]
+    errors = [abs(q - e) for q, e in zip(printed["q_diff"], printed["q_diff_exact"], strict=True)]
+    # Section 3.4: "about 0.01 at the centre" and "about 0.004" at x = 0.9 a2.
+    assert errors[0] == pytest.approx(0.0114, abs=1e-4)
+    assert errors[1] == pytest.approx(0.0041, abs=1e-4)
+
+
+def test_traction_refuses_a_point_at_or_beyond_the_edge():
+    completed = subprocess.run([sys.executable, "-m", "asymslip", "traction", *FIG5, "--x", "12"],
+                               capture_output=True, text=True)  # fmt: skip
+    assert completed.returncode == 2
+    assert completed.stderr.startswith("asymslip: error: --x: must be < a2")
+
+
+def test_figure_fig5_writes_the_png_and_the_csv(tmp_path, capsys):
+    assert main(["figure", "fig5", "--out", str(tmp_path)]) == 0
+    assert (tmp_path / "fig5.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert (tmp_path / "fig5.csv").read_text().count("\n") > 2000
+
+
+@pytest.mark.parametrize(
+    "law_options",
+    [
+        ["--law", "flat-rounded", "--flat-half-width", "5", "--R", "10", "--E-star", "1"],
+        ["--law", "power", "--A", "0.5", "--n", "2.5", "--E-star", "1"],
+        ["--law", "power", "--A", "0.5", "--n", "1", "--E-star", "1"],
+    ],
+    ids=["flat-rounded", "power-2.5", "wedge"],
+)
+def test_every_built_in_law_reports_the_same_keys_and_an_exact_stick_boundary(law_options, capsys):
+    cycle = ["--mu", "0.1", "--P1", "100", "--Q1", "0", "--P2", "105", "--Q2", "1"]
+    assert main(["slip-zone", *law_options, *cycle, "--json"]) == 0
+    printed = json.loads(capsys.readouterr().out)
+    assert list(printed) == [*KEYS, "left"]
+    # (22) and the exact a(P_K) agree to first order in dP/P1 = 0.05 for every law.
+    assert abs(printed["b"] - printed["b_exact"]) / printed["a1"] < 0.05**2
+
+
+@pytest.mark.parametrize(
+    "law_options, option",
+    [
+        (["--law", "flat-rounded", "--R", "10", "--E-star", "1"], "--flat-half-width"),
+        (["--law", "power", "--A", "0.5", "--n", "0.5", "--E-star", "1"], "--n"),
+        (["--law", "power", "--A", "-1", "--n", "2", "--E-star", "1"], "--A"),
+    ],
+)
+def test_missing_or_invalid_law_parameters_name_their_option(law_options, option):
+    cycle = ["--mu", "0.1", "--P1", "100", "--Q1", "0", "--P2", "105", "--Q2", "1"]
+    completed = subprocess.run([sys.executable, "-m", "asymslip", "slip-zone", *law_options,
+                                *cycle], capture_output=True, text=True)  # fmt: skip
+    assert completed.returncode == 2
+    assert completed.stderr.startswith(f"asymslip: error: {option}:"), completed.stderr
