@@ -154,54 +154,83 @@ INTERNAL_KEYS = ("direction", "lam_oriented", "eta_oriented", "denominator",
                  "permanent_stick_load")  # fmt: skip
 
 
-def _exact_stick_boundary(law: ContactLaw, cycle: LoadCycle, P_K: float,
-                          warnings: list[str]) -> float | None:
-    """b = a(P_K) (Jaeger-Ciavarella), exact for any symmetric law when eta = 0."""
-    if float(cycle.eta) != 0.0:
-        return None
-    if P_K <= 0:
-        warnings.append(
-            f"P_K = {P_K:.6g} <= 0: the shear change exceeds friction over the whole cycle, "
-            "so this is not a cycle of partial slip and b_exact does not exist"
-        )
-        return None
-    return float(law.half_width(P_K))
+#: The message of :class:`InputError` when (17) has no root (shared with the sweep).
+ZERO_DENOMINATOR_RULE = (
+    "the denominator of (17), mu (L_I1 + L_I2) + L_II1 - L_II2, is zero for this friction "
+    "coefficient and load path: no stick boundary exists"
+)
+
+
+def denominator_vanishes(values: dict[str, FloatArray], mu: ArrayLike) -> NDArray[np.bool_]:
+    """Where an edge slips but the denominator of (17) is zero to rounding."""
+    scale = (
+        2 * np.asarray(mu) * (values["L_I1"] + values["L_I2"])
+        + np.abs(values["L_II1"])
+        + np.abs(values["L_II2"])
+    )
+    return (values["direction"] != 0) & (
+        np.abs(values["denominator"]) <= 64 * np.finfo(float).eps * scale
+    )
+
+
+def edge_warnings(
+    law: ContactLaw, cycle: LoadCycle, values: dict[str, FloatArray]
+) -> tuple[list[list[str]], FloatArray]:
+    """Per-cycle warnings, in words, and b_exact (NaN where it does not exist), vectorised.
+
+    ``values`` is what :func:`edge_quantities` returns.  b_exact = a(P_K) (Jaeger-Ciavarella)
+    is exact for any symmetric law when eta = 0.  Law-specific warnings (e.g. a table law's
+    extrapolation) are the caller's: see :meth:`ContactLaw.load_warnings`.
+    """
+    rows = int(np.size(values["b"]))
+    texts: list[list[str]] = [[] for _ in range(rows)]
+
+    def column(name: str) -> FloatArray:
+        return np.broadcast_to(values[name], (rows,))
+
+    def add(mask: NDArray[np.bool_], message) -> None:
+        for i in np.flatnonzero(np.broadcast_to(mask, (rows,))):
+            texts[i].append(message(int(i)))
+
+    still = column("direction") == 0
+    add(still, lambda i: (
+        "no slip at this edge: |L_II2| <= mu L_I2 (|lam + pi eta a2/4| <= mu), so the edge "
+        "sticks wherever it is in contact; b = a1 and the slip-zone width is 0"))  # fmt: skip
+    add(~still & (column("denominator") < 0),
+        lambda i: "the denominator of (17) is negative: no steady partial-slip state")  # fmt: skip
+    for key, meaning in VALIDITY_MEANING.items():
+        measure = column(key)
+        add(measure > VALIDITY_THRESHOLD,
+            lambda i, key=key, measure=measure, meaning=meaning: (
+                f"{key} = {measure[i]:.3g} > {VALIDITY_THRESHOLD}: {meaning} is not "
+                "small, so the asymptotic solution is doubtful"))  # fmt: skip
+    P_K = column("permanent_stick_load")
+    no_tension = np.broadcast_to(np.asarray(cycle.eta) == 0.0, (rows,))
+    add(no_tension & ~(P_K > 0), lambda i: (
+        f"P_K = {P_K[i]:.6g} <= 0: the shear change exceeds friction over the whole cycle, "
+        "so this is not a cycle of partial slip and b_exact does not exist"))  # fmt: skip
+    exists = no_tension & (P_K > 0)
+    b_exact = np.full(rows, np.nan)
+    if exists.any():
+        b_exact[exists] = law.half_width(P_K[exists])
+    return texts, b_exact
 
 
 def _single_edge(law: ContactLaw, cycle: LoadCycle, mu: float, edge: Edge) -> SlipZoneResult:
-    values = {key: float(value) for key, value in edge_quantities(law, cycle, mu, edge).items()}
-    law.check_increasing(np.asarray(values["a1"]), np.asarray(values["a2"]))
-    internal = {key: values.pop(key) for key in INTERNAL_KEYS}
-    warnings: list[str] = []
-    if internal["direction"] == 0:
-        warnings.append(
-            "no slip at this edge: |L_II2| <= mu L_I2 (|lam + pi eta a2/4| <= mu), so the edge "
-            "sticks wherever it is in contact; b = a1 and the slip-zone width is 0"
-        )
-    else:
-        denominator = internal["denominator"]
-        scale = 2 * mu * (values["L_I1"] + values["L_I2"]) + abs(values["L_II1"]) + abs(
-            values["L_II2"]
-        )
-        if abs(denominator) <= 64 * np.finfo(float).eps * scale:
-            raise InputError(
-                "mu",
-                "the denominator of (17), mu (L_I1 + L_I2) + L_II1 - L_II2, is zero for this "
-                "friction coefficient and load path: no stick boundary exists",
-                mu,
-            )
-        if denominator < 0:
-            warnings.append("the denominator of (17) is negative: no steady partial-slip state")
-    validity = {key: values.pop(key) for key in VALIDITY_MEANING}
-    for key, value in validity.items():
-        if value > VALIDITY_THRESHOLD:
-            warnings.append(
-                f"{key} = {value:.3g} > {VALIDITY_THRESHOLD}: {VALIDITY_MEANING[key]} is not "
-                "small, so the asymptotic solution is doubtful"
-            )
-    b_exact = _exact_stick_boundary(law, cycle, internal["permanent_stick_load"], warnings)
+    arrays = edge_quantities(law, cycle, mu, edge)
+    law.check_increasing(np.asarray(arrays["a1"]), np.asarray(arrays["a2"]))
+    if denominator_vanishes(arrays, mu).any():
+        raise InputError("mu", ZERO_DENOMINATOR_RULE, mu)
+    (warnings,), (b_exact,) = edge_warnings(law, cycle, arrays)
     warnings.extend(law.load_warnings(float(cycle.P1), float(cycle.P2)))
-    return SlipZoneResult(**values, b_exact=b_exact, validity=validity, warnings=warnings)
+    values = {key: float(value) for key, value in arrays.items() if key not in INTERNAL_KEYS}
+    validity = {key: values.pop(key) for key in VALIDITY_MEANING}
+    return SlipZoneResult(
+        **values,
+        b_exact=None if np.isnan(b_exact) else float(b_exact),
+        validity=validity,
+        warnings=warnings,
+    )
 
 
 def slip_zone(

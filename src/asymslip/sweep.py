@@ -35,9 +35,10 @@ from .cycle import LoadCycle
 from .edge_solution import (
     INTERNAL_KEYS,
     VALIDITY_MEANING,
-    VALIDITY_THRESHOLD,
     SlipZoneResult,
+    denominator_vanishes,
     edge_quantities,
+    edge_warnings,
     slip_zone,
 )
 from .errors import InputError
@@ -272,14 +273,7 @@ def _edge_breaks(values: dict[str, FloatArray], internal: dict[str, FloatArray],
     """The rules slip_zone checks per edge, in its order: an increasing law, then a non-zero
     denominator of (17) where the edge slips."""
     increasing = (internal["dP_da1"] > 0) & (internal["dP_da2"] > 0)
-    scale = (
-        2 * mu * (values["L_I1"] + values["L_I2"])
-        + np.abs(values["L_II1"])
-        + np.abs(values["L_II2"])
-    )
-    singular = (internal["direction"] != 0) & (
-        np.abs(internal["denominator"]) <= 64 * np.finfo(float).eps * scale
-    )
+    singular = denominator_vanishes({**values, **internal}, mu)
     finite = np.logical_and.reduce([np.isfinite(column) for column in values.values()])
     return [
         ("law increasing", ~increasing, np.minimum(internal["dP_da1"], internal["dP_da2"])),
@@ -290,43 +284,15 @@ def _edge_breaks(values: dict[str, FloatArray], internal: dict[str, FloatArray],
 
 def _edge_warnings(law: ContactLaw, cycle: LoadCycle, mu: FloatArray, values: dict[str, FloatArray],
                    internal: dict[str, FloatArray]) -> tuple[list[str], FloatArray]:  # fmt: skip
-    """Per-row warnings (joined) and b_exact, in the words and order of slip_zone."""
-    rows = values["a1"].size
-    texts: list[list[str]] = [[] for _ in range(rows)]
-
-    def add(mask: NDArray[np.bool_], message: Callable[[int], str]) -> None:
-        for i in np.flatnonzero(mask):
-            texts[i].append(message(int(i)))
-
-    still = internal["direction"] == 0
-    add(still, lambda i: (
-        "no slip at this edge: |L_II2| <= mu L_I2 (|lam + pi eta a2/4| <= mu), so the edge "
-        "sticks wherever it is in contact; b = a1 and the slip-zone width is 0"))  # fmt: skip
-    add(
-        ~still & (internal["denominator"] < 0),
-        lambda i: "the denominator of (17) is negative: no steady partial-slip state",
-    )
-    for key, meaning in VALIDITY_MEANING.items():
-        measure = values[key]
-        add(measure > VALIDITY_THRESHOLD,
-            lambda i, key=key, measure=measure, meaning=meaning: (
-                f"{key} = {measure[i]:.3g} > {VALIDITY_THRESHOLD}: {meaning} is not "
-                "small, so the asymptotic solution is doubtful"))  # fmt: skip
-    # b = a(P_K) (Jaeger-Ciavarella) when eta = 0, as slip_zone's _exact_stick_boundary.
-    P_K = np.broadcast_to(internal["permanent_stick_load"], (rows,))
-    no_tension = np.broadcast_to(cycle.eta == 0.0, (rows,))
-    add(no_tension & ~(P_K > 0), lambda i: (
-        f"P_K = {P_K[i]:.6g} <= 0: the shear change exceeds friction over the whole cycle, "
-        "so this is not a cycle of partial slip and b_exact does not exist"))  # fmt: skip
-    exists = no_tension & (P_K > 0)
-    b_exact = np.full(rows, np.nan)
-    if exists.any():
-        b_exact[exists] = law.half_width(P_K[exists])
+    """Per-row warnings (joined) and b_exact, from slip_zone's own vectorised helper."""
+    texts, b_exact = edge_warnings(law, cycle, {**values, **internal})
+    rows = len(texts)
     outside = getattr(law, "outside_range", None)
     if outside is not None:  # a tabulated law says where it extrapolates
         for label, P in (("P1", cycle.P1), ("P2", cycle.P2)):
             P = np.broadcast_to(P, (rows,))
-            add(outside(P), lambda i, label=label, P=P: law.range_warning(label, float(P[i])))
+            for i in np.flatnonzero(outside(P)):
+                texts[i].append(law.range_warning(label, float(P[i])))
     return [WARNING_SEPARATOR.join(row) for row in texts], b_exact
 
 
