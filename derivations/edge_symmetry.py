@@ -19,8 +19,9 @@ from __future__ import annotations
 
 import sympy
 
-from _glossary import L_I1, L_I2, L_II1, L_II2, mu
 from asymslip.codegen import Derivation
+
+from _glossary import L_I1, L_I2, L_II1, L_II2, mu
 from section2_integral_equation import dislocations_12, edge1, edge2, integral_equation, q1
 
 x, c = sympy.symbols("x c", real=True)
@@ -53,7 +54,9 @@ def derive() -> Derivation:
             "lambda -> -lambda and eta -> eta, and the pressure multiplier L_I is unchanged",
             derived=bonded_strip_shear(x, -Q, sigma),
         )
-    with d.equation("E2", "Backward slip = forward slip with L_II -> -L_II, traction negated") as eq:
+    with d.equation(
+        "E2", "Backward slip = forward slip with L_II -> -L_II, traction negated"
+    ) as eq:
         eq.beyond_paper("the paper's (8) and (11) assume forward slip on loading (lambda > mu)")
         forward_reversed = integral_equation().subs({L_II1: -L_II1, L_II2: -L_II2},
                                                     simultaneous=True)  # fmt: skip

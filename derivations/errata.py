@@ -9,8 +9,9 @@ from __future__ import annotations
 import mpmath
 import sympy
 
-from _glossary import L_I1, L_I2, L_II1, L_II2, P1, a1, a2, b, dP, lam, mu, x
 from asymslip.codegen import Derivation
+
+from _glossary import L_I1, L_I2, L_II1, L_II2, P1, a1, a2, b, dP, lam, mu, x
 from contact_law_hertz import E_star, P, R, hertz_half_width, hertz_multiplier
 from section3_exact_solution import permanent_stick_load
 from section3_tractions import P_K, hertz_traction_difference, traction_difference

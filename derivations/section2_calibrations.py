@@ -16,6 +16,8 @@ import functools
 
 import sympy
 
+from asymslip.codegen import Derivation
+
 from _glossary import (
     L_I,
     L_I1,
@@ -34,7 +36,6 @@ from _glossary import (
     lam,
     mu,
 )
-from asymslip.codegen import Derivation
 from section2_consistency import (
     coefficient1,
     coefficient2,

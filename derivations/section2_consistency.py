@@ -11,8 +11,9 @@ import functools
 
 import sympy
 
-from _glossary import L_I1, L_I2, L_II1, L_II2, a1, a2, arguments, b, mu
 from asymslip.codegen import Derivation
+
+from _glossary import L_I1, L_I2, L_II1, L_II2, a1, a2, arguments, b, mu
 from section2_hilbert_identity import beta, weight_integral
 
 

@@ -14,8 +14,9 @@ import functools
 import mpmath
 import sympy
 
-from _glossary import E_star, L_I1, L_I2, L_II1, L_II2, a1, a2, arguments, b, mu, x
 from asymslip.codegen import Derivation
+
+from _glossary import L_I1, L_I2, L_II1, L_II2, E_star, a1, a2, arguments, b, mu, x
 from section2_consistency import stick_boundary
 from section2_hilbert_identity import hilbert_on_interval
 

@@ -12,8 +12,9 @@ import functools
 
 import sympy
 
-from _glossary import L_I1, L_I2, L_II1, L_II2, mu
 from asymslip.codegen import Derivation
+
+from _glossary import L_I1, L_I2, L_II1, L_II2, mu
 
 # sqrt(a2 - x) and H(a1 - x) sqrt(a1 - x) as opaque, non-negative shape functions.
 edge2 = sympy.Symbol("s_2", nonnegative=True)
@@ -63,7 +64,8 @@ def derive() -> Derivation:
             derived,
             paper,
             how="solved (7), (8), (11) for the dislocation traction",
-            printed=r"(\mu L_{I,1}+L_{II,1})H(a_1-x)\sqrt{a_1-x}+(\mu L_{I,2}-L_{II,2})\sqrt{a_2-x}",
+            printed=r"(\mu L_{I,1}+L_{II,1})H(a_1-x)\sqrt{a_1-x}"
+            r"+(\mu L_{I,2}-L_{II,2})\sqrt{a_2-x}",
         )
         # With annihilation D_21 = -D_12, (10) must then hold identically on the slip zone.
         q2 = mu * L_I2 * edge2

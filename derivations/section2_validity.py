@@ -10,6 +10,8 @@ import functools
 
 import sympy
 
+from asymslip.codegen import Derivation
+
 from _glossary import (
     L_I1,
     L_I2,
@@ -25,7 +27,6 @@ from _glossary import (
     lam,
     mu,
 )
-from asymslip.codegen import Derivation
 from section2_calibrations import slip_zone_width, stick_boundary_proportional
 
 law = sympy.Function("a")  # contact half-width as a function of load

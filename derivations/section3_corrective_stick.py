@@ -20,8 +20,9 @@ import functools
 
 import sympy
 
-from _glossary import L_I, L_I1, P1, a, a1, a2, arguments, da, dP, eta, lam, mu
 from asymslip.codegen import Argument, Derivation
+
+from _glossary import L_I, L_I1, P1, a, a1, a2, arguments, da, dP, eta, lam, mu
 from contact_law_hertz import (
     LOAD1,
     LOAD_CHANGE,

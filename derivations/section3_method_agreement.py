@@ -20,8 +20,9 @@ import functools
 
 import sympy
 
-from _glossary import L_I1, L_I2, P1, a1, a2, da_dP, dP, eta, lam, mu
 from asymslip.codegen import Argument, Derivation
+
+from _glossary import L_I1, L_I2, P1, a1, a2, da_dP, dP, eta, lam, mu
 from contact_law_hertz import (
     LOAD1,
     LOAD_CHANGE,

@@ -45,7 +45,9 @@ def test_max_prints_as_elementwise_numpy_maximum():
 
 
 def test_clamped_kernel_runs_without_warnings_on_both_sides_of_the_edge():
-    source = format_source(render_module("demo", "Demo.", [_formula(sympy.sqrt(sympy.Max(0, a - x)))]))
+    source = format_source(
+        render_module("demo", "Demo.", [_formula(sympy.sqrt(sympy.Max(0, a - x)))])
+    )
     namespace: dict = {}
     exec(compile(source, "demo.py", "exec"), namespace)
     values = namespace["kernel"](np.array([0.0, 0.5, 1.0, 2.0]), 1.0)  # -W error: no warnings

@@ -31,7 +31,9 @@ def test_slip_zone_width_keeps_1e_12_relative_accuracy_at_da_over_a1_of_1e_10():
 def test_hertz_growth_keeps_1e_12_relative_accuracy_at_dP_over_P1_of_1e_10():
     P1, dP, R, E_star = 100.0, 100.0 * 2.0**-33, 1.0, 1.0
     computed = gen.hertz_half_width_growth(P1, dP, R, E_star)
-    a = [mpmath.sqrt(4 * mpmath.mpf(P) * R / (mpmath.pi * E_star)) for P in (P1, mpmath.mpf(P1) + dP)]
+    a = [
+        mpmath.sqrt(4 * mpmath.mpf(P) * R / (mpmath.pi * E_star)) for P in (P1, mpmath.mpf(P1) + dP)
+    ]
     reference = a[1] - a[0]
     assert abs(computed - reference) / reference < 1e-12
 

@@ -8,7 +8,6 @@ from __future__ import annotations
 import numpy as np
 from hypothesis import assume, given, settings
 
-
 import asymslip_gen as gen
 from tests import strategies as s
 from tests.transcription import section2 as paper

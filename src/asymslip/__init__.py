@@ -12,9 +12,9 @@ Examples
 """
 
 from .cycle import LoadCycle
+from .edge_solution import SlipZoneResult, slip_zone
 from .errors import InputError
 from .laws import ContactLaw, FlatRoundedLaw, HertzLaw, ModuleLaw, PowerLaw, TableLaw
-from .edge_solution import SlipZoneResult, slip_zone
 
 __all__ = [
     "ContactLaw",

@@ -10,12 +10,11 @@ import argparse
 import json
 import sys
 from collections.abc import Callable, Sequence
+from pathlib import Path
 from typing import NoReturn
 
-from .cycle import LoadCycle
-from pathlib import Path
-
 from . import cli_extra
+from .cycle import LoadCycle
 from .edge_solution import VALIDITY_MEANING, SlipZoneResult, slip_zone
 from .errors import InputError
 from .laws import ContactLaw, FlatRoundedLaw, HertzLaw, PowerLaw

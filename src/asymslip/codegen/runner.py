@@ -76,14 +76,18 @@ def render_package(run: DerivationRun) -> dict[str, str]:
     seen: dict[str, str] = {}
     for formula in run.formulas:
         if formula.name in seen:
-            raise ValueError(f"{formula.name} emitted twice ({seen[formula.name]}, {formula.module})")
+            raise ValueError(
+                f"{formula.name} emitted twice ({seen[formula.name]}, {formula.module})"
+            )
         seen[formula.name] = formula.module
         modules[formula.module].append(formula)
     files: dict[str, str] = {}
     for module, formulas in sorted(modules.items()):
         if module not in run.module_docs:
             raise ValueError(f"generated module {module!r} has no description (describe_module)")
-        files[f"{module}.py"] = format_source(render_module(module, run.module_docs[module], formulas))
+        files[f"{module}.py"] = format_source(
+            render_module(module, run.module_docs[module], formulas)
+        )
     files["__init__.py"] = format_source(render_package_init(modules))
     return files
 
@@ -136,9 +140,7 @@ def diff_trees(expected: dict[str, str], committed: Path) -> list[str]:
         path = committed / name
         old = path.read_text().splitlines(keepends=True) if path.exists() else []
         new = expected.get(name, "").splitlines(keepends=True)
-        lines.extend(
-            difflib.unified_diff(old, new, f"committed/{name}", f"regenerated/{name}")
-        )
+        lines.extend(difflib.unified_diff(old, new, f"committed/{name}", f"regenerated/{name}"))
     return lines
 
 
@@ -159,8 +161,15 @@ def check_fresh(
             out = Path(scratch) / f"seed{seed}"
             env = {**os.environ, "PYTHONHASHSEED": seed}
             command = [
-                sys.executable, "-m", "asymslip.codegen", "generate",
-                "--derivations", str(derivations), "--out", str(out / "asymslip_gen"), "--quiet",
+                sys.executable,
+                "-m",
+                "asymslip.codegen",
+                "generate",
+                "--derivations",
+                str(derivations),
+                "--out",
+                str(out / "asymslip_gen"),
+                "--quiet",
             ]
             if report is not None:
                 command += ["--report", str(out / report.name)]
@@ -202,8 +211,14 @@ def check_figure_data(folder: Path) -> int:
     committed = folder / "fig5.csv"
     fresh = fig5_csv_text(fig5_curves())
     old = committed.read_text().splitlines(keepends=True) if committed.exists() else []
-    diff = list(difflib.unified_diff(old, fresh.splitlines(keepends=True),
-                                     f"committed/{committed.name}", "regenerated/fig5.csv"))
+    diff = list(
+        difflib.unified_diff(
+            old,
+            fresh.splitlines(keepends=True),
+            f"committed/{committed.name}",
+            "regenerated/fig5.csv",
+        )
+    )
     if diff:
         sys.stdout.writelines(diff)
         print(f"\n{committed} is stale: run `make figures`", file=sys.stderr)

@@ -14,7 +14,6 @@ from asymslip_gen.hertz import (
     hertz_normal_edge_multiplier,
     hertz_normal_edge_multiplier_slope,
 )
-
 from asymslip_gen.tractions import hertz_pressure
 
 from ..errors import positive
