@@ -48,7 +48,7 @@ bench: $(STAMP) ## benchmark ratios measured in one process (needs the bench ext
 	$(PY) tests/benchmarks/run_benchmarks.py
 
 accuracy: $(STAMP) ## the long accuracy run against 50-digit mpmath
-	$(PY) -m tests.accuracy.harness --samples 20000
+	$(PY) -m tests.accuracy.harness --samples 2000
 
 clean: ## remove the virtual environment and caches
 	rm -rf $(VENV) .pytest_cache .ruff_cache .hypothesis build src/*.egg-info

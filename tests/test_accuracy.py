@@ -1,10 +1,13 @@
 """Every generated quantity against an independent 50-digit mpmath evaluation (quick run).
 
-The harness (``tests/accuracy``) draws random valid problems -- mu in [0.05, 1.5], lambda and
-eta of both signs, dP/P1 log-uniform in [1e-12, 0.3], a fifth of them close to the cancellation
-lam/mu + pi eta a1/(4 mu) = 1 -- and compares each generated function with the paper's equation
-transcribed by hand in mpmath, on the exact values of the same doubles.  ``make accuracy`` runs
-the same on many more samples.
+The harness (``tests/accuracy``) draws random valid problems for each built-in contact law --
+Hertz (29), the rounded flat punch, power-law punches h = A |x|^n with n in {1, 1.25, 1.75, 2,
+2.5, 3, 3.7, 6} -- with mu in [0.05, 1.5], lambda and eta of both signs, dP/P1 log-uniform in
+[1e-12, 0.3], a fifth of them close to the cancellation lam/mu + pi eta a1/(4 mu) = 1, and
+compares each generated function with the paper's equation (or the law) transcribed by hand in
+mpmath, on the exact values of the same doubles; and, per law, what ``asymslip.slip_zone``
+returns with the same quantities built at 50 digits from the law's P(a) by root finding.
+``make accuracy`` runs the same on many more samples.
 
 Target: 1e-12 relative.  The quantities below are, by the mathematics, small differences of
 their inputs somewhere in the valid domain; near there no double-precision code can be
@@ -22,7 +25,7 @@ from tests.accuracy import harness
 from tests.accuracy.references import slip_zone_width_22
 from tests.accuracy.registry import QUANTITIES, Quantity
 
-SAMPLES, SEED = 40, 20220625
+SAMPLES, SEED = 20, 20220625  # problems per contact law
 WELL_CONDITIONED = 100.0  # kappa below which the 1e-12 target must hold outright
 
 # Why each exception's error can exceed 1e-12: the quantity vanishes where the named terms
@@ -47,6 +50,17 @@ CONDITIONING_EXCEPTIONS = {
     "shear_edge_multiplier": "(20) vanishes where dQ/da and pi a dsigma/da / 4 cancel",
     "shear_edge_multiplier_proportional": "(21) vanishes at lam + pi eta a/4 = 0",
     "shear_intensity_rate": "(39) vanishes at lam + pi eta a/4 = 0",
+    "flat_rounded_pressure": "p vanishes like sqrt(a - |x|) at the contact edge",
+    "second_order_stick_boundary_gap": "C is proportional to a1 a'' + a'^2, identically zero "
+    "where a^2 is affine in P (Hertz, the flat punch with c = 0, the power law n = 2), and to "
+    "(lam - mu)(lam + mu)",
+    "second_order_stick_boundary_gap_from_multiplier": "C is proportional to "
+    "L_I'/L_I - a'/(2a), identically zero for the same laws, and to (lam - mu)(lam + mu)",
+    **{
+        f"slip_zone({law}).slip_zone_width{variant}": "a1 - b, as slip_zone_width"
+        for law in ("hertz", "flat-rounded", "power")
+        for variant in ("", ", backward slip")
+    },
 }
 
 
@@ -99,13 +113,22 @@ def test_every_generated_function_has_an_accuracy_reference():
 
 def test_slip_zone_widths_keep_1e_12_relative_at_dP_over_P1_of_1e_12():
     # Away from the cancellation lam/mu + pi eta a1/(4 mu) = 1, every width formula must keep
-    # full relative precision however small the load change (DESIGN.md, rules for code).
+    # full relative precision however small the load change (DESIGN.md, rules for code).  A
+    # random draw can still land near the cancellation (kappa > WELL_CONDITIONED): those are
+    # the conditioning tests' business, not this one's.
     widths = harness.run(
         SAMPLES, SEED, select="slip_zone_width", relative_load_change=1e-12,
         near_cancellation_share=0.0,
     )  # fmt: skip
-    checked = {r.quantity.name: r.max_error for r in widths if r.status == "checked"}
-    assert "slip_zone_width" in checked
+    checked = {
+        r.quantity.name: max(
+            (e for e, k in zip(r.errors, r.conditions, strict=True) if not k > WELL_CONDITIONED),
+            default=0.0,
+        )
+        for r in widths
+        if r.status == "checked"
+    }
+    assert {"slip_zone_width", "slip_zone(flat-rounded).slip_zone_width"} <= set(checked)
     assert max(checked.values()) <= 1e-12, checked
 
 
@@ -125,4 +148,4 @@ def test_harness_flags_the_naive_width_a1_minus_b_at_dP_over_P1_of_1e_12():
         10, SEED, relative_load_change=1e-12, near_cancellation_share=0.0
     )
     result = harness.evaluate(quantity, problems)
-    assert result.unexplained == result.samples == 10
+    assert result.unexplained == result.samples == 10 * len(harness.LAWS)

@@ -20,73 +20,24 @@ from asymslip.errors import InputError
 from asymslip.laws.flat_rounded import FlatRoundedLaw
 from asymslip.laws.power import PowerLaw, shape_factor
 from asymslip.laws.roots import inverse_growth, invert_increasing
+from tests.accuracy.references import (
+    flat_half_width_mp,
+    flat_slope,
+    load_by_quadrature,
+    load_slope_by_quadrature,
+    power_slope,
+    pressure_by_inversion,
+)
+from tests.accuracy.references import normal_multiplier_19 as eq19
 from tests.strategies import real
 
 EPS = np.finfo(float).eps
 
 
 # --- hand transcriptions and quadratures (mpmath) ---------------------------------------------
-
-
-def flat_slope(t, c, R):
-    """h'(t) of the rounded flat: 0 on the flat, (|t| - c)/R beyond, odd in t."""
-    return mpmath.sign(t) * max(abs(t) - c, 0) / R
-
-
-def power_slope(t, A, n):
-    """h'(t) of h = A |t|^n."""
-    return mpmath.sign(t) * n * A * abs(t) ** (n - 1)
-
-
-def load_by_quadrature(slope, a, E_star, breaks=()):
-    """P(a) = E* a int_0^1 s h'(a s) / sqrt(1 - s^2) ds (the even integrand, x = a s)."""
-    a = mpmath.mpf(a)
-    nodes = sorted({0, 1, *(mpmath.mpf(b) / a for b in breaks if 0 < b < a)})
-    return E_star * a * mpmath.quad(lambda s: s * slope(a * s) / mpmath.sqrt(1 - s * s), nodes)
-
-
-def load_slope_by_quadrature(slope, curvature, a, E_star, breaks=()):
-    """dP/da = E* int_0^1 s (h'(a s) + a s h''(a s)) / sqrt(1 - s^2) ds."""
-    a = mpmath.mpf(a)
-    nodes = sorted({0, 1, *(mpmath.mpf(b) / a for b in breaks if 0 < b < a)})
-    return E_star * mpmath.quad(
-        lambda s: s * (slope(a * s) + a * s * curvature(a * s)) / mpmath.sqrt(1 - s * s), nodes
-    )
-
-
-def eq19(a, dP_da):
-    """(19): L_I = (1/pi) sqrt(2/a) dP/da."""
-    return mpmath.sqrt(2 / mpmath.mpf(a)) * dP_da / mpmath.pi
-
-
-def pressure_by_inversion(slope, a, x, E_star, breaks=()):
-    """p(x) = (E*/(2 pi)) sqrt(a^2 - x^2) PV int_{-a}^{a} h'(t) dt / (sqrt(a^2 - t^2) (t - x)).
-
-    The half-plane contact equation inverted bounded at both ends; the principal value is
-    taken by subtracting h'(x), whose PV integral against the weight vanishes for |x| < a.
-    """
-    a, x = mpmath.mpf(a), mpmath.mpf(x)
-    at_x = slope(x)
-    nodes = sorted({-a, a, x, *(mpmath.mpf(b) for b in breaks if -a < b < a)})
-    regular = mpmath.quad(
-        lambda t: (slope(t) - at_x) / ((t - x) * mpmath.sqrt(a * a - t * t)), nodes
-    )
-    return E_star / (2 * mpmath.pi) * mpmath.sqrt(a * a - x * x) * regular
-
-
-def published_flat_load(a, c, R, E_star):
-    """P = E* a^2 (pi - 2 phi0 - sin 2 phi0) / (4R), phi0 = arcsin(c/a) (Ciavarella et al.)."""
-    phi0 = mpmath.asin(mpmath.mpf(c) / a)
-    return E_star * a**2 * (mpmath.pi - 2 * phi0 - mpmath.sin(2 * phi0)) / (4 * R)
-
-
-def flat_half_width_mp(P, c, R, E_star):
-    """a(P) of the published law by mpmath's root finder (bisection-safe Anderson)."""
-    P, c, R, E_star = map(mpmath.mpf, (P, c, R, E_star))
-    hertz = mpmath.sqrt(4 * P * R / (mpmath.pi * E_star))
-    low, high = max(c, hertz), c + hertz
-    return mpmath.findroot(lambda a: published_flat_load(a, c, R, E_star) - P, (low, high),
-                           solver="anderson")  # fmt: skip
+# Shared with the accuracy harness (tests/accuracy/references.py): flat_slope, power_slope,
+# load_by_quadrature, load_slope_by_quadrature, (19) as eq19, pressure_by_inversion,
+# published_flat_load and flat_half_width_mp.
 
 
 def no_warnings(function, *args):

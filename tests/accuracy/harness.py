@@ -107,7 +107,10 @@ def draw_problem(
     if not (b < a2 and abs(a1 - b) <= a1 / 2 and a2 - a1 <= a1 / 5):
         return None
     dP_da1 = law.load_slope(a1, mp)
-    dL_I_dP = mpmath.diff(lambda P: normal_multiplier(law, P, mp), P1_)
+    # P''(a1) by differentiating the law's slope (no root finding): a''(P) = -P''/P'^3 and,
+    # from (19) by the product rule, dL_I/dP = sqrt(2/a) (P'' - P'/(2a)) / (pi P').
+    d2P_da2 = mpmath.diff(lambda a: law.load_slope(a, mp), a1)
+    dL_I_dP = mpmath.sqrt(2 / a1) * (d2P_da2 - dP_da1 / (2 * a1)) / (mpmath.pi * dP_da1)
 
     x_slip = b + mpmath.mpf(rng.uniform(0.02, 0.98)) * (a2 - b)
     # From the edge to the centre, log-uniform in the distance from a2.
@@ -117,15 +120,41 @@ def draw_problem(
     exact = {
         "a1": a1, "a2": a2, "da": a2 - a1, "L_I1": L_I1, "L_I2": L_I2, "L_II1": L_II1,
         "L_II2": L_II2, "b": b, "dP_da1": dP_da1, "da_dP": 1 / dP_da1, "dL_I_dP": dL_I_dP,
+        "d2a_dP2": -d2P_da2 / dP_da1**3,
         "dQ_da": lam_ * dP_da1, "dsigma_da": eta_ * dP_da1, "x_slip": x_slip,
         "x_contact": x_contact, "P_K": P1_ + dP_ * (mu_ - lam_) / (2 * mu_),
     }  # fmt: skip
     problem = {key: float(value) for key, value in exact.items()}
     problem.update(parameters)
     problem.update(mu=mu, lam=lam, eta=eta, P1=P1, dP=dP, P2=P1 + dP)
+    problem.update(load_cycle(rng, problem))
     problem["relative_load_change"] = dP / P1
     problem["near_cancellation"] = float(near_cancellation)
     return problem
+
+
+def load_cycle(rng: np.random.Generator, problem: Problem) -> Problem:
+    """The problem as a user states it to ``asymslip.slip_zone``: doubles P1, Q1, sigma1 and
+    the changes dP_cycle, dQ, dsigma whose sums P2, Q2, sigma2 are exact.
+
+    The API forms P2 - P1, Q2 - Q1 and sigma2 - sigma1; with exact differences the only
+    roundings before the law are those of lam = dQ/dP and eta = dsigma/dP, which the
+    condition numbers in (dQ, dsigma) account for.  P2 - P1 is exact (Sterbenz: P2 < 2 P1).
+    """
+    P1, P2 = problem["P1"], problem["P2"]
+    dP_cycle = P2 - P1
+    assert mpmath.mpf(P2) - mpmath.mpf(P1) == dP_cycle
+    cycle = {"dP_cycle": dP_cycle}
+    for start, change, slope, scale in (
+        ("Q1", "dQ", problem["lam"], problem["mu"] * P1),
+        ("sigma1", "dsigma", problem["eta"], abs(problem["eta"]) * P1),
+    ):
+        first = float(scale * rng.uniform(-0.5, 0.5))
+        second = first + slope * dP_cycle
+        if mpmath.mpf(second) - mpmath.mpf(first) != second - first:
+            first, second = 0.0, slope * dP_cycle  # the difference is then exact
+        cycle[start], cycle[change] = first, second - first
+    return cycle
 
 
 def draw_problems(
@@ -168,6 +197,7 @@ class QuantityResult:
     errors: list[float] = field(default_factory=list)
     conditions: list[float] = field(default_factory=list)  # nan where not computed
     load_changes: list[float] = field(default_factory=list)
+    laws: list[str] = field(default_factory=list)  # the law of each sample
 
     @property
     def max_error(self) -> float:
@@ -178,6 +208,12 @@ class QuantityResult:
         pairs = zip(self.errors, self.load_changes, strict=True)
         small = [error for error, change in pairs if change <= SMALL_LOAD_CHANGE]
         return max(small, default=math.nan)
+
+    def max_error_by_law(self) -> dict[str, float]:
+        worst: dict[str, float] = {}
+        for error, law in zip(self.errors, self.laws, strict=True):
+            worst[law] = max(worst.get(law, 0.0), error)
+        return worst
 
     @property
     def max_condition(self) -> float:
@@ -270,13 +306,15 @@ def evaluate(
     function = resolve(quantity)
     if isinstance(function, str):
         return QuantityResult(quantity, function)
-    chosen = [
-        problem
+    chosen_with_law = [
+        (law, problem)
         for law, problem in problems
         if (not quantity.laws or law in quantity.laws)
         and (quantity.where is None or quantity.where(problem))
     ][:: quantity.every]
+    chosen = [problem for _, problem in chosen_with_law]
     result = QuantityResult(quantity, "checked", samples=len(chosen))
+    result.laws = [law for law, _ in chosen_with_law]
     if not chosen:
         result.status = "no applicable problems"
         return result
@@ -291,7 +329,7 @@ def evaluate(
                                    (len(chosen),))  # fmt: skip
     # Condition numbers cost one reference per argument: skip them for quadrature references
     # unless the error needs explaining.
-    always_condition = quantity.every == 1
+    always_condition = quantity.every == 1 and not quantity.costly
     with mpmath.workdps(DIGITS):
         for index, problem in enumerate(chosen):
             arguments = {
@@ -405,6 +443,18 @@ def report(
             f"{_number(result.max_condition)} | {_number(result.max_normalised)} | "
             f"{result.verdict} |"
         )
+    names = list(LAWS)
+    lines += [
+        "",
+        "Max rel. error by contact law (- : not applicable):",
+        "",
+        "| Quantity | " + " | ".join(names) + " |",
+        "| --- |" + " ---: |" * len(names),
+    ]
+    for result in results:
+        by_law = result.max_error_by_law()
+        cells = [_number(by_law.get(name, math.nan)) for name in names]
+        lines.append(f"| {result.quantity.name} | " + " | ".join(cells) + " |")
     unchecked = unchecked_generated_functions()
     lines += ["", "Generated functions without a registered reference: "
               + (", ".join(unchecked) if unchecked else "none")]  # fmt: skip

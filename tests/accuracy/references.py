@@ -8,14 +8,22 @@ doubles the generated function receives.
 To check a new generated function, add one ``register_quantity``; to run everything on a new
 contact law, add one ``register_law``.  Problem values available to ``args`` (all doubles):
 
-    law parameters (R, E_star for Hertz), mu, lam, eta, P1, dP, P2 (= P1 + dP rounded),
+    law parameters (R, E_star for Hertz; c, R, E_star for the rounded flat; A, n, E_star and
+    K = K(n) for the power law), mu, lam, eta, P1, dP, P2 (= P1 + dP rounded),
     a1, a2, da (= a2 - a1 from the exact law), L_I1, L_I2 (19), L_II1, L_II2 (21),
-    dP_da1 (dP/da at a1), da_dP (a'(P1)), dL_I_dP (L_I'(P1)), dQ_da, dsigma_da (on the path),
-    b (17), P_K (33), x_slip (a point of the slip zone b < x < a2), x_contact (a point of
-    0 < x < a2, log-uniform in the distance from the edge).
+    dP_da1 (dP/da at a1), da_dP (a'(P1)), d2a_dP2 (a''(P1)), dL_I_dP (L_I'(P1)), dQ_da,
+    dsigma_da (on the path), b (17), P_K (33), x_slip (a point of the slip zone b < x < a2),
+    x_contact (a point of 0 < x < a2, log-uniform in the distance from the edge), and the cycle
+    as a user states it: dP_cycle (= P2 - P1, exact), Q1, dQ, sigma1, dsigma (Q1 + dQ and
+    sigma1 + dsigma exact).
 """
 
 from __future__ import annotations
+
+import functools
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
 
 import mpmath
 import numpy as np
@@ -53,6 +61,192 @@ register_law(
         },
         half_width=hertz_half_width,
         load_slope=hertz_load_slope,
+    )
+)
+
+
+# --- Beyond the paper: the rounded flat and the power-law punch -------------------------------
+#
+# The plane-contact relation of a symmetric punch of profile h(x) (h' odd),
+#     P(a) = (E*/2) int_{-a}^{a} x h'(x) / sqrt(a^2 - x^2) dx,
+# and the pressure by inverting the half-plane contact equation, by quadrature; the published
+# rounded-flat law typed by hand.  tests/test_contact_laws.py imports these too.
+
+
+def flat_slope(t, c, R):
+    """h'(t) of the rounded flat: 0 on the flat, (|t| - c)/R beyond, odd in t."""
+    return mpmath.sign(t) * max(abs(t) - c, 0) / R
+
+
+def power_slope(t, A, n):
+    """h'(t) of h = A |t|^n."""
+    return mpmath.sign(t) * n * A * abs(t) ** (n - 1)
+
+
+def load_by_quadrature(slope, a, E_star, breaks=()):
+    """P(a) = E* a int_0^1 s h'(a s) / sqrt(1 - s^2) ds (the even integrand, x = a s)."""
+    a = mpmath.mpf(a)
+    nodes = sorted({0, 1, *(mpmath.mpf(b) / a for b in breaks if 0 < b < a)})
+    return E_star * a * mpmath.quad(lambda s: s * slope(a * s) / mpmath.sqrt(1 - s * s), nodes)
+
+
+def load_slope_by_quadrature(slope, curvature, a, E_star, breaks=()):
+    """dP/da = E* int_0^1 s (h'(a s) + a s h''(a s)) / sqrt(1 - s^2) ds."""
+    a = mpmath.mpf(a)
+    nodes = sorted({0, 1, *(mpmath.mpf(b) / a for b in breaks if 0 < b < a)})
+    return E_star * mpmath.quad(
+        lambda s: s * (slope(a * s) + a * s * curvature(a * s)) / mpmath.sqrt(1 - s * s), nodes
+    )
+
+
+def pressure_by_inversion(slope, a, x, E_star, breaks=()):
+    """p(x) = (E*/(2 pi)) sqrt(a^2 - x^2) PV int_{-a}^{a} h'(t) dt / (sqrt(a^2 - t^2) (t - x)).
+
+    The half-plane contact equation inverted bounded at both ends, |x| < a, for a symmetric
+    punch (h' odd).  Folding t -> -t gives PV int_0^a 2 t h'(t) / ((t^2 - x^2) sqrt(a^2 - t^2));
+    the folded weight itself has PV int_0^a dt / ((t^2 - x^2) sqrt(a^2 - t^2)) = 0 (the PV
+    integral of 1/((t - x) sqrt(a^2 - t^2)) over (-a, a) vanishes), so t h'(t) may be replaced
+    by t h'(t) - x h'(x), which removes the pole, and t = a sin(theta) removes the end
+    singularities.  x and the kinks of h' (``breaks``, either sign) are interval ends.
+    """
+    a, x = mpmath.mpf(a), abs(mpmath.mpf(x))
+    at_x = x * slope(x)
+
+    def integrand(theta):
+        t = a * mpmath.sin(theta)
+        if t == x:  # a node rounded onto the removed pole; its weight is negligible
+            return mpmath.mpf(0)
+        return 2 * (t * slope(t) - at_x) / ((t - x) * (t + x))
+
+    kinks = {mpmath.asin(abs(mpmath.mpf(b)) / a) for b in breaks if 0 < abs(b) < a}
+    nodes = sorted({mpmath.mpf(0), pi / 2, mpmath.asin(x / a), *kinks})
+    return E_star / (2 * pi) * mpmath.sqrt(a * a - x * x) * mpmath.quad(integrand, nodes)
+
+
+def published_flat_load(a, c, R, E_star):
+    """P = E* a^2 (pi - 2 phi0 - sin 2 phi0) / (4R), phi0 = arcsin(c/a) (Ciavarella et al.)."""
+    phi0 = mpmath.asin(mpmath.mpf(c) / a)
+    return E_star * a**2 * (mpmath.pi - 2 * phi0 - mpmath.sin(2 * phi0)) / (4 * R)
+
+
+def flat_half_width_mp(P, c, R, E_star):
+    """a(P) of the published law by mpmath's root finder (bisection-safe Anderson).
+
+    The root lies in [max(c, a_H), c + a_H], a_H the Hertz half-width of the load (the flat
+    carries at most the cylinder's load at the same half-width, at least that of the cylinder
+    of half-width a - c); for c = 0 the bracket closes on a_H.  The law loses about
+    1.5 log10(a/(a - c)) digits to cancellation as a -> c, so the root is found with 20 digits
+    to spare.
+    """
+    with mpmath.workdps(mpmath.mp.dps + 20):
+        P, c, R, E_star = map(mpmath.mpf, (P, c, R, E_star))
+        hertz = mpmath.sqrt(4 * P * R / (mpmath.pi * E_star))
+        low, high = max(c, hertz), c + hertz
+        if low == high:
+            return +hertz
+        root = mpmath.findroot(lambda a: published_flat_load(a, c, R, E_star) - P,
+                               (low, high), solver="anderson")  # fmt: skip
+    return +root
+
+
+def flat_load_slope_mp(a, c, R, E_star, order=1):
+    """d^order P/da^order of the published law by mpmath.diff, with 20 digits to spare."""
+    with mpmath.workdps(mpmath.mp.dps + 20):
+        derivative = mpmath.diff(lambda s: published_flat_load(s, c, R, E_star),
+                                 mpmath.mpf(a), order)  # fmt: skip
+    return +derivative
+
+
+def half_width_by_root(load, P):
+    """a(P) of an increasing law ``load`` with P(0) = 0 by mpmath's root finder.
+
+    Brackets the root between powers of two, then Anderson's bracketing method, with 20 digits
+    to spare.
+    """
+    with mpmath.workdps(mpmath.mp.dps + 20):
+        P, width = mpmath.mpf(P), mpmath.mpf(1)
+        while load(width) < P:
+            width *= 2
+        while load(width / 2) > P:
+            width /= 2
+        root = mpmath.findroot(lambda a: load(a) - P, (width / 2, width), solver="anderson")
+    return +root
+
+
+@functools.cache
+def _power_shape_factor(n, digits):
+    with mpmath.workdps(digits):
+        return n * mpmath.quad(lambda theta: mpmath.sin(theta) ** n, [0, pi / 2])
+
+
+def power_shape_factor(n):
+    """K(n) of P = K E* A a^n, by quadrature of the plane-contact relation.
+
+    P(a) = E* a int_0^1 s h'(a s)/sqrt(1 - s^2) ds is homogeneous: for h = A |x|^n it is
+    E* A a^n K with K = n int_0^1 s^n/sqrt(1 - s^2) ds = n int_0^(pi/2) sin^n(theta) dtheta
+    (s = sin theta removes the end singularity).
+    """
+    return _power_shape_factor(mpmath.mpf(n), mpmath.mp.dps)
+
+
+#: Centre of the drawn P1 range [1, 1e6]: the flat half-width c is drawn against the Hertz
+#: half-width at this load.
+FLAT_REFERENCE_LOAD = 1e3
+
+
+def _flat_parameters(rng: np.random.Generator) -> dict[str, float]:
+    """R, E* as for Hertz; c = 0 (Hertz) one time in ten, else c/a_H(1e3) log-uniform in
+    [1e-2, 10], so that over P1 in [1, 1e6] the contact runs from nearly Hertzian
+    (c/a1 ~ 3e-4) to nearly flat (1 - c/a1 ~ 4e-4; a - c ~ 0.89 (a_H/c)^(4/3) c)."""
+    R, E_star = _log_uniform(rng, 1e-3, 1e1), _log_uniform(rng, 1e9, 4e11)
+    hertz = math.sqrt(4 * FLAT_REFERENCE_LOAD * R / (math.pi * E_star))
+    c = 0.0 if rng.uniform() < 0.1 else _log_uniform(rng, 1e-2, 1e1) * hertz
+    return {"c": c, "R": R, "E_star": E_star}
+
+
+register_law(
+    LawCase(
+        name="flat-rounded",
+        parameters=_flat_parameters,
+        half_width=lambda P, law: flat_half_width_mp(P, law["c"], law["R"], law["E_star"]),
+        # d/da of the published law, by hand: E* a arccos(c/a) / R.
+        load_slope=lambda a, law: law["E_star"] * a * mpmath.acos(law["c"] / a) / law["R"],
+    )
+)
+
+#: Exponents of the power-law punches: the wedge, non-integers on both sides of n = 3/2
+#: (where L_I'(P) changes sign), the cylinder and steeper punches.  n = 3/2 itself is left
+#: out: L_I' is exactly zero there, which the kernel returns but a mpmath.diff reference
+#: (~1e-50) cannot, so the relative error would be 1 without meaning.
+POWER_EXPONENTS = (1.0, 1.25, 1.75, 2.0, 2.5, 3.0, 3.7, 6.0)
+
+
+def _power_parameters(rng: np.random.Generator) -> dict[str, float]:
+    """n from POWER_EXPONENTS, A log-uniform in [1e-3, 1e2], E* as for Hertz, and K(n) (the
+    generated kernels take it as an argument) from the quadrature, rounded once."""
+    n = float(rng.choice(POWER_EXPONENTS))
+    A, E_star = _log_uniform(rng, 1e-3, 1e2), _log_uniform(rng, 1e9, 4e11)
+    with mpmath.workdps(50):
+        K = float(power_shape_factor(n))
+    return {"A": A, "n": n, "E_star": E_star, "K": K}
+
+
+def power_law_half_width_mp(P, law):
+    """a(P) of P = K E* A a^n, with the K the kernels receive, inverted by hand."""
+    return (P / (law["K"] * law["E_star"] * law["A"])) ** (1 / law["n"])
+
+
+def power_law_load_slope_mp(a, law):
+    """dP/da of P = K E* A a^n, by hand."""
+    return law["n"] * law["K"] * law["E_star"] * law["A"] * a ** (law["n"] - 1)
+
+
+register_law(
+    LawCase(
+        name="power",
+        parameters=_power_parameters,
+        half_width=power_law_half_width_mp,
+        load_slope=power_law_load_slope_mp,
     )
 )
 
@@ -120,8 +314,8 @@ register_quantity(Quantity(
 
 
 def normal_multiplier_19(a, dP_da):
-    """(19)."""
-    return mpmath.sqrt(2 / a) * dP_da / pi
+    """(19): L_I = (1/pi) sqrt(2/a) dP/da."""
+    return mpmath.sqrt(2 / mpmath.mpf(a)) * dP_da / pi
 
 
 def shear_multiplier_20(a, dQ_da, dsigma_da):
@@ -498,3 +692,382 @@ register_quantity(Quantity(
     ("x=x_slip", "b", "a1", "mu", "L_I1", "L_I2", "L_II1", "L_II2", "E_star"),
     slip_on_loading_15, ("15",), where=_slip_zone_inside_a1, every=4,
 ))  # fmt: skip
+
+
+# ---------------------------------------------------------------------------------------------
+# Beyond the paper: the rounded-flat punch (its law in place of (29), L_I by (19), p in place
+# of (48)), against the published law, mpmath.diff and the inversion by quadrature
+# ---------------------------------------------------------------------------------------------
+
+
+def flat_multiplier_slope_mp(a, c, R, E_star):
+    """dL_I/dP at half-width a: (dL_I/da) / (dP/da), with L_I(a) = (19) differentiated by the
+    product rule, dL_I/da = sqrt(2/a) (P'' - P'/(2a)) / pi, and P', P'' by mpmath.diff."""
+    first = flat_load_slope_mp(a, c, R, E_star)
+    second = flat_load_slope_mp(a, c, R, E_star, order=2)
+    return mpmath.sqrt(2 / a) * (second - first / (2 * a)) / (pi * first)
+
+
+_FLAT = ("a=a1", "c", "R", "E_star")
+
+register_quantity(Quantity(
+    "flat_rounded.flat_rounded_load", _FLAT,
+    published_flat_load, ("29",), laws=("flat-rounded",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "flat_rounded.flat_rounded_load_slope", _FLAT,
+    flat_load_slope_mp, ("29",), laws=("flat-rounded",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "flat_rounded.flat_rounded_normal_edge_multiplier", _FLAT,
+    lambda a, c, R, E_star: normal_multiplier_19(a, flat_load_slope_mp(a, c, R, E_star)),
+    ("19",), laws=("flat-rounded",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "flat_rounded.flat_rounded_normal_edge_multiplier_slope", _FLAT,
+    flat_multiplier_slope_mp, ("19", "26"), laws=("flat-rounded",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "flat_rounded.flat_rounded_pressure", ("x=x_contact", "a=a2", "c", "R", "E_star"),
+    lambda x, a, c, R, E_star: pressure_by_inversion(
+        lambda t: flat_slope(t, c, R), a, x, E_star, breaks=(c,)),
+    ("4", "48"), laws=("flat-rounded",), every=4, costly=True,
+))  # fmt: skip
+
+
+# ---------------------------------------------------------------------------------------------
+# Beyond the paper: the power-law punch h = A |x|^n.  K is an argument of the kernels; the
+# harness feeds K(n) from the quadrature (power_shape_factor), so P = K E* A a^n below is the
+# plane-contact relation.  Inverse and derivatives by root finding and mpmath.diff; the
+# pressure by the inversion quadrature (independent of K and of the 2F1 form)
+# ---------------------------------------------------------------------------------------------
+
+
+def _power_load(n, A, E_star, K):
+    return lambda a: K * E_star * A * a**n
+
+
+def power_half_width_mp(P, n, A, E_star, K):
+    return half_width_by_root(_power_load(n, A, E_star, K), P)
+
+
+def power_multiplier_mp(P, n, A, E_star, K):
+    """(19) at a = a(P), dP/da by mpmath.diff."""
+    a = power_half_width_mp(P, n, A, E_star, K)
+    return normal_multiplier_19(a, mpmath.diff(_power_load(n, A, E_star, K), a))
+
+
+def power_multiplier_slope_mp(P, n, A, E_star, K):
+    """dL_I/dP = sqrt(2/a) (P'' - P'/(2a)) / (pi P') at a = a(P) ((19), product rule)."""
+    load = _power_load(n, A, E_star, K)
+    a = power_half_width_mp(P, n, A, E_star, K)
+    first, second = mpmath.diff(load, a), mpmath.diff(load, a, 2)
+    return mpmath.sqrt(2 / a) * (second - first / (2 * a)) / (pi * first)
+
+
+def wedge_pressure_published(x, a, A, E_star):
+    """p = (E* A/pi) arccosh(a/|x|) under a wedge of slope A (Johnson, Contact Mechanics, 5.8)."""
+    return E_star * A / pi * mpmath.acosh(a / abs(x))
+
+
+def power_pressure_with_exact_2f1(x, a, n, A, E_star, K):
+    """power_law_pressure fed the 2F1 factor at z = 1 - x^2/a^2 correctly rounded (mpmath).
+
+    Isolates the kernel from the 2F1 implementation (SciPy's at run time).
+    """
+    from asymslip_gen.power_law import power_law_pressure
+
+    with mpmath.workdps(40):
+        factor = [
+            float(mpmath.hyp2f1(1 - mpmath.mpf(n_) / 2, 1, 1.5, 1 - (mpmath.mpf(x_) / a_) ** 2))
+            for x_, a_, n_ in zip(*np.broadcast_arrays(x, a, n), strict=True)
+        ]  # fmt: skip
+    return power_law_pressure(x, a, n, A, E_star, K, np.array(factor))
+
+
+_POWER = ("n", "A", "E_star", "K")
+
+register_quantity(Quantity(
+    "power_law.power_law_load", ("a=a1", *_POWER),
+    lambda a, n, A, E_star, K: _power_load(n, A, E_star, K)(a), ("29",), laws=("power",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "power_law.power_law_load_slope", ("a=a1", *_POWER),
+    lambda a, n, A, E_star, K: mpmath.diff(_power_load(n, A, E_star, K), a),
+    ("29",), laws=("power",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "power_law.power_law_half_width", ("P=P1", *_POWER),
+    power_half_width_mp, ("29",), laws=("power",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "power_law.power_law_half_width_growth", ("P1", "dP", *_POWER),
+    lambda P1, dP, n, A, E_star, K: power_half_width_mp(P1 + dP, n, A, E_star, K)
+    - power_half_width_mp(P1, n, A, E_star, K),
+    ("23", "42"), laws=("power",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "power_law.power_law_normal_edge_multiplier", ("P=P1", *_POWER),
+    power_multiplier_mp, ("19",), laws=("power",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "power_law.power_law_normal_edge_multiplier_slope", ("P=P1", *_POWER),
+    power_multiplier_slope_mp, ("19", "26"), laws=("power",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "power_law.power_law_hypergeometric_argument", ("x=x_contact", "a=a2"),
+    lambda x, a: max(mpmath.mpf(0), 1 - (x / a) ** 2), ("48",), laws=("power",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "power_law.power_law_pressure", ("x=x_contact", "a=a2", *_POWER),
+    lambda x, a, n, A, E_star, K: pressure_by_inversion(
+        lambda t: power_slope(t, A, n), a, x, E_star, breaks=(0,)),
+    ("4", "48"), laws=("power",), every=4, costly=True,
+    compose=power_pressure_with_exact_2f1,
+))  # fmt: skip
+register_quantity(Quantity(
+    "power_law.wedge_pressure", ("x=x_contact", "a=a2", "A", "E_star"),
+    wedge_pressure_published, ("4", "48"), laws=("power",),
+    where=lambda values: values["n"] == 1.0,
+))  # fmt: skip
+
+
+# ---------------------------------------------------------------------------------------------
+# Beyond the paper: b(22) - a(P_K) = C dP^2 + O(dP^3) for a generic law (eta = 0).  The
+# reference evaluates (22) and (33)-(34) on the local law a(P1 + h) = a1 + a' h + a'' h^2 / 2
+# (C involves nothing beyond a''), L_I from (19), and takes the second difference at tiny dP.
+# ---------------------------------------------------------------------------------------------
+
+
+def _gap_coefficient(mu, lam, a1, da_dP, d2a_dP2, multiplier):
+    """C = (g(h) + g(-h)) / (2 h^2) + O(h^2), g(dP) = b(22) - a(P_K).
+
+    The odd terms (a first-order disagreement included) cancel in the sum; with
+    h = 1e-(digits/2) a1/a' the dP^4 term is below 1e-digits relative.  g is a difference of
+    two half-widths that agree to O(h), so it is evaluated with 2 digits + 20.
+    """
+    digits = mpmath.mp.dps
+    with mpmath.workdps(2 * digits + 20):
+        step = mpmath.mpf(10) ** -(digits // 2) * a1 / da_dP
+
+        def local_half_width(h):
+            return a1 + da_dP * h + d2a_dP2 * h**2 / 2
+
+        def gap(dP):
+            b = stick_boundary_22(mu, lam, 0, a1, local_half_width(dP), multiplier(0),
+                                  multiplier(dP))  # fmt: skip
+            return b - local_half_width(permanent_stick_load_33(0, dP, lam, mu))  # (33)
+
+        coefficient = (gap(step) + gap(-step)) / (2 * step**2)
+    return +coefficient
+
+
+def second_order_gap_from_curvature(mu, lam, a1, da_dP, d2a_dP2):
+    """C with L_I(P1 + h) = (19) at a(P1 + h), dP/da = 1/a'(P1 + h)."""
+    return _gap_coefficient(
+        mu, lam, a1, da_dP, d2a_dP2,
+        lambda h: normal_multiplier_19(a1 + da_dP * h + d2a_dP2 * h**2 / 2,
+                                       1 / (da_dP + d2a_dP2 * h)),
+    )  # fmt: skip
+
+
+def second_order_gap_from_multiplier(mu, lam, a1, da_dP, L_I1, dL_I_dP):
+    """C with L_I(P1 + h) = L_I1 + L_I' h (all (22) needs at dP^2) and a'' from (19):
+    L_I = sqrt(2/a)/(pi a') gives L_I'/L_I = -a'/(2a) - a''/a' (product rule)."""
+    curvature = -da_dP * (dL_I_dP / L_I1 + da_dP / (2 * a1))
+    return _gap_coefficient(mu, lam, a1, da_dP, curvature, lambda h: L_I1 + dL_I_dP * h)
+
+
+register_quantity(Quantity(
+    "generic_law.second_order_stick_boundary_gap", ("mu", "lam", "a1", "da_dP", "d2a_dP2"),
+    second_order_gap_from_curvature, ("22", "28", "33"),
+))  # fmt: skip
+register_quantity(Quantity(
+    "generic_law.second_order_stick_boundary_gap_from_multiplier",
+    ("mu", "lam", "a1", "da_dP", "L_I1", "dL_I_dP"),
+    second_order_gap_from_multiplier, ("22", "26", "33"),
+))  # fmt: skip
+
+
+# ---------------------------------------------------------------------------------------------
+# End to end: asymslip.slip_zone(law, LoadCycle(...), mu) for each built-in law, as users call
+# it, against the same quantities built at 50 digits from the law's P(a) alone: a(P) by
+# mpmath's root finder, dP/da by mpmath.diff, L_I by (19), b by (22) and b_exact = a(P_K) by
+# (33)-(34).  Like the API (derivations/edge_symmetry.py), the edge slips forwards when
+# lam + pi eta a2/4 > mu, backwards (formulas on -lam, -eta) when it is < -mu, and not at all
+# otherwise (b = a1, width 0, P_K = P1).
+# ---------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ApiLaw:
+    """A built-in law as the API builds it and as the reference states it."""
+
+    name: str  # the LawCase whose problems apply
+    make: Callable[..., object]  # the public law class, called with the parameters
+    parameters: tuple[str, ...]  # its keyword arguments (= problem keys)
+    load: Callable[..., Callable]  # parameters -> P(a) in mpmath, by hand
+    half_width: Callable[..., Callable]  # parameters -> a(P), by mpmath's root finder
+    kernels: dict[str, str]  # result field -> the generated function it ends in
+
+
+def _make_flat_law(**parameters):
+    from asymslip.laws.flat_rounded import FlatRoundedLaw
+
+    return FlatRoundedLaw(**parameters)
+
+
+def _make_power_law(**parameters):
+    from asymslip.laws.power import PowerLaw
+
+    return PowerLaw(**parameters)
+
+
+def _make_hertz_law(**parameters):
+    from asymslip import HertzLaw
+
+    return HertzLaw(**parameters)
+
+
+API_LAWS = {
+    law.name: law
+    for law in (
+        ApiLaw(
+            "hertz", _make_hertz_law, ("R", "E_star"),
+            lambda R, E_star: lambda a: pi * E_star * a**2 / (4 * R),  # (29)
+            lambda R, E_star: lambda P: half_width_by_root(
+                lambda a: pi * E_star * a**2 / (4 * R), P),
+            {"a1": "hertz.hertz_half_width", "a2": "hertz.hertz_half_width_growth",
+             "L_I": "hertz.hertz_normal_edge_multiplier"},
+        ),
+        ApiLaw(
+            "flat-rounded", _make_flat_law, ("c", "R", "E_star"),
+            lambda c, R, E_star: lambda a: published_flat_load(a, c, R, E_star),
+            lambda c, R, E_star: lambda P: flat_half_width_mp(P, c, R, E_star),
+            # a(P) inverts flat_rounded_load; a2 - a1 integrates 1/flat_rounded_load_slope.
+            {"a1": "flat_rounded.flat_rounded_load", "a2": "flat_rounded.flat_rounded_load_slope",
+             "L_I": "flat_rounded.flat_rounded_normal_edge_multiplier"},
+        ),
+        ApiLaw(
+            "power", _make_power_law, ("A", "n", "E_star"),
+            lambda A, n, E_star: _power_load(n, A, E_star, power_shape_factor(n)),
+            lambda A, n, E_star: lambda P: half_width_by_root(
+                _power_load(n, A, E_star, power_shape_factor(n)), P),
+            {"a1": "power_law.power_law_half_width", "a2": "power_law.power_law_half_width_growth",
+             "L_I": "power_law.power_law_normal_edge_multiplier"},
+        ),
+    )
+}  # fmt: skip
+
+
+@functools.cache
+def _law_exact(law_name, digits, P, parameters):
+    """a(P) by root finding and L_I(P) by (19) with dP/da by mpmath.diff, at ``digits``."""
+    spec = API_LAWS[law_name]
+    with mpmath.workdps(digits):
+        a = spec.half_width(**dict(parameters))(P)
+        return a, normal_multiplier_19(a, mpmath.diff(spec.load(**dict(parameters)), a))
+
+
+@functools.cache
+def _slip_zone_exact(law_name, digits, mu, P1, dP, dQ, dsigma, parameters):
+    """The API's quantities at ``digits`` (+20 inside) for P2 = P1 + dP, lam = dQ/dP,
+    eta = dsigma/dP.  Cached: the quantities and their condition numbers share it."""
+    with mpmath.workdps(digits + 20):
+        (a1, L_I1), (a2, L_I2) = (_law_exact(law_name, digits + 20, P, parameters)
+                                  for P in (P1, P1 + dP))  # fmt: skip
+        lam, eta = dQ / dP, dsigma / dP
+        slope = lam + pi * eta * a2 / 4
+        direction = 1 if slope > mu else -1 if slope < -mu else 0
+        if direction == 0:
+            b, P_K = a1, P1
+        else:
+            lam, eta = direction * lam, direction * eta
+            b = stick_boundary_22(mu, lam, eta, a1, a2, L_I1, L_I2)
+            P_K = permanent_stick_load_33(P1, dP, lam, mu)
+        exact = {
+            "a1": a1, "a2": a2, "L_I1": L_I1, "L_I2": L_I2, "b": b, "slip_zone_width": a1 - b,
+            "b_exact": None if dsigma else _law_exact(law_name, digits + 20, P_K, parameters)[0],
+        }  # fmt: skip
+    return {key: value if value is None else +value for key, value in exact.items()}
+
+
+#: How a field is checked: on the drawn cycle; with sigma2 = sigma1 (eta = 0, where b_exact
+#: exists); with the shear and tension changes reversed (Q, sigma -> -Q, -sigma: lam, eta ->
+#: -lam, -eta), which makes the edge slip backwards and exercises the API's mirrored formulas.
+VARIANTS = {"drawn": "", "eta = 0": "", "reversed": ", backward slip"}
+
+
+def _slip_zone_reference(law_name, field, variant):
+    spec = API_LAWS[law_name]
+
+    def reference(mu, P1, dP, Q1, dQ, sigma1, dsigma=None, **parameters):
+        # Q1 and sigma1 enter the API only through the exact differences dQ and dsigma.
+        del Q1, sigma1
+        if variant == "eta = 0":
+            dsigma = mpmath.mpf(0)
+        elif variant == "reversed":
+            dQ, dsigma = -dQ, -dsigma
+        values = tuple((name, parameters[name]) for name in spec.parameters)
+        return _slip_zone_exact(law_name, mpmath.mp.dps, mu, P1, dP, dQ, dsigma, values)[field]
+
+    return reference
+
+
+@functools.cache
+def _slip_zone_computed(law_name, variant, mu, P1, dP, Q1, dQ, sigma1, dsigma, parameters):
+    from asymslip import LoadCycle, slip_zone
+
+    # P1 + dP == P2, Q1 + dQ == Q2 and sigma1 + dsigma == sigma2 exactly (drawn so).
+    states = [P1, Q1, P1 + dP, Q1 + dQ, sigma1, sigma1 if variant == "eta = 0" else sigma1 + dsigma]
+    if variant == "reversed":
+        states[1], states[3], states[4], states[5] = -states[1], -states[3], -states[4], -states[5]
+    return slip_zone(API_LAWS[law_name].make(**dict(parameters)), LoadCycle(*states), mu)
+
+
+def _slip_zone_api(law_name, field, variant):
+    spec = API_LAWS[law_name]
+
+    def compose(mu, P1, dP, Q1, dQ, sigma1, dsigma=None, **parameters):
+        columns = [mu, P1, dP, Q1, dQ, sigma1, dsigma if dsigma is not None else sigma1]
+        columns += [parameters[name] for name in spec.parameters]
+        values = []
+        for row in zip(*(np.asarray(column, dtype=np.float64) for column in columns),
+                       strict=True):  # fmt: skip
+            cycle = tuple(map(float, row[:7]))
+            named = tuple(zip(spec.parameters, map(float, row[7:]), strict=True))
+            result = _slip_zone_computed(law_name, variant, *cycle, named)
+            values.append(getattr(result, field))
+        return np.array(values, dtype=np.float64)
+
+    return compose
+
+
+def register_slip_zone_quantities(law_name: str) -> None:
+    """The API results of one built-in law, each against its 50-digit reference."""
+    spec = API_LAWS[law_name]
+    b, width = "corrective_slip.stick_boundary_proportional", "corrective_slip.slip_zone_width"
+    checks = [
+        ("a1", spec.kernels["a1"], "drawn", ("29",)),
+        ("a2", spec.kernels["a2"], "drawn", ("23",)),
+        ("L_I1", spec.kernels["L_I"], "drawn", ("19",)),
+        ("L_I2", spec.kernels["L_I"], "drawn", ("19",)),
+        ("b", b, "drawn", ("22",)),
+        ("slip_zone_width", width, "drawn", ("22",)),
+        ("b_exact", spec.kernels["a1"], "eta = 0", ("33", "34")),
+        ("b", b, "reversed", ("22",)),
+        ("slip_zone_width", width, "reversed", ("22",)),
+    ]
+    cycle = ("mu", "P1", "dP=dP_cycle", "Q1", "dQ", "sigma1", "dsigma")
+    for field, kernel, variant, equations in checks:
+        args = cycle[:-1] if variant == "eta = 0" else cycle
+        register_quantity(Quantity(
+            kernel, (*args, *spec.parameters),
+            _slip_zone_reference(law_name, field, variant), equations,
+            laws=(law_name,), label=f"slip_zone({law_name}).{field}{VARIANTS[variant]}",
+            compose=_slip_zone_api(law_name, field, variant), costly=True,
+        ))  # fmt: skip
+
+
+for _name in API_LAWS:
+    register_slip_zone_quantities(_name)

@@ -35,7 +35,8 @@ class LawCase:
     half_width
         a(P) written by hand from the law, in mpmath: ``half_width(P, parameters)``.
     load_slope
-        dP/da at half-width a, in mpmath: ``load_slope(a, parameters)``.
+        dP/da at half-width a, in mpmath: ``load_slope(a, parameters)``.  The harness
+        differentiates it once more (mpmath.diff) for a''(P) and L_I'(P).
     """
 
     name: str
@@ -72,8 +73,11 @@ class Quantity:
     label
         Report name when it differs from the function name (several checks of one function).
     compose
-        For an end-to-end check: a chain of generated functions called instead of
-        ``function`` (which then names the last link, for the report).
+        For an end-to-end check: a chain of generated functions (or the public API) called
+        instead of ``function`` (which then names the last link, for the report).
+    costly
+        The reference is slow (root finding, quadrature): condition numbers are computed only
+        for samples over the target, as for ``every`` > 1.
     """
 
     function: str
@@ -85,6 +89,7 @@ class Quantity:
     every: int = 1
     label: str = ""
     compose: Callable[..., object] | None = None
+    costly: bool = False
 
     @property
     def name(self) -> str:
