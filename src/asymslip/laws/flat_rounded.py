@@ -31,6 +31,9 @@ class FlatRoundedLaw(ContactLaw):
     P(a) = E* (a^2 psi - c sqrt(a^2 - c^2)) / (2R), psi = arccos(c/a): any load P > 0 gives
     a > c, and c = 0 is the Hertz cylinder (29).
 
+    Accuracy: a is a double, so for a contact barely wider than the flat the relative error of
+    L_I grows like 1e-16 / (1 - c/a): measured 5e-13 at 1 - c/a = 1e-4 and 7e-12 at 1e-5.
+
     Parameters
     ----------
     c

@@ -128,6 +128,12 @@ class PowerLaw(ContactLaw):
 
         NumPy-only for n = 1 (the wedge, p = (E* A/pi) arccosh(a/|x|), +inf at the apex x = 0)
         and n = 2 (the cylinder); any other n needs SciPy (the ``special`` extra).
+
+        Accuracy: SciPy's 2F1 loses digits as its argument 1 - x^2/a^2 approaches 1, i.e. right
+        at the punch apex: for |x|/a below about 1e-7 the relative error measured against
+        mpmath was 1e-2 (n = 1.25), 2e-6 (n = 1.75), 4e-11 (n = 2.5).  Away from the apex
+        (|x| >= 1e-3 a) it is within 5e-16.  The edge asymptotics, which are what this package
+        is about, use only the law P(a), never this pressure.
         """
         position = as_float_array("x", x)
         a = self.half_width(P)
