@@ -19,6 +19,7 @@ help: ## list the targets
 $(STAMP): pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --disable-pip-version-check -e '.[$(EXTRAS)]'
+	@rm -rf asymslip.egg-info  # a build by-product; the install keeps its own metadata
 	@touch $(STAMP)
 
 env: $(STAMP) ## create .venv and install asymslip with its extras

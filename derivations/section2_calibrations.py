@@ -110,6 +110,14 @@ def stick_boundary_proportional() -> sympy.Expr:
 
 
 @functools.cache
+def stick_boundary_denominator() -> sympy.Expr:
+    """C1 + C2, the denominator of (17) and (22), on the proportional path."""
+    _, denominator = sympy.fraction(stick_boundary_in_coefficients())
+    assert denominator == coefficient1 + coefficient2
+    return denominator.subs(proportional_coefficients())
+
+
+@functools.cache
 def slip_zone_width() -> sympy.Expr:
     """a1 - b from (17) with a2 = a1 + da: -C2 da / (C1 + C2), da an exact factor."""
     width = sympy.factor(a1 - stick_boundary_in_coefficients().subs(a2, a1 + da))
@@ -231,6 +239,17 @@ def derive() -> Derivation:
         "lam + pi eta a2 / 4 > mu.",
         module="corrective_slip",
         returns="Stick boundary b, same units as a1.",
+    )
+    d.emit(
+        name="stick_boundary_denominator",
+        args=arguments(mu, lam, eta, a1, a2, L_I1, L_I2),
+        expr=stick_boundary_denominator(),
+        equations=("17", "22"),
+        summary="Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) on a proportional path.",
+        doc="(17) has no root where it vanishes; the validating API refuses such input.  "
+        "Positive for a steady partial-slip state.",
+        module="corrective_slip",
+        returns="C1 + C2 [force/length^(5/2)].",
     )
     d.emit(
         name="slip_zone_width",

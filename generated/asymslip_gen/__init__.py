@@ -7,6 +7,7 @@ Runtime needs NumPy only.  The hand-written, validating API is the ``asymslip`` 
 
 from asymslip_gen.corrective_slip import (
     stick_boundary_proportional,
+    stick_boundary_denominator,
     slip_zone_width,
     stick_boundary,
     dislocation_density,
@@ -126,6 +127,7 @@ __all__ = [
     "slip_zone_width",
     "slip_zone_width_first_order",
     "stick_boundary",
+    "stick_boundary_denominator",
     "stick_boundary_proportional",
     "stick_ratio_first_order",
     "wedge_pressure",

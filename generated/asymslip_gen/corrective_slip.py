@@ -14,6 +14,7 @@ FloatArray = NDArray[numpy.float64] | numpy.float64
 
 __all__ = [
     "stick_boundary_proportional",
+    "stick_boundary_denominator",
     "slip_zone_width",
     "stick_boundary",
     "dislocation_density",
@@ -66,6 +67,51 @@ def stick_boundary_proportional(
     tmp3 = (1 / 4) * L_I1 * (a1 * tmp2 + tmp0 + tmp1)
     tmp4 = (1 / 4) * L_I2 * (a2 * tmp2 + tmp0 - tmp1)
     return (a1 * tmp3 - a2 * tmp4) / (tmp3 - tmp4)
+
+
+def stick_boundary_denominator(
+    mu: ArrayLike,
+    lam: ArrayLike,
+    eta: ArrayLike,
+    a1: ArrayLike,
+    a2: ArrayLike,
+    L_I1: ArrayLike,
+    L_I2: ArrayLike,
+) -> FloatArray:
+    """Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) on a proportional path.
+
+    (17) has no root where it vanishes; the validating API refuses such input.  Positive for a
+    steady partial-slip state.
+
+    Implements Eqs. (17), (22) of the paper; derived in
+    ``derivations/section2_calibrations.py``.
+
+    Parameters
+    ----------
+    mu : array_like
+        Coefficient of friction, mu > 0.
+    lam : array_like
+        Load-path slope lambda = dQ/dP (18), either sign.
+    eta : array_like
+        Load-path slope eta = dsigma/dP (18), either sign [1/length].
+    a1 : array_like
+        Contact half-width a(P1) at load state 1 [length].
+    a2 : array_like
+        Contact half-width a(P2) at load state 2, a2 > a1 [length].
+    L_I1 : array_like
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_I2 : array_like
+        Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+
+    Returns
+    -------
+    ndarray or float64
+        C1 + C2 [force/length^(5/2)].
+    """
+    tmp0 = 4 * lam
+    tmp1 = 4 * mu
+    tmp2 = numpy.pi * eta
+    return (1 / 4) * L_I1 * (a1 * tmp2 + tmp0 + tmp1) - 1 / 4 * L_I2 * (a2 * tmp2 + tmp0 - tmp1)
 
 
 def slip_zone_width(

@@ -11,21 +11,35 @@ Examples
 11.1419
 """
 
-from .cycle import LoadCycle
-from .edge_solution import SlipZoneResult, slip_zone
-from .errors import InputError
-from .laws import ContactLaw, FlatRoundedLaw, HertzLaw, ModuleLaw, PowerLaw, TableLaw
+import importlib
+from typing import Any
 
-__all__ = [
-    "ContactLaw",
-    "FlatRoundedLaw",
-    "HertzLaw",
-    "InputError",
-    "LoadCycle",
-    "ModuleLaw",
-    "PowerLaw",
-    "SlipZoneResult",
-    "TableLaw",
-    "slip_zone",
-]
+# Exports load on first use (PEP 562): `python -m asymslip.codegen` must run without importing
+# the API, which imports the generated package that the code generator is about to rewrite.
+_EXPORTS = {
+    "ContactLaw": ".laws",
+    "FlatRoundedLaw": ".laws",
+    "HertzLaw": ".laws",
+    "InputError": ".errors",
+    "LoadCycle": ".cycle",
+    "ModuleLaw": ".laws",
+    "PowerLaw": ".laws",
+    "SlipZoneResult": ".edge_solution",
+    "TableLaw": ".laws",
+    "slip_zone": ".edge_solution",
+}
+
+__all__ = sorted(_EXPORTS)
 __version__ = "0.1.0"
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _EXPORTS:
+        raise AttributeError(f"module 'asymslip' has no attribute {name!r}")
+    value = getattr(importlib.import_module(_EXPORTS[name], __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted([*globals(), *_EXPORTS])

@@ -12,7 +12,11 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from asymslip_gen.corrective_slip import slip_zone_width, stick_boundary_proportional
+from asymslip_gen.corrective_slip import (
+    slip_zone_width,
+    stick_boundary_denominator,
+    stick_boundary_proportional,
+)
 from asymslip_gen.corrective_stick import corrective_stick_slip_zone_width
 from asymslip_gen.edge_multipliers import shear_edge_multiplier_proportional
 from asymslip_gen.exact_solution import permanent_stick_load
@@ -77,14 +81,14 @@ class SlipZoneResult:
         return data
 
 
-def slip_direction(mu: ArrayLike, lam: ArrayLike, eta: ArrayLike, a2: ArrayLike) -> FloatArray:
+def slip_direction(mu: ArrayLike, L_I2: ArrayLike, L_II2: ArrayLike) -> FloatArray:
     """+1 (forward), -1 (backward) or 0 (no slip) on loading, at the right-hand edge.
 
     Next to the state-2 edge (a1 < x < a2) the state-1 traction is zero, so loading slips there
-    iff |L_II2| > mu L_I2, i.e. |lam + pi eta a2 / 4| > mu by (21) (derivations/edge_symmetry).
+    iff |L_II2| > mu L_I2 (derivations/edge_symmetry.py).
     """
-    slope = np.asarray(lam) + np.pi * np.asarray(eta) * np.asarray(a2) / 4
-    return np.where(slope > mu, 1.0, np.where(slope < -np.asarray(mu), -1.0, 0.0))
+    capacity = np.asarray(mu) * np.asarray(L_I2)
+    return np.where(L_II2 > capacity, 1.0, np.where(L_II2 < -capacity, -1.0, 0.0))
 
 
 def edge_quantities(
@@ -106,7 +110,9 @@ def edge_quantities(
     a2 = a1 + da
     L_I1 = law.normal_multiplier(cycle.P1)
     L_I2 = law.normal_multiplier(cycle.P2)
-    direction = slip_direction(mu, lam, eta, a2)
+    L_II1 = shear_edge_multiplier_proportional(lam, eta, a1, L_I1)
+    L_II2 = shear_edge_multiplier_proportional(lam, eta, a2, L_I2)
+    direction = slip_direction(mu, L_I2, L_II2)
     orientation = np.where(direction == 0, 1.0, direction)
     lam_o, eta_o = orientation * lam, orientation * eta
     slope1 = law.half_width_slope(cycle.P1)
@@ -128,8 +134,8 @@ def edge_quantities(
         "eta": eta,
         "L_I1": L_I1,
         "L_I2": L_I2,
-        "L_II1": shear_edge_multiplier_proportional(lam, eta, a1, L_I1),
-        "L_II2": shear_edge_multiplier_proportional(lam, eta, a2, L_I2),
+        "L_II1": L_II1,
+        "L_II2": L_II2,
         "b": b,
         "slip_zone_width": width,
         "b_first_order": np.where(slips, first_order, a1),
@@ -142,8 +148,7 @@ def edge_quantities(
         "direction": direction,
         "lam_oriented": lam_o,
         "eta_oriented": eta_o,
-        "denominator": L_I1 * (mu + lam_o + np.pi * eta_o * a1 / 4)
-        + L_I2 * (mu - lam_o - np.pi * eta_o * a2 / 4),
+        "denominator": stick_boundary_denominator(mu, lam_o, eta_o, a1, a2, L_I1, L_I2),
         "permanent_stick_load": np.where(
             slips, permanent_stick_load(cycle.P1, dP, lam_o, mu), cycle.P1
         ),

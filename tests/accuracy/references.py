@@ -273,6 +273,13 @@ def stick_boundary_22(mu, lam, eta, a1, a2, L_I1, L_I2):
     return (second * L_I2 * a2 + first * L_I1 * a1) / (second * L_I2 + first * L_I1)
 
 
+def stick_boundary_denominator_17(mu, lam, eta, a1, a2, L_I1, L_I2):
+    """mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) with L_II from (21), as printed."""
+    L_II1 = (lam + mpmath.pi * eta * a1 / 4) * L_I1
+    L_II2 = (lam + mpmath.pi * eta * a2 / 4) * L_I2
+    return mu * (L_I1 + L_I2) + L_II1 - L_II2
+
+
 def slip_zone_width_22(mu, lam, eta, a1, da, L_I1, L_I2):
     """a1 - b of (22) with a2 = a1 + da: 50 digits keep ~38 after the cancellation at 1e-12."""
     return a1 - stick_boundary_22(mu, lam, eta, a1, a1 + da, L_I1, L_I2)
@@ -295,6 +302,11 @@ register_quantity(Quantity(
     "corrective_slip.stick_boundary_proportional",
     ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2"),
     stick_boundary_22, ("22", "50"),
+))  # fmt: skip
+register_quantity(Quantity(
+    "corrective_slip.stick_boundary_denominator",
+    ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2"),
+    stick_boundary_denominator_17, ("17", "21"),
 ))  # fmt: skip
 register_quantity(Quantity(
     "corrective_slip.slip_zone_width",

@@ -51,7 +51,8 @@ def main(argv: list[str] | None = None) -> int:
 
     if args.command == "check":
         status = check_fresh(args.derivations, args.out, report=args.report)
-        return max(status, check_figure_data(ROOT / "generated" / "figures"))
+        # The figure data come from the committed package: compare them only once it is fresh.
+        return status or check_figure_data(ROOT / "generated" / "figures")
     start = time.perf_counter()
     run = run_derivations(args.derivations, progress=not args.quiet)
     if args.command != "verify" and args.report is not None:
