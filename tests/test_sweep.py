@@ -117,9 +117,21 @@ def test_rows_exercise_every_warning_kind(swept):
 def test_chunked_and_single_chunk_sweeps_write_the_same_bytes(tmp_path):
     cases = tmp_path / "cases.csv"
     cases.write_text(CASES)
-    sweep_file(cases, LAW, tmp_path / "one.csv", mu=DEFAULT_MU, progress=False)
-    sweep_file(cases, LAW, tmp_path / "many.csv", mu=DEFAULT_MU, chunk_rows=3, progress=False)
+    sweep_file(cases, LAW, tmp_path / "one.csv", mu=DEFAULT_MU, progress=False, workers=1)
+    sweep_file(cases, LAW, tmp_path / "many.csv", mu=DEFAULT_MU, chunk_rows=3, progress=False,
+               workers=1)  # fmt: skip
     assert (tmp_path / "one.csv").read_bytes() == (tmp_path / "many.csv").read_bytes()
+
+
+def test_worker_processes_write_the_same_bytes_and_report_the_same_bad_rows(tmp_path):
+    cases = tmp_path / "cases.csv"
+    cases.write_text(CASES)  # includes invalid rows
+    alone = sweep_file(cases, LAW, tmp_path / "one.csv", mu=DEFAULT_MU, chunk_rows=2,
+                       progress=False, workers=1)  # fmt: skip
+    shared = sweep_file(cases, LAW, tmp_path / "two.csv", mu=DEFAULT_MU, chunk_rows=2,
+                        progress=False, workers=2)  # fmt: skip
+    assert (tmp_path / "one.csv").read_bytes() == (tmp_path / "two.csv").read_bytes()
+    assert alone.invalid == shared.invalid and alone.invalid
 
 
 def test_one_edge_gives_only_its_columns(tmp_path):

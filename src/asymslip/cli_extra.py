@@ -19,7 +19,7 @@ from .laws.base import ContactLaw
 OPTION_OF = {
     "table": "--table", "module": "--module", "param": "--param", "P_of_a": "--P-of-a",
     "params": "--params", "name": "--name", "out": "--out", "check": "--check",
-    "cases": "CASES", "derive": "derive", "chunk_rows": "--chunk-rows",
+    "cases": "CASES", "derive": "derive", "chunk_rows": "--chunk-rows", "workers": "--workers",
 }  # fmt: skip
 
 
@@ -155,6 +155,12 @@ def register(commands: argparse._SubParsersAction,
         default=100_000,
         help="rows evaluated at once (default 100000)",
     )
+    sweep.add_argument(
+        "--workers",
+        type=int,
+        default=None,
+        help="processes evaluating chunks at once (default: every CPU available)",
+    )
     sweep.set_defaults(run=run_sweep)  # fmt: skip
 
 
@@ -180,7 +186,9 @@ def run_sweep(args: argparse.Namespace) -> int:
     if args.mu is not None:
         positive("mu", args.mu)  # a bad default is one error, not one per row
     law = build_law(args)
+    if args.workers is not None and args.workers < 1:
+        raise InputError("workers", "must be >= 1", args.workers)
     summary = sweep_file(args.cases, law, args.out, mu=args.mu, edge=args.edge,
-                         chunk_rows=args.chunk_rows)  # fmt: skip
+                         chunk_rows=args.chunk_rows, workers=args.workers)  # fmt: skip
     print(summary.report(), file=sys.stderr)
     return 1 if summary.invalid else 0

@@ -21,6 +21,8 @@ from __future__ import annotations
 
 import dataclasses
 import io
+import multiprocessing
+import os
 import sys
 import time
 from collections.abc import Callable, Sequence
@@ -514,6 +516,67 @@ def _process_chunk(chunk: _Chunk, law: ContactLaw, edge: Edges, messages: _Messa
     return b"".join(pieces)
 
 
+@dataclass(frozen=True)
+class _Job:
+    """Everything a worker needs to turn one chunk of the input into output bytes."""
+
+    lines: list[bytes]
+    numbers: NDArray[np.int64]
+    header: list[str]
+    mu: float | None
+    law: ContactLaw
+    edge: Edges
+    chunk_rows: int
+
+
+#: The job of the current sweep, inherited by forked workers (set before the pool starts).
+_JOB: _Job | None = None
+_WORKER_MESSAGES: _Messages | None = None
+
+
+def _evaluate_chunk(
+    job: _Job, begin: int, messages: _Messages
+) -> tuple[bytes, list[tuple[int, str]]]:
+    end = begin + job.chunk_rows
+    chunk = _parse_chunk(job.lines[begin:end], job.numbers[begin:end], job.header, job.mu)
+    text = _process_chunk(chunk, job.law, job.edge, messages, job.header)
+    errors = [(int(chunk.line_numbers[row]), message)
+              for row, message in enumerate(chunk.errors) if message is not None]  # fmt: skip
+    return text, errors
+
+
+def _worker_chunk(begin: int) -> tuple[bytes, list[tuple[int, str]]]:
+    global _WORKER_MESSAGES
+    assert _JOB is not None
+    if _WORKER_MESSAGES is None:
+        _WORKER_MESSAGES = _Messages(_JOB.law, _JOB.edge)
+    return _evaluate_chunk(_JOB, begin, _WORKER_MESSAGES)
+
+
+def _run_chunks(job: _Job, starts: range, workers: int | None):
+    """(output bytes, row errors) of each chunk, in input order.
+
+    With more than one chunk and worker, chunks go to forked processes: the work is NumPy and
+    text formatting under the GIL, so threads would not help.  Each worker keeps its own
+    message cache; the messages are the same text either way.
+    """
+    global _JOB
+    if workers is None:
+        workers = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else 1
+    fork = "fork" in multiprocessing.get_all_start_methods()
+    if workers <= 1 or len(starts) <= 1 or not fork:
+        messages = _Messages(job.law, job.edge)
+        for begin in starts:
+            yield _evaluate_chunk(job, begin, messages)
+        return
+    _JOB = job
+    try:
+        with multiprocessing.get_context("fork").Pool(min(workers, len(starts))) as pool:
+            yield from pool.imap(_worker_chunk, starts)
+    finally:
+        _JOB = None
+
+
 def sweep_file(
     cases: str | Path,
     law: ContactLaw,
@@ -524,6 +587,7 @@ def sweep_file(
     chunk_rows: int = CHUNK_ROWS,
     progress: bool | None = None,
     stream: TextIO | None = None,
+    workers: int | None = None,
 ) -> SweepSummary:
     """Evaluate the slip zone of every cycle in ``cases`` and write one CSV row per cycle.
 
@@ -546,6 +610,9 @@ def sweep_file(
         Show a progress bar; default: only when ``stream`` is a terminal.
     stream
         Where the progress bar goes (default ``sys.stderr``).
+    workers
+        Processes evaluating chunks at once (default: the CPUs this process may use).  The
+        output is the same bytes whatever the number.
 
     Returns
     -------
@@ -567,22 +634,19 @@ def sweep_file(
     header, lines, numbers = _read_header(cases)
     if mu is None and "mu" not in header:
         raise InputError("mu", "is required: give --mu or a mu column in the cases file")
-    messages = _Messages(law, edge)
     bar = _Progress(len(lines), stream or sys.stderr, progress)
     invalid: list[tuple[int, str]] = []
     try:
         handle = out.open("wb")
     except OSError as error:
         raise InputError("out", f"cannot write {out}: {error.strerror}") from None
+    job = _Job(lines, numbers, header, mu, law, edge, chunk_rows)
+    starts = range(0, len(lines), chunk_rows)
     with handle:
         handle.write((",".join(output_columns(header, edge)) + "\n").encode())
-        for begin in range(0, len(lines), chunk_rows):
-            chunk = _parse_chunk(lines[begin : begin + chunk_rows],
-                                 numbers[begin : begin + chunk_rows], header, mu)  # fmt: skip
-            handle.write(_process_chunk(chunk, law, edge, messages, header))
-            for row, message in enumerate(chunk.errors):
-                if message is not None:
-                    invalid.append((int(chunk.line_numbers[row]), message))
-            bar.update(min(begin + chunk_rows, len(lines)))
+        for done, (text, errors) in enumerate(_run_chunks(job, starts, workers), start=1):
+            handle.write(text)
+            invalid.extend(errors)
+            bar.update(min(done * chunk_rows, len(lines)))
     bar.close()
     return SweepSummary(len(lines), out, time.perf_counter() - start, invalid)
