@@ -18,6 +18,7 @@ from asymslip_gen.flat_rounded import (
     flat_rounded_normal_edge_multiplier_slope,
     flat_rounded_pressure,
 )
+from asymslip_gen.hertz import hertz_half_width
 
 from ..errors import as_float_array, positive, require
 from .base import ContactLaw, FloatArray
@@ -79,7 +80,7 @@ class FlatRoundedLaw(ContactLaw):
         half-width, and at least the load of the cylinder of half-width a - c.
         """
         load = positive("P", P)
-        hertz = np.sqrt(4 * load * self.R / (np.pi * self.E_star))
+        hertz = hertz_half_width(load, self.R, self.E_star)
         a = invert_increasing(
             self.load, load, self.load_slope,
             lower=np.maximum(self.c, hertz), upper=self.c + hertz,
