@@ -25,6 +25,21 @@ beyond_b, beyond_a1 = sympy.symbols("r s", positive=True)
 gap = sympy.Symbol("g", positive=True)  # a1 = b + g, so that b < a1
 
 
+#: A Fig. 5-like cycle in exact rationals for the numerical checks of Section 2 and 3.4;
+#: mu L_I2 - L_II2 < 0 puts the consistent b of (17) inside a1, as in Fig. 5.
+EXAMPLE_CYCLE = {
+    mu: "3/10", E_star: "2", a1: "1", a2: "21/20",
+    L_I1: "1", L_I2: "11/10", L_II1: "1/2", L_II2: "11/20",
+}  # fmt: skip
+
+
+def example_cycle() -> dict[sympy.Symbol, sympy.Rational]:
+    """:data:`EXAMPLE_CYCLE` as rationals, with b from (17)."""
+    values = {symbol: sympy.Rational(value) for symbol, value in EXAMPLE_CYCLE.items()}
+    values[b] = stick_boundary().subs(values)
+    return values
+
+
 def inversion(inside_a1: bool) -> sympy.Expr:
     """(13) with its two finite Hilbert transforms evaluated by (14)."""
     coefficient1, coefficient2 = mu * L_I1 + L_II1, mu * L_I2 - L_II2
@@ -81,12 +96,7 @@ def derive() -> Derivation:
         )
 
     with d.equation("13", "Bounded inversion of the singular integral equation (12)") as eq:
-        exact = {
-            mu: "3/10", E_star: "2", a1: "1", a2: "21/20",
-            L_I1: "1", L_I2: "11/10", L_II1: "1/2", L_II2: "11/20",
-        }  # fmt: skip -- A2 = mu L_I2 - L_II2 < 0 puts b < a1, as in Fig. 5
-        exact = {symbol: sympy.Rational(value) for symbol, value in exact.items()}
-        exact[b] = stick_boundary().subs(exact)
+        exact = example_cycle()
 
         def values() -> dict[str, mpmath.mpf]:
             # Converted at call time, inside the caller's raised working precision.

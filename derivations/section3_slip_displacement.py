@@ -17,9 +17,8 @@ import sympy
 
 from asymslip.codegen import Derivation
 
-from _glossary import L_I1, L_I2, L_II1, L_II2, E_star, a1, a2, arguments, b, mu, x
-from section2_consistency import stick_boundary
-from section2_dislocation_density import dislocation_density
+from _glossary import L_I1, L_I2, L_II1, L_II2, E_star, a1, arguments, b, mu, x
+from section2_dislocation_density import dislocation_density, example_cycle
 from section3_tractions import density_pieces
 
 t = sympy.Symbol("t", real=True)
@@ -67,19 +66,7 @@ def _reference(fraction: str) -> mpmath.mpf:
 
 
 def _example() -> dict[sympy.Symbol, sympy.Rational]:
-    values = {
-        mu: "3/10",
-        E_star: "2",
-        a1: "1",
-        a2: "21/20",
-        L_I1: "1",
-        L_I2: "11/10",
-        L_II1: "1/2",
-        L_II2: "11/20",
-    }
-    values = {symbol: sympy.Rational(value) for symbol, value in values.items()}
-    values[b] = stick_boundary().subs(values)
-    return values
+    return example_cycle()
 
 
 def derive() -> Derivation:

@@ -38,7 +38,7 @@ from contact_law_hertz import (
     hertz_load,
 )
 from section2_consistency import scaled_weight_integral, stick_boundary
-from section2_dislocation_density import dislocation_density
+from section2_dislocation_density import EXAMPLE_CYCLE, dislocation_density
 from section2_hilbert_identity import hilbert_on_interval
 
 P_K = sympy.Symbol("P_K", positive=True)
@@ -224,16 +224,7 @@ def _semicircle_quadrature(c_value, d_value, x_value):
     return _principal_quadrature(weight, x_value, [c_value, d_value], c_value, d_value)
 
 
-EXAMPLE = {
-    mu: "3/10",
-    E_star: "2",
-    a1: "1",
-    a2: "21/20",
-    L_I1: "1",
-    L_I2: "11/10",
-    L_II1: "1/2",
-    L_II2: "11/20",
-}  # mu L_I2 - L_II2 < 0 puts b17 inside a1, as in Fig. 5
+EXAMPLE = EXAMPLE_CYCLE  # mu L_I2 - L_II2 < 0 puts b17 inside a1, as in Fig. 5
 
 
 def _example(b_shift: str) -> dict[sympy.Symbol, sympy.Rational]:
