@@ -13,112 +13,25 @@ SymPy is imported only when a law is derived (the ``derive`` extra), never at im
 
 from __future__ import annotations
 
-import io
 import keyword
 import re
 import sys
 import textwrap
-import tokenize
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
 from .errors import InputError
+from .expressions import IDENTIFIER as _IDENTIFIER
+from .expressions import check_params, parse_formula
+from .expressions import sympy_module as _sympy
 
-#: Functions a formula may use (SymPy names); each has a NumPy counterpart, as do the
-#: derivatives the derivation takes.
-ALLOWED_FUNCTIONS = (
-    "sqrt", "cbrt", "exp", "log", "sin", "cos", "tan", "asin", "acos", "atan", "atan2",
-    "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "Abs",
-)  # fmt: skip
-#: Constants a formula may use.
-ALLOWED_CONSTANTS = ("pi", "E")
-#: Functions refused with a reason (they would need SciPy at run time).
-REFUSED_FUNCTIONS = {
-    "gamma": "NumPy has no gamma function (the law would need SciPy at run time)",
-    "erf": "NumPy has no vectorised erf (the law would need SciPy at run time)",
-    "Max": "its derivative is a step function, which generated code does not allow",
-    "Min": "its derivative is a step function, which generated code does not allow",
-}
 #: The half-width symbol of every law.
 HALF_WIDTH = "a"
 #: The functions every law module defines, in this order, each taking (a, *params).
 LAW_FUNCTIONS = ("load", "load_slope", "normal_edge_multiplier", "normal_edge_multiplier_slope")
 #: Version of the ``__asymslip_law__`` description written into law modules.
 LAW_FORMAT = 1
-
-_OPERATORS = {"+", "-", "*", "/", "**", "^", "(", ")", ","}
-_NUMBER = re.compile(r"^(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
-_IDENTIFIER = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
-# Names a generated module uses itself; a parameter must not shadow them.
-_RESERVED = {"numpy", "ArrayLike", "NDArray", "FloatArray", "annotations", HALF_WIDTH}
-
-
-def allowed_names(params: Sequence[str]) -> list[str]:
-    """Every name a formula with these parameters may use."""
-    return [HALF_WIDTH, *params, *ALLOWED_FUNCTIONS, *ALLOWED_CONSTANTS]
-
-
-def check_params(params: Sequence[str]) -> list[str]:
-    """Validate parameter names: identifiers, distinct, not ``a``, no function or keyword."""
-    params = list(params)
-    for name in params:
-        if not _IDENTIFIER.match(name):
-            raise InputError("params", "each parameter must be a name of letters, digits and _ "
-                             "starting with a letter", name)  # fmt: skip
-        if keyword.iskeyword(name) or name in _RESERVED or name.startswith("tmp"):
-            raise InputError("params", "this name is reserved (a is the half-width; tmp*, "
-                             "numpy and Python keywords are taken)", name)  # fmt: skip
-        if name in ALLOWED_FUNCTIONS or name in ALLOWED_CONSTANTS or name in REFUSED_FUNCTIONS:
-            raise InputError("params", "this name is a function or constant of formulas", name)
-    if len(set(params)) != len(params):
-        raise InputError("params", "parameter names must be distinct", " ".join(params))
-    return params
-
-
-def screen_formula(text: str, params: Sequence[str]) -> None:
-    """Refuse anything but numbers, allowed names and arithmetic, before SymPy sees the text.
-
-    SymPy's parser evaluates Python; screening the tokens first means that attribute access,
-    strings, subscripts, keywords (``lambda``, ``import``) and unknown names never reach it.
-    """
-    allowed = set(allowed_names(params))
-    if not text.strip():
-        raise InputError("P_of_a", "is empty: give P(a) as a formula in a", text)
-    try:
-        tokens = list(tokenize.generate_tokens(io.StringIO(text).readline))
-    except (tokenize.TokenError, SyntaxError) as error:
-        raise InputError("P_of_a", f"is not a complete formula ({error.args[0]})", text) from None
-    unknown: list[str] = []
-    for token in tokens:
-        kind, string = token.type, token.string
-        if kind == tokenize.ENDMARKER or (kind == tokenize.NEWLINE and string == ""):
-            continue
-        if kind in (tokenize.NEWLINE, tokenize.NL):
-            raise InputError("P_of_a", "must be a single line", text)
-        if kind == tokenize.NAME:
-            if string in REFUSED_FUNCTIONS:
-                raise InputError("P_of_a", f"{string} is not available: "
-                                 f"{REFUSED_FUNCTIONS[string]}", text)  # fmt: skip
-            if string not in allowed and string not in unknown:
-                unknown.append(string)
-        elif kind == tokenize.NUMBER:
-            if not _NUMBER.match(string):
-                raise InputError("P_of_a", f"{string!r} is not a plain decimal number", text)
-        elif kind == tokenize.OP:
-            if string not in _OPERATORS:
-                raise InputError("P_of_a", f"{string!r} is not allowed: only numbers, names, "
-                                 "+ - * / ** ^, parentheses and commas", text)  # fmt: skip
-        else:
-            raise InputError("P_of_a", f"{string.strip()!r} is not allowed: only numbers, "
-                             "names, + - * / ** ^, parentheses and commas", text)  # fmt: skip
-    if unknown:
-        raise InputError(
-            "P_of_a",
-            f"unknown name{'s' if len(unknown) > 1 else ''} {', '.join(unknown)}: declare "
-            f"parameters with --params; the names allowed are {', '.join(allowed_names(params))}",
-            text,
-        )
 
 
 def _derivations_folder() -> Path:
@@ -130,45 +43,14 @@ def _derivations_folder() -> Path:
     return folder
 
 
-def _sympy() -> Any:
-    try:
-        import sympy
-    except ImportError:
-        raise InputError("derive", "needs SymPy: install asymslip with the derive extra "
-                         "(pip install 'asymslip[derive]')") from None  # fmt: skip
-    return sympy
-
-
 def parse_law(text: str, params: Sequence[str]) -> tuple[Any, Any, list[Any]]:
     """(P(a) as a SymPy expression, the symbol a, the parameter symbols) from screened text."""
-    params = check_params(params)
-    text = text.strip()
-    screen_formula(text, params)
-    sympy = _sympy()
-    from sympy.parsing.sympy_parser import auto_number, convert_xor, parse_expr, rationalize
-
     sys.path.insert(0, str(_derivations_folder()))
     try:
         from _glossary import a  # the half-width symbol (19) is derived with
     finally:
         sys.path.pop(0)
-    symbols = [sympy.Symbol(name, real=True) for name in params]
-    namespace: dict[str, Any] = {HALF_WIDTH: a, **dict(zip(params, symbols, strict=True))}
-    namespace.update({name: getattr(sympy, name) for name in ALLOWED_FUNCTIONS})
-    namespace.update({"pi": sympy.pi, "E": sympy.E})
-    # Only the number constructors auto_number writes; no builtins, no SymPy namespace.
-    globals_ = {"__builtins__": {}, "Integer": sympy.Integer, "Float": sympy.Float,
-                "Rational": sympy.Rational}  # fmt: skip
-    try:
-        expr = parse_expr(text, local_dict=namespace, global_dict=globals_,
-                          transformations=(auto_number, rationalize, convert_xor))  # fmt: skip
-    except (SyntaxError, TypeError, ValueError, AttributeError, NameError) as error:
-        raise InputError("P_of_a", f"is not a formula SymPy can read ({error})", text) from None
-    if not isinstance(expr, sympy.Expr):
-        raise InputError("P_of_a", "must be one expression for P(a)", text)
-    extra = sorted(s.name for s in expr.free_symbols - {a, *symbols})
-    if extra:
-        raise InputError("P_of_a", f"has symbols other than a and the parameters: {extra}", text)
+    expr, symbols = parse_formula(text, a, params, option="P_of_a")
     return expr, a, symbols
 
 
@@ -317,7 +199,8 @@ def derive_law_module(
     P_of_a
         The normal load as a formula in the half-width ``a`` and the parameters, e.g.
         ``"pi*E_star*a**2/(4*R)"`` (Hertz, (29)).  Allowed: numbers, ``a``, the parameters,
-        :data:`ALLOWED_FUNCTIONS`, ``pi``, ``E``, ``+ - * / ** ^`` and parentheses.
+        :data:`asymslip.expressions.ALLOWED_FUNCTIONS`, ``pi``, ``E``, ``+ - * / ** ^`` and
+        parentheses.
     params
         Parameter names, in the order the generated functions take them after ``a``.
     name
@@ -346,7 +229,7 @@ def derive_law_module(
     derived = derive_law(P_of_a, params)
     if check_half_widths:
         _check_increasing(derived, dict(check or {}), check_half_widths, P_of_a)
-    source = render_law_module(P_of_a, check_params(params), name, derived)
+    source = render_law_module(P_of_a, check_params(params, HALF_WIDTH), name, derived)
     try:
         out.write_text(source)
     except OSError as error:

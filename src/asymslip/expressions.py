@@ -1,0 +1,205 @@
+"""Formulas typed by a user (a contact law P(a), a profile h(x)), read safely into SymPy.
+
+SymPy's parser evaluates Python, so the text is screened token by token first: only numbers,
+the declared names, a whitelist of functions and constants, arithmetic and parentheses reach
+it, with no builtins in its namespace.  The size is bounded before anything is parsed (a
+100 kB formula would otherwise exhaust the recursion limit deep inside SymPy).
+
+Used by ``asymslip derive`` (a law P(a)) and by the reference solver (a profile h(x)).  SymPy
+is imported only when a formula is parsed (the ``derive`` extra), never at import time.
+"""
+
+from __future__ import annotations
+
+import io
+import keyword
+import re
+import tokenize
+from collections.abc import Sequence
+from typing import Any
+
+from .errors import InputError
+
+#: Functions a formula may use (SymPy names); each has a NumPy counterpart, as do the
+#: derivatives a derivation takes.
+ALLOWED_FUNCTIONS = (
+    "sqrt", "cbrt", "exp", "log", "sin", "cos", "tan", "asin", "acos", "atan", "atan2",
+    "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "Abs",
+)  # fmt: skip
+#: Constants a formula may use.
+ALLOWED_CONSTANTS = ("pi", "E")
+#: Functions refused with a reason (they would need SciPy at run time, or are not smooth).
+REFUSED_FUNCTIONS = {
+    "gamma": "NumPy has no gamma function (the law would need SciPy at run time)",
+    "erf": "NumPy has no vectorised erf (the law would need SciPy at run time)",
+    "Max": "its derivative is a step function, which generated code does not allow",
+    "Min": "its derivative is a step function, which generated code does not allow",
+}
+#: Longest formula accepted, in characters.  A contact law or a profile is a line or two; the
+#: bound keeps SymPy's recursive parser and simplifier far from Python's recursion limit.
+MAX_CHARACTERS = 2000
+#: Deepest nesting of parentheses accepted (each level is a recursion in the parser).
+MAX_NESTING = 30
+
+_OPERATORS = {"+", "-", "*", "/", "**", "^", "(", ")", ","}
+_NUMBER = re.compile(r"^(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
+IDENTIFIER = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
+# Names generated modules use themselves; a parameter must not shadow them.
+_RESERVED = {"numpy", "ArrayLike", "NDArray", "FloatArray", "annotations"}
+
+
+def allowed_names(variable: str, params: Sequence[str]) -> list[str]:
+    """Every name a formula in ``variable`` with these parameters may use."""
+    return [variable, *params, *ALLOWED_FUNCTIONS, *ALLOWED_CONSTANTS]
+
+
+def check_params(params: Sequence[str], variable: str, option: str = "params") -> list[str]:
+    """Validate parameter names: identifiers, distinct, not the variable, no function/keyword."""
+    params = list(params)
+    for name in params:
+        if not IDENTIFIER.match(name):
+            raise InputError(option, "each parameter must be a name of letters, digits and _ "
+                             "starting with a letter", name)  # fmt: skip
+        if keyword.iskeyword(name) or name in _RESERVED or name == variable \
+                or name.startswith("tmp"):  # fmt: skip
+            raise InputError(option, f"this name is reserved ({variable} is the variable; "
+                             "tmp*, numpy and Python keywords are taken)", name)  # fmt: skip
+        if name in ALLOWED_FUNCTIONS or name in ALLOWED_CONSTANTS or name in REFUSED_FUNCTIONS:
+            raise InputError(option, "this name is a function or constant of formulas", name)
+    if len(set(params)) != len(params):
+        raise InputError(option, "parameter names must be distinct", " ".join(params))
+    return params
+
+
+def _shown(text: str) -> str:
+    """The formula as quoted in a message: whole when short, else its start and its length."""
+    return text if len(text) <= 80 else f"{text[:60]}... ({len(text)} characters)"
+
+
+def screen_formula(text: str, variable: str, params: Sequence[str], option: str) -> None:
+    """Refuse anything but numbers, allowed names and arithmetic, before SymPy sees the text.
+
+    Screening the tokens first means that attribute access, strings, subscripts, keywords
+    (``lambda``, ``import``) and unknown names never reach SymPy's parser.
+    """
+    if not text.strip():
+        raise InputError(option, f"is empty: give the formula in {variable}")
+    if len(text) > MAX_CHARACTERS:
+        raise InputError(option, f"is {len(text)} characters long; at most {MAX_CHARACTERS} "
+                         "are accepted (write the formula more compactly)")  # fmt: skip
+    allowed = set(allowed_names(variable, params))
+    try:
+        tokens = list(tokenize.generate_tokens(io.StringIO(text).readline))
+    except (tokenize.TokenError, SyntaxError) as error:
+        raise InputError(option, f"is not a complete formula ({error.args[0]})",
+                         _shown(text)) from None  # fmt: skip
+    unknown: list[str] = []
+    depth = 0
+    for token in tokens:
+        kind, string = token.type, token.string
+        if kind == tokenize.ENDMARKER or (kind == tokenize.NEWLINE and string == ""):
+            continue
+        if kind in (tokenize.NEWLINE, tokenize.NL):
+            raise InputError(option, "must be a single line", _shown(text))
+        if kind == tokenize.NAME:
+            if string in REFUSED_FUNCTIONS:
+                raise InputError(option, f"{string} is not available: "
+                                 f"{REFUSED_FUNCTIONS[string]}", _shown(text))  # fmt: skip
+            if string not in allowed and string not in unknown:
+                unknown.append(string)
+        elif kind == tokenize.NUMBER:
+            if not _NUMBER.match(string):
+                raise InputError(option, f"{string!r} is not a plain decimal number",
+                                 _shown(text))  # fmt: skip
+        elif kind == tokenize.OP:
+            if string not in _OPERATORS:
+                raise InputError(option, f"{string!r} is not allowed: only numbers, names, "
+                                 "+ - * / ** ^, parentheses and commas", _shown(text))  # fmt: skip
+            depth += {"(": 1, ")": -1}.get(string, 0)
+            if depth > MAX_NESTING:
+                raise InputError(option, f"nests parentheses more than {MAX_NESTING} deep",
+                                 _shown(text))  # fmt: skip
+        else:
+            raise InputError(option, f"{string.strip()!r} is not allowed: only numbers, "
+                             "names, + - * / ** ^, parentheses and commas",
+                             _shown(text))  # fmt: skip
+    if unknown:
+        plural = "s" if len(unknown) > 1 else ""
+        raise InputError(
+            option,
+            f"unknown name{plural} {', '.join(unknown)}: declare parameters with --params; "
+            f"the names allowed are {', '.join(allowed_names(variable, params))}",
+            _shown(text),
+        )
+
+
+def sympy_module() -> Any:
+    """SymPy, or an :class:`InputError` naming the extra that provides it."""
+    try:
+        import sympy
+    except ImportError:
+        raise InputError("derive", "needs SymPy: install asymslip with the derive extra "
+                         "(pip install 'asymslip[derive]')") from None  # fmt: skip
+    return sympy
+
+
+def parse_formula(
+    text: str,
+    variable: Any,
+    params: Sequence[str],
+    *,
+    option: str,
+) -> tuple[Any, list[Any]]:
+    """Parse screened text into a SymPy expression in ``variable`` and the parameters.
+
+    Parameters
+    ----------
+    text
+        The formula, e.g. ``"pi*E_star*a**2/(4*R)"``.
+    variable
+        The SymPy symbol the formula is a function of (with the assumptions the caller's
+        derivation needs, e.g. a positive half-width ``a``).
+    params
+        Parameter names; each becomes a real symbol.
+    option
+        The option or parameter named in error messages (``P_of_a``, ``profile``).
+
+    Returns
+    -------
+    (expression, parameter symbols)
+
+    Raises
+    ------
+    InputError
+        Anything the screen refuses, text SymPy cannot read, or symbols other than the
+        variable and the parameters.
+    """
+    name = variable.name
+    params = check_params(params, name)
+    text = text.strip()
+    screen_formula(text, name, params, option)
+    sympy = sympy_module()
+    from sympy.parsing.sympy_parser import auto_number, convert_xor, parse_expr, rationalize
+
+    symbols = [sympy.Symbol(param, real=True) for param in params]
+    namespace: dict[str, Any] = {name: variable, **dict(zip(params, symbols, strict=True))}
+    namespace.update({function: getattr(sympy, function) for function in ALLOWED_FUNCTIONS})
+    namespace.update({"pi": sympy.pi, "E": sympy.E})
+    # Only the number constructors auto_number writes; no builtins, no SymPy namespace.
+    globals_ = {"__builtins__": {}, "Integer": sympy.Integer, "Float": sympy.Float,
+                "Rational": sympy.Rational}  # fmt: skip
+    try:
+        expr = parse_expr(text, local_dict=namespace, global_dict=globals_,
+                          transformations=(auto_number, rationalize, convert_xor))  # fmt: skip
+    except (SyntaxError, TypeError, ValueError, AttributeError, NameError,
+            RecursionError) as error:  # fmt: skip
+        reason = "too deeply nested" if isinstance(error, RecursionError) else str(error)
+        raise InputError(option, f"is not a formula SymPy can read ({reason})",
+                         _shown(text)) from None  # fmt: skip
+    if not isinstance(expr, sympy.Expr):
+        raise InputError(option, f"must be one expression in {name}", _shown(text))
+    extra = sorted(s.name for s in expr.free_symbols - {variable, *symbols})
+    if extra:
+        raise InputError(option, f"has symbols other than {name} and the parameters: {extra}",
+                         _shown(text))  # fmt: skip
+    return expr, symbols
