@@ -1,0 +1,76 @@
+"""Write a file so that it is either complete or absent: never a truncated result.
+
+A sweep interrupted by Ctrl-C, a full disk or a killed process must not leave a results file
+that looks complete.  Everything the tool writes goes to a temporary file beside the target
+(same folder, hence same file system) and is renamed over it only once it is closed and synced;
+on any error, or an interrupt, the temporary file is removed and the target is untouched.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from collections.abc import Iterator
+from contextlib import contextmanager
+from pathlib import Path
+from typing import IO, Literal
+
+from ..errors import InputError
+
+
+def refuse_same_file(out: str | Path, option: str, *inputs: str | Path | None) -> None:
+    """Refuse an output path that names one of the inputs (``--out cases.csv`` on cases.csv)."""
+    target = Path(out)
+    for source in inputs:
+        if source is None:
+            continue
+        source = Path(source)
+        same = target.resolve() == source.resolve()
+        if not same and target.exists() and source.exists():
+            same = os.path.samefile(target, source)
+        if same:
+            raise InputError(option, f"{target} is also the input: writing it would destroy the "
+                             "data being read; choose another output file")  # fmt: skip
+
+
+@contextmanager
+def atomic_write(
+    path: str | Path, option: str = "out", mode: Literal["wb", "w"] = "wb"
+) -> Iterator[IO]:
+    """Open a temporary file beside ``path``; rename it to ``path`` when the block succeeds.
+
+    Parameters
+    ----------
+    path
+        The file to write.  Its folder must exist.
+    option
+        The option named in the error when the folder cannot be written.
+    mode
+        ``"wb"`` (bytes) or ``"w"`` (UTF-8 text).
+
+    Raises
+    ------
+    InputError
+        When the temporary file cannot be created (no such folder, no permission), or the
+        data cannot be written (a full disk): the message names ``option``.
+    """
+    target = Path(path)
+    folder = target.parent if str(target.parent) else Path(".")
+    try:
+        descriptor, temporary = tempfile.mkstemp(
+            dir=folder, prefix=f".{target.name}.", suffix=".partial"
+        )
+    except OSError as error:
+        raise InputError(option, f"cannot write {target}: {error.strerror}") from None
+    try:
+        encoding = {"encoding": "utf-8"} if mode == "w" else {}
+        with os.fdopen(descriptor, mode, **encoding) as handle:
+            yield handle
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.replace(temporary, target)
+    except BaseException as error:  # an interrupt too: never leave the partial file behind
+        Path(temporary).unlink(missing_ok=True)
+        if isinstance(error, OSError) and not isinstance(error, InputError):
+            raise InputError(option, f"cannot write {target}: {error.strerror or error}") from None
+        raise
