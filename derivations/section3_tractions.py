@@ -79,10 +79,46 @@ def pressure_at(load: sympy.Expr) -> sympy.Expr:
     return hertz_pressure().subs(P, load)
 
 
+# The pressures of any symmetric law at the three loads of (47), for its general form.
+pressure2, pressure1, pressure_K = sympy.symbols("p2 p1 p_K", nonnegative=True)
+PRESSURES = (
+    Argument(pressure2, "Contact pressure p(x, P2) at load state 2, zero outside the contact "
+             "[force/length^2]."),
+    Argument(pressure1, "Contact pressure p(x, P1) at load state 1, zero outside the contact "
+             "[force/length^2]."),
+    Argument(pressure_K, "Contact pressure p(x, P_K) at the load P_K of (33), zero outside its "
+             "contact [force/length^2]."),
+)  # fmt: skip
+_pressure = sympy.Function("p")  # the law's pressure p(x, P) at x, as a function of the load
+
+
+@functools.cache
+def jaeger_ciavarella_difference() -> sympy.Expr:
+    """(47) for any symmetric law, in the law's pressure at P2, P1 and P_K.
+
+    Jaeger-Ciavarella: at each end of the cycle the shear traction is full sliding, mu p_i,
+    corrected in the permanent stick zone by -2 mu p(x, P_K) relative to the other end, so
+    q2 - q1 = mu (p(x, P2) + p(x, P1)) - 2 mu p(x, P_K), each pressure zero outside its contact
+    (which makes this one expression all three ranges of (47)).  The starting point of
+    Section 3.1; for Hertz it is checked against the paper's piecewise (47) below.
+    """
+    return mu * (_pressure(P1 + dP) + _pressure(P1) - 2 * _pressure(P_K))
+
+
+@functools.cache
+def general_traction_difference() -> sympy.Expr:
+    """(47) with the three pressures as arguments."""
+    general = jaeger_ciavarella_difference().subs(
+        {_pressure(P1 + dP): pressure2, _pressure(P1): pressure1, _pressure(P_K): pressure_K}
+    )
+    assert general.free_symbols == {mu, pressure1, pressure2, pressure_K}, general
+    return general
+
+
 @functools.cache
 def hertz_traction_difference() -> sympy.Expr:
-    """(47) as one expression: the clamps switch the P_K and P1 terms off where they vanish."""
-    return mu * (pressure_at(P1 + dP) + pressure_at(P1) - 2 * pressure_at(P_K))
+    """(47) for Hertz: the clamps switch the P_K and P1 terms off where they vanish."""
+    return jaeger_ciavarella_difference().replace(_pressure, pressure_at)
 
 
 # --- (49): finite Hilbert transform of the semicircle weight ----------------------------------
@@ -253,6 +289,15 @@ def derive() -> Derivation:
 
     with d.equation("47", "Exact shear-traction difference for the Hertzian contact") as eq:
         _check_exact_ranges(eq)
+    with d.equation("47", "Exact shear-traction difference for any symmetric law") as eq:
+        general = general_traction_difference()
+        eq.holds(
+            general.subs({pressure2: pressure_at(P1 + dP), pressure1: pressure_at(P1),
+                          pressure_K: pressure_at(P_K)}) - hertz_traction_difference(),
+            how="the Jaeger-Ciavarella superposition in the law's own pressures; with the "
+            "Hertz pressures (48) it is the Hertz (47) checked range by range above",
+            derived=general,
+        )  # fmt: skip
 
     with d.equation("49", "Finite Hilbert transform of sqrt((t - c)(a2 - t))") as eq:
         inside, outside = semicircle_transform()
@@ -356,6 +401,19 @@ def derive() -> Derivation:
         "(48): this one expression is all three ranges of (47), since p(x, P_K) = 0 for "
         "x > b = a(P_K) and p(x, P1) = 0 for x > a1.  Valid for 0 < P_K < P1 (a permanent "
         "stick zone exists), any x.",
+        module="tractions",
+        returns="q2 - q1 [force/length^2].",
+    )
+    d.emit(
+        name="jaeger_ciavarella_traction_difference",
+        args=(*PRESSURES, *arguments(mu)),
+        expr=general_traction_difference(),
+        equations=("46", "47"),
+        summary="Exact q_diff = q2 - q1 of any symmetric contact without bulk tension.",
+        doc="mu (p2 + p1 - 2 p_K), the Jaeger-Ciavarella superposition behind (47), from the "
+        "law's own pressures at P2, P1 and P_K, each zero outside its contact: one expression "
+        "for all three ranges of (47).  Forward slip; for backward slip negate it "
+        "(derivations/edge_symmetry.py).  Valid for eta = 0 and a symmetric contact.",
         module="tractions",
         returns="q2 - q1 [force/length^2].",
     )

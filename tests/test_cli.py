@@ -14,7 +14,8 @@ from asymslip.cli import main
 FIG5 = ["--law", "hertz", "--R", "1", "--E-star", "1", "--mu", "0.1", "--P1", "100", "--Q1", "0",
         "--P2", "105", "--Q2", "1"]  # fmt: skip
 KEYS = ["a1", "a2", "lam", "eta", "L_I1", "L_I2", "L_II1", "L_II2", "b", "slip_zone_width",
-        "b_first_order", "b_exact", "b_corrective_stick", "validity", "warnings"]  # fmt: skip
+        "b_first_order", "b_exact", "b_corrective_stick", "slip_direction", "validity",
+        "warnings"]  # fmt: skip
 
 
 def test_slip_zone_json_prints_exactly_the_api_result(capsys):
@@ -79,7 +80,11 @@ def test_traction_json_gives_the_paper_fig5_errors_at_the_centre_and_near_the_ed
     a2 = float(HertzLaw(1, 1).half_width(105.0))
     assert main(["traction", *FIG5, "--x", "0", str(0.9 * a2), "--b", "exact", "--json"]) == 0
     printed = json.loads(capsys.readouterr().out)
-    assert list(printed) == ["x", "q_diff", "q_diff_exact", "b", "stick_boundary"]
+    assert list(printed) == ["edge", "x", "q_diff", "q_diff_exact", "near_edge", "near_edge_from",
+                             "b", "stick_boundary", "warnings"]  # fmt: skip
+    # The centre is far from the edge, where the edge asymptote is not meant to hold; 0.9 a2
+    # is within a1/10 of the edge.
+    assert printed["near_edge"] == [False, True]
     errors = [abs(q - e) for q, e in zip(printed["q_diff"], printed["q_diff_exact"], strict=True)]
     # Section 3.4: "about 0.01 at the centre" and "about 0.004" at x = 0.9 a2.
     assert errors[0] == pytest.approx(0.0114, abs=1e-4)

@@ -19,7 +19,7 @@ from hypothesis import given, settings
 from asymslip.errors import InputError
 from asymslip.laws.flat_rounded import FlatRoundedLaw
 from asymslip.laws.power import PowerLaw, shape_factor
-from asymslip.laws.roots import inverse_growth, invert_increasing
+from asymslip.laws.roots import growth_from, invert_increasing, load_difference
 from tests.accuracy.references import (
     flat_half_width_mp,
     flat_slope,
@@ -413,11 +413,14 @@ def test_inverse_of_a_cubic_with_secant_matches_numpy_roots(scale, offset, log_t
     assert abs(root - exact) <= 1e-12 * exact
 
 
-@pytest.mark.parametrize("relative_change", [1e-15, 1e-8, 0.5, 1.0, 1e3])
-def test_inverse_growth_of_a_square_root_law_is_accurate(relative_change):
+@pytest.mark.parametrize("relative_change", [1e-15, 1e-8, 0.01, 0.5, 1.0, 1e3])
+def test_growth_of_a_square_root_law_is_accurate_from_one_newton_correction(relative_change):
     P1 = 2.0
     dP = P1 * relative_change
-    growth = inverse_growth(np.sqrt, lambda a: 2 * a, P1, dP)  # a = sqrt(P), P' = 2a
+    load, slope = (lambda a: a * a), (lambda a: 2 * a)  # P = a^2: a = sqrt(P), P' = 2a
+    growth, found = growth_from(load, slope, lambda a, d: load_difference(slope, load, a, d),
+                                np.sqrt(P1), P1 + dP, dP)  # fmt: skip
     with mpmath.workdps(50):
         reference = mpmath.sqrt(mpmath.mpf(P1) + mpmath.mpf(dP)) - mpmath.sqrt(P1)
-    assert abs(growth - reference) < 2e-15 * reference
+    assert found
+    assert abs(growth - reference) < 4e-15 * reference

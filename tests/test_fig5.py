@@ -146,7 +146,7 @@ def test_csv_text_is_deterministic():
 def test_missing_matplotlib_names_the_plot_extra_and_writes_nothing(tmp_path, monkeypatch):
     monkeypatch.setitem(sys.modules, "matplotlib", None)
     monkeypatch.setitem(sys.modules, "matplotlib.figure", None)
-    with pytest.raises(ImportError, match=r"'plot' extra"):
+    with pytest.raises(InputError, match=r"'plot' extra"):
         write_fig5(tmp_path / "out")
     assert not (tmp_path / "out").exists()
 

@@ -68,6 +68,7 @@ from asymslip_gen.slip_displacement import slip_on_loading
 from asymslip_gen.tractions import (
     hertz_pressure,
     hertz_shear_traction_difference,
+    jaeger_ciavarella_traction_difference,
     shear_traction_difference,
 )
 from asymslip_gen.validity import (
@@ -104,6 +105,7 @@ __all__ = [
     "hertz_slip_zone_width_first_order",
     "hertz_stick_boundary_corrective_stick",
     "hertz_stick_boundary_exact",
+    "jaeger_ciavarella_traction_difference",
     "multiplier_growth_measure",
     "normal_edge_multiplier",
     "permanent_stick_load",

@@ -15,6 +15,7 @@ FloatArray = NDArray[numpy.float64] | numpy.float64
 __all__ = [
     "hertz_pressure",
     "hertz_shear_traction_difference",
+    "jaeger_ciavarella_traction_difference",
     "shear_traction_difference",
 ]
 
@@ -103,6 +104,38 @@ def hertz_shear_traction_difference(
         + tmp4 * numpy.sqrt(numpy.maximum(0, 4 * P1 * R * tmp1 * tmp2 - tmp0))
         + tmp4 * numpy.sqrt(numpy.maximum(0, 4 * R * tmp1 * tmp2 * (P1 + dP) - tmp0))
     )
+
+
+def jaeger_ciavarella_traction_difference(
+    p2: ArrayLike, p1: ArrayLike, p_K: ArrayLike, mu: ArrayLike
+) -> FloatArray:
+    """Exact q_diff = q2 - q1 of any symmetric contact without bulk tension.
+
+    mu (p2 + p1 - 2 p_K), the Jaeger-Ciavarella superposition behind (47), from the law's own
+    pressures at P2, P1 and P_K, each zero outside its contact: one expression for all three
+    ranges of (47).  Forward slip; for backward slip negate it (derivations/edge_symmetry.py).
+    Valid for eta = 0 and a symmetric contact.
+
+    Implements Eqs. (46), (47) of the paper; derived in ``derivations/section3_tractions.py``.
+
+    Parameters
+    ----------
+    p2 : array_like
+        Contact pressure p(x, P2) at load state 2, zero outside the contact [force/length^2].
+    p1 : array_like
+        Contact pressure p(x, P1) at load state 1, zero outside the contact [force/length^2].
+    p_K : array_like
+        Contact pressure p(x, P_K) at the load P_K of (33), zero outside its contact
+        [force/length^2].
+    mu : array_like
+        Coefficient of friction, mu > 0.
+
+    Returns
+    -------
+    ndarray or float64
+        q2 - q1 [force/length^2].
+    """
+    return mu * (p1 + p2 - 2 * p_K)
 
 
 def shear_traction_difference(

@@ -24,9 +24,9 @@ _EXPORTS = {
     "LoadCycle": ".cycle",
     "ModuleLaw": ".laws",
     "PowerLaw": ".laws",
-    "SlipZoneResult": ".edge_solution",
+    "SlipZoneResult": ".slip_zones",
     "TableLaw": ".laws",
-    "slip_zone": ".edge_solution",
+    "slip_zone": ".slip_zones",
 }
 
 __all__ = sorted(_EXPORTS)

@@ -7,27 +7,36 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .errors import as_float_array, positive, require
+from .errors import as_numbers
+from .rules import Verdict, check_changes, check_cycle_inputs
 
 FloatArray = NDArray[np.float64]
+FIELDS = ("P1", "Q1", "P2", "Q2", "sigma1", "sigma2")
 
 
 @dataclass(frozen=True, init=False)
 class LoadCycle:
     """Load states (P1, Q1, sigma1) and (P2, Q2, sigma2) joined by a straight line (2)-(3).
 
-    Attributes may be arrays (broadcast together) to describe many cycles at once.
+    Loads are per unit length of the contact (plane strain); any consistent units.  Attributes
+    may be arrays (broadcast together) to describe many cycles at once.
 
     Parameters
     ----------
     P1, P2
-        Normal loads per unit length at the two ends, 0 < P1 < P2.  The paper takes state 2 as
-        the one with the larger normal load; a cycle given the other way round must be entered
-        with its states swapped (the steady state does not depend on the direction of travel).
+        Normal loads at the two ends, 0 < P1 < P2.  The paper takes state 2 as the one with
+        the larger normal load; a cycle given the other way round must be entered with its
+        states swapped (the steady state does not depend on the direction of travel).
     Q1, Q2
-        Shear forces per unit length at the two ends.
+        Shear forces at the two ends.
     sigma1, sigma2
-        Differential bulk tensions at the two ends (default 0).
+        Differential bulk tensions at the two ends (default 0) [force/length^2].
+
+    Raises
+    ------
+    InputError
+        Naming the first element that breaks a rule of :mod:`asymslip.rules` (non-finite,
+        P1 <= 0, P2 <= P1, a change that overflows).
 
     Examples
     --------
@@ -42,23 +51,60 @@ class LoadCycle:
     Q2: FloatArray
     sigma1: FloatArray
     sigma2: FloatArray
+    #: True when the constructor checked the cycle's rules (and so every element passed them).
+    checked: bool
+    #: The broadcast shape of the six fields (() for one cycle).
+    shape: tuple[int, ...]
 
     def __init__(self, P1: ArrayLike, Q1: ArrayLike, P2: ArrayLike, Q2: ArrayLike,
-                 sigma1: ArrayLike = 0.0, sigma2: ArrayLike = 0.0) -> None:
-        values = {
-            "P1": positive("P1", P1),
-            "Q1": as_float_array("Q1", Q1),
-            "P2": positive("P2", P2),
-            "Q2": as_float_array("Q2", Q2),
-            "sigma1": as_float_array("sigma1", sigma1),
-            "sigma2": as_float_array("sigma2", sigma2),
-        }
-        require(values["P2"] > values["P1"], "P2",
-                "must exceed P1: state 2 is the state with the larger normal load "
-                "(swap the two states; for P2 == P1 the paper's analysis does not apply)",
-                values["P2"])
-        for name, value in values.items():
+                 sigma1: ArrayLike = 0.0, sigma2: ArrayLike = 0.0) -> None:  # fmt: skip
+        self._set(P1, Q1, P2, Q2, sigma1, sigma2)
+        self.verdict().raise_first()
+        object.__setattr__(self, "checked", True)
+
+    def _set(self, *loads: ArrayLike) -> None:
+        arrays = [as_numbers(name, value) for name, value in zip(FIELDS, loads, strict=True)]
+        for name, value in zip(FIELDS, arrays, strict=True):
             object.__setattr__(self, name, value)
+        shapes = [value.shape for value in arrays]
+        shape = () if not any(shapes) else np.broadcast_shapes(*shapes)
+        object.__setattr__(self, "shape", shape)
+
+    @classmethod
+    def unchecked(cls, P1: ArrayLike, Q1: ArrayLike, P2: ArrayLike, Q2: ArrayLike,
+                  sigma1: ArrayLike = 0.0, sigma2: ArrayLike = 0.0) -> LoadCycle:  # fmt: skip
+        """A cycle whose invalid elements are kept, to be marked per element by the core.
+
+        For many cycles at once (the sweep), where one bad row must not stop the others; see
+        :meth:`verdict`.
+        """
+        cycle = object.__new__(cls)
+        cycle._set(P1, Q1, P2, Q2, sigma1, sigma2)
+        object.__setattr__(cycle, "checked", False)
+        return cycle
+
+    def values(self) -> dict[str, FloatArray | float]:
+        """The six loads, broadcast to :attr:`shape` (Python floats for a single cycle)."""
+        if self.shape == ():
+            return {name: float(getattr(self, name)) for name in FIELDS}
+        return {name: np.broadcast_to(getattr(self, name), self.shape) for name in FIELDS}
+
+    def verdict(self, shape: tuple[int, ...] | None = None) -> Verdict:
+        """Each element checked against the cycle's rules (finite, ordered, no overflow)."""
+        shape = self.shape if shape is None else shape
+        verdict = Verdict(shape)
+        if shape == ():
+            values = self.values()  # Python floats: each check costs next to nothing
+        else:
+            values = {name: np.broadcast_to(getattr(self, name), shape) for name in FIELDS}
+        with np.errstate(all="ignore"):  # overflow and bad elements are what is checked here
+            check_cycle_inputs(verdict, values)
+            dQ, dsigma = values["Q2"] - values["Q1"], values["sigma2"] - values["sigma1"]
+            dP = values["P2"] - values["P1"]
+            if shape == () and dP == 0:  # a float division by zero raises; P_order reports it
+                dP = np.float64(0.0)
+            check_changes(verdict, dQ, dsigma, dQ / dP, dsigma / dP, values)
+        return verdict
 
     @property
     def dP(self) -> FloatArray:

@@ -9,29 +9,49 @@ from numpy.typing import ArrayLike, NDArray
 class InputError(ValueError):
     """Invalid input: the message names the parameter and the rule it broke."""
 
-    def __init__(self, parameter: str, rule: str, value: object | None = None) -> None:
+    def __init__(self, parameter: str, rule: str, value: object | None = None,
+                 where: str = "") -> None:  # fmt: skip
         self.parameter = parameter
         self.rule = rule
-        shown = "" if value is None else f" (got {value!r})"
-        super().__init__(f"{parameter}: {rule}{shown}")
+        self.value = value
+        self.where = where
+        got = [] if value is None else [f"got {value!r}"]
+        notes = "; ".join([*got, *([where] if where else [])])
+        super().__init__(f"{parameter}: {rule}" + (f" ({notes})" if notes else ""))
 
 
-def _first_offender(values: NDArray[np.float64], bad: NDArray[np.bool_]) -> object:
-    if values.ndim == 0:
-        return float(values)
-    index = int(np.flatnonzero(bad.ravel())[0])
-    return f"{float(values.ravel()[index])!r} at index {index}"
+def _first_offender(values: NDArray[np.float64], bad: NDArray[np.bool_]) -> tuple[object, str]:
+    """(the value to show, where it is) of the first bad element.
+
+    A non-finite value is not shown: the rule says what is wrong with it, and a message
+    should never print inf or nan as though it were a number.
+    """
+    index = int(np.flatnonzero(bad.ravel())[0]) if values.ndim else 0
+    value = float(values.ravel()[index]) if values.ndim else float(values)
+    where = f"at element {index}" if values.ndim else ""
+    return (value if np.isfinite(value) else None), where
+
+
+def as_numbers(parameter: str, value: ArrayLike) -> NDArray[np.float64]:
+    """Convert to a float64 array, refusing what is not a real number (not yet non-finite ones:
+    :mod:`asymslip.rules` checks those per element)."""
+    if type(value) is float or type(value) is int:  # the common case, without NumPy's checks
+        return np.asarray(float(value))
+    if isinstance(value, (str, bytes)) or np.iscomplexobj(value):
+        raise InputError(parameter, "must be a real number or an array of them", value)
+    try:
+        return np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError(parameter, "must be a real number or an array of them", value) from None
 
 
 def as_float_array(parameter: str, value: ArrayLike) -> NDArray[np.float64]:
     """Convert to a float64 array, refusing non-numbers and non-finite values."""
-    try:
-        array = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise InputError(parameter, "must be a real number or an array of them", value) from None
+    array = as_numbers(parameter, value)
     finite = np.isfinite(array)
     if not finite.all():
-        raise InputError(parameter, "must be finite", _first_offender(array, ~finite))
+        raise InputError(parameter, "must be finite (not inf or nan)",
+                         *_first_offender(array, ~finite))  # fmt: skip
     return array
 
 
@@ -40,7 +60,7 @@ def positive(parameter: str, value: ArrayLike) -> NDArray[np.float64]:
     array = as_float_array(parameter, value)
     bad = ~(array > 0)
     if bad.any():
-        raise InputError(parameter, "must be > 0", _first_offender(array, bad))
+        raise InputError(parameter, "must be > 0", *_first_offender(array, bad))
     return array
 
 
@@ -49,8 +69,8 @@ def require(condition: NDArray[np.bool_] | bool, parameter: str, rule: str,
     """Raise :class:`InputError` unless ``condition`` holds everywhere."""
     condition = np.asarray(condition)
     if not condition.all():
-        value = None
+        value, where = None, ""
         if shown is not None:
-            value = _first_offender(np.broadcast_to(np.asarray(shown, dtype=float),
-                                                    condition.shape), ~condition)
-        raise InputError(parameter, rule, value)
+            value, where = _first_offender(np.broadcast_to(np.asarray(shown, dtype=float),
+                                                           condition.shape), ~condition)
+        raise InputError(parameter, rule, value, where)

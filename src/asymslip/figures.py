@@ -11,27 +11,26 @@ matplotlib (the ``plot`` extra) is imported only when a PNG is drawn.
 
 from __future__ import annotations
 
+import difflib
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
 
-from asymslip_gen.corrective_slip import stick_boundary
-from asymslip_gen.edge_multipliers import shear_edge_multiplier_proportional
-from asymslip_gen.exact_solution import hertz_stick_boundary_exact, permanent_stick_load
-from asymslip_gen.hertz import (
-    hertz_half_width,
-    hertz_half_width_growth,
-    hertz_normal_edge_multiplier,
-)
-from asymslip_gen.tractions import hertz_shear_traction_difference, shear_traction_difference
-
+from .cycle import LoadCycle
 from .errors import InputError
+from .files.atomic import atomic_write
+from .laws.hertz import HertzLaw
+from .slip_zones import slip_zone
+from .tractions import traction_difference
 
 FloatArray = NDArray[np.float64]
 
-__all__ = ["FIG5_PARAMETERS", "Fig5Curves", "Fig5Parameters", "fig5_curves", "write_fig5"]
+__all__ = [
+    "FIG5_PARAMETERS", "Fig5Curves", "Fig5Parameters", "fig5_curves", "stale_fig5_lines",
+    "write_fig5",
+]  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -85,7 +84,10 @@ class Fig5Curves:
 
 
 def fig5_curves(intervals: int = FIG5_INTERVALS) -> Fig5Curves:
-    """Evaluate Fig. 5 on x = a2 k / intervals, k = 0 .. intervals - 1.
+    """Evaluate Fig. 5 on x = a2 k / intervals, k = 0 .. intervals - 1, through the API.
+
+    The same evaluation as ``asymslip traction``: :func:`asymslip.tractions.traction_difference`
+    with the paper's b (35) (= a(P_K), exact for Hertz) and with the consistent b (17).
 
     Parameters
     ----------
@@ -102,28 +104,23 @@ def fig5_curves(intervals: int = FIG5_INTERVALS) -> Fig5Curves:
     if intervals < 2:
         raise InputError("intervals", "must be >= 2", intervals)
     p = FIG5_PARAMETERS
-    a1 = hertz_half_width(p.P1, p.R, p.E_star)
-    # a2 from the growth keeps a2 - a1 exact, as the slip-zone formulas expect.
-    a2 = a1 + hertz_half_width_growth(p.P1, p.dP, p.R, p.E_star)
-    L_I1 = hertz_normal_edge_multiplier(p.P1, p.R, p.E_star)
-    L_I2 = hertz_normal_edge_multiplier(p.P1 + p.dP, p.R, p.E_star)
-    L_II1 = shear_edge_multiplier_proportional(p.lam, p.eta, a1, L_I1)
-    L_II2 = shear_edge_multiplier_proportional(p.lam, p.eta, a2, L_I2)
-    P_K = permanent_stick_load(p.P1, p.dP, p.lam, p.mu)
-    b_paper = hertz_stick_boundary_exact(p.P1, p.dP, p.lam, p.mu, p.R, p.E_star)
-    b_consistent = stick_boundary(p.mu, a1, a2, L_I1, L_I2, L_II1, L_II2)
-
-    x = a2 * (np.arange(intervals, dtype=np.float64) / intervals)
-    edge = (a1, a2, p.mu, L_I1, L_I2, L_II1, L_II2)
+    law = HertzLaw(R=p.R, E_star=p.E_star)
+    P2 = p.P1 + p.dP
+    cycle = LoadCycle(P1=p.P1, Q1=0.0, P2=P2, Q2=p.lam * p.dP, sigma1=0.0, sigma2=p.eta * p.dP)
+    summary = slip_zone(law, cycle, p.mu)
+    x = summary.a2 * (np.arange(intervals, dtype=np.float64) / intervals)
+    paper = traction_difference(law, cycle, p.mu, x, stick_boundary="exact")
+    consistent = traction_difference(law, cycle, p.mu, x, stick_boundary="consistent")
+    assert paper.q_diff_exact is not None  # Hertz has a pressure, and eta = 0
     return Fig5Curves(
         x=x,
-        exact=hertz_shear_traction_difference(x, p.P1, p.dP, P_K, p.mu, p.R, p.E_star),
-        asymptotic=shear_traction_difference(x, b_paper, *edge),
-        asymptotic_consistent=shear_traction_difference(x, b_consistent, *edge),
-        a1=float(a1),
-        a2=float(a2),
-        b_paper=float(b_paper),
-        b_consistent=float(b_consistent),
+        exact=np.array(paper.q_diff_exact),
+        asymptotic=np.array(paper.q_diff),
+        asymptotic_consistent=np.array(consistent.q_diff),
+        a1=float(summary.a1),
+        a2=float(summary.a2),
+        b_paper=paper.b,
+        b_consistent=consistent.b,
     )
 
 
@@ -148,20 +145,19 @@ def fig5_csv_text(curves: Fig5Curves) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _figure_class():
+def figure_class():
+    """matplotlib's Figure (no pyplot), or an InputError naming the extra that provides it."""
     try:
         from matplotlib.figure import Figure
-    except ImportError as error:
-        raise ImportError(
-            "drawing fig5.png needs matplotlib: install the 'plot' extra, "
-            "e.g. pip install 'asymslip[plot]'"
-        ) from error
+    except ImportError:
+        raise InputError("figure", "drawing a PNG needs matplotlib: install the 'plot' extra "
+                         "(pip install 'asymslip[plot]')") from None  # fmt: skip
     return Figure
 
 
 def _draw_fig5(curves: Fig5Curves, path: Path) -> None:
     # Figure without pyplot: no global backend state, no GUI.
-    figure = _figure_class()(figsize=(6.4, 4.4))
+    figure = figure_class()(figsize=(6.4, 4.4))
     axes = figure.add_subplot()
     axes.plot(curves.x, curves.exact, "-", color="tab:blue", label="exact (47)")
     axes.plot(
@@ -189,11 +185,14 @@ def _draw_fig5(curves: Fig5Curves, path: Path) -> None:
     )
     axes.legend(loc="upper left", frameon=False)
     figure.tight_layout()
-    figure.savefig(path, dpi=150, metadata={"Software": None})
+    with atomic_write(path, "out") as handle:
+        figure.savefig(handle, format="png", dpi=150, metadata={"Software": None})
 
 
 def write_fig5(directory: Path) -> list[Path]:
     """Write ``fig5.csv`` and ``fig5.png`` (the paper's Fig. 5) into ``directory``.
+
+    Each file is written beside its target and renamed when complete (never a truncated file).
 
     Parameters
     ----------
@@ -208,18 +207,30 @@ def write_fig5(directory: Path) -> list[Path]:
     Raises
     ------
     InputError
-        If ``directory`` exists and is not a folder.
-    ImportError
-        If matplotlib (the ``plot`` extra) is not installed; nothing is written then.
+        If ``directory`` exists and is not a folder, or matplotlib (the ``plot`` extra) is not
+        installed (checked before anything is written).
     """
     directory = Path(directory)
     if directory.exists() and not directory.is_dir():
-        raise InputError("directory", "must be a folder, not an existing file", str(directory))
-    _figure_class()  # fail before writing anything
+        raise InputError("out", "must be a folder, not an existing file", str(directory))
+    figure_class()  # fail before writing anything
     curves = fig5_curves()
     directory.mkdir(parents=True, exist_ok=True)
     csv_path = directory / "fig5.csv"
     png_path = directory / "fig5.png"
-    csv_path.write_text(fig5_csv_text(curves), encoding="utf-8", newline="\n")
+    with atomic_write(csv_path, "out", mode="w") as handle:
+        handle.write(fig5_csv_text(curves))
     _draw_fig5(curves, png_path)
     return [csv_path, png_path]
+
+
+def stale_fig5_lines(directory: Path) -> list[str]:
+    """A unified diff of the committed ``fig5.csv`` against what :func:`write_fig5` writes now.
+
+    Empty when fresh.  The PNG is not compared: its bytes depend on the matplotlib version.
+    """
+    committed = Path(directory) / "fig5.csv"
+    old = committed.read_text().splitlines(keepends=True) if committed.exists() else []
+    fresh = fig5_csv_text(fig5_curves()).splitlines(keepends=True)
+    return list(difflib.unified_diff(old, fresh, f"committed/{committed.name}",
+                                     "regenerated/fig5.csv"))  # fmt: skip

@@ -1,7 +1,16 @@
-"""Shear-traction difference q_diff = q2 - q1 near the right-hand edge (Section 3.4).
+"""Shear-traction difference q_diff = q2 - q1 and slip displacement near an edge (Section 3.4).
 
 The asymptotic (49) is evaluated in closed form (no quadrature); the exact (47) needs the
-law's pressure distribution and exists for eta = 0 and 0 < P_K.
+law's pressure distribution and exists for a symmetric law without bulk tension (eta = 0).
+
+(49) is an *edge* asymptote: it rests on the first terms (4)-(5) of the edge expansions of the
+pressure and the shear traction, whose first neglected terms are of relative size (a - x)/a
+(for Hertz, p = L_I sqrt(a - x) sqrt(1 - (a - x)/(2a)): relative error (a - x)/(4a)).  So each
+value is reported with ``near_edge``: True where the distance from the state-2 edge is at most
+:data:`NEAR_EDGE_FRACTION` of the half-width a2 (the paper's own "10 % of the distance in from
+the contact edge"), where the neglected terms are at most about a tenth of the leading one.
+Measured on the paper's Fig. 5: the error of (49) against (47) is 5.7 % at that limit
+(x = 0.9 a2) and 40 % at the centre.
 """
 
 from __future__ import annotations
@@ -12,50 +21,87 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike
 
-from asymslip_gen.tractions import shear_traction_difference
+from asymslip_gen.slip_displacement import slip_on_loading
+from asymslip_gen.tractions import jaeger_ciavarella_traction_difference, shear_traction_difference
 
 from .cycle import LoadCycle
-from .edge_solution import edge_quantities, slip_zone
-from .errors import InputError, as_float_array, require
+from .errors import InputError, as_float_array, positive, require
 from .laws.base import ContactLaw
+from .slip_zones import Evaluation, evaluate, warning_texts
 
 StickBoundaryChoice = Literal["consistent", "exact"]
+Side = Literal["right", "left"]
+
+#: Points within this fraction of a2 from the state-2 edge are "near the edge" (see above).
+NEAR_EDGE_FRACTION = 0.1
 
 
 @dataclass(frozen=True)
 class TractionResult:
-    """Shear-traction difference at the requested points; field names are the JSON keys."""
+    """Shear-traction difference at the requested points; field names are the JSON keys.
 
+    ``x`` is measured from the contact centre and ``q_diff`` is the traction component along
+    +x (the global frame, for either edge).  ``near_edge`` says,
+    for each point, whether it lies in the region where the edge asymptote (49) is meant to
+    hold: ``near_edge_from`` <= x (right edge) or x <= -``near_edge_from`` (left edge).
+    """
+
+    edge: str
     x: list[float]
     q_diff: list[float]
     q_diff_exact: list[float] | None
+    near_edge: list[bool]
+    near_edge_from: float
     b: float
     stick_boundary: str
+    warnings: list[str]
 
     def to_dict(self) -> dict[str, object]:
-        return {
-            "x": self.x,
-            "q_diff": self.q_diff,
-            "q_diff_exact": self.q_diff_exact,
-            "b": self.b,
-            "stick_boundary": self.stick_boundary,
-        }
+        return dict(self.__dict__)
 
 
-def exact_traction_difference(
-    law: ContactLaw, cycle: LoadCycle, mu: float, x: np.ndarray, P_K: float, direction: float
-) -> np.ndarray | None:
-    """(47): +-mu (p(x, P2) + p(x, P1) - 2 p(x, P_K)), or None where no exact solution exists.
+@dataclass(frozen=True)
+class SlipResult:
+    """Slip displacement on loading at the requested points; field names are the JSON keys."""
 
-    The sign is the direction of slip on loading (the reversal symmetry of edge_symmetry.py).
-    """
-    if float(cycle.eta) != 0.0 or P_K <= 0:
-        return None
-    try:
-        pressures = [law.pressure(x, P) for P in (cycle.P2, cycle.P1, P_K)]
-    except NotImplementedError:
-        return None
-    return direction * mu * (pressures[0] + pressures[1] - 2 * pressures[2])
+    edge: str
+    x: list[float]
+    slip: list[float]
+    b: float
+    warnings: list[str]
+
+    def to_dict(self) -> dict[str, object]:
+        return dict(self.__dict__)
+
+
+def _one_cycle(law: ContactLaw, cycle: LoadCycle, mu: float) -> Evaluation:
+    evaluation = evaluate(law, cycle, mu)
+    if evaluation.shape != ():
+        raise InputError("cycle", "tractions are computed for one cycle at a time")
+    evaluation.verdict.raise_first()
+    return evaluation
+
+
+def _edge_values(evaluation: Evaluation, edge: str) -> dict[str, float]:
+    if edge not in ("right", "left"):
+        raise InputError("edge", "must be 'right' or 'left'", edge)
+    values = {key: float(value) for key, value in evaluation.edges[edge].values.items()}
+    if values["slip_direction"] == 0:
+        raise InputError("cycle", f"the {edge} edge does not slip (|lam + pi eta a2/4| <= mu): "
+                         "the traction difference is that of full stick, not (49)")  # fmt: skip
+    return values
+
+
+def _positions(x: ArrayLike, edge: str, a2: float) -> tuple[np.ndarray, np.ndarray]:
+    """(the points as given, the points measured along the edge's outward direction)."""
+    points = as_float_array("x", x).ravel()
+    outward = points if edge == "right" else -points
+    edge_rule, far_rule = (f"must be < a2 = {a2:.12g}", f"must be > -a2 = {-a2:.12g}") \
+        if edge == "right" else (f"must be > -a2 = {-a2:.12g}", f"must be < a2 = {a2:.12g}")
+    require(outward < a2, "x", f"{edge_rule} (the {edge} state-2 edge: (49) is singular "
+            "there)", points)  # fmt: skip
+    require(outward > -a2, "x", f"{far_rule} (inside the contact)", points)
+    return points, outward
 
 
 def traction_difference(
@@ -65,19 +111,28 @@ def traction_difference(
     x: ArrayLike,
     *,
     stick_boundary: StickBoundaryChoice = "consistent",
+    edge: Side = "right",
 ) -> TractionResult:
-    """q2 - q1 at the right-hand edge, asymptotic (49) and exact (47).
+    """q2 - q1 near one edge: asymptotic (49) and, where it exists, exact (47).
 
     Parameters
     ----------
     law, cycle, mu
-        As for :func:`asymslip.slip_zone`.
+        As for :func:`asymslip.slip_zone` (one cycle).
     x
-        Positions measured from the contact centre, -a2 < x < a2.
+        Positions measured from the contact centre, inside the contact.
     stick_boundary
         ``"consistent"``: b from (17)/(22), for which the density (15) solves (12);
         ``"exact"``: b = a(P_K), the paper's choice for Fig. 5 (needs eta = 0), which adds the
         edge-singular term K (b - b17) / (2 sqrt(a2 - x)) to (49).
+    edge
+        ``"right"`` (the paper's) or ``"left"``.
+
+    Returns
+    -------
+    TractionResult
+        The values, whether each point is near the edge (where (49) is meant to hold), and
+        the cycle's warnings at that edge.
 
     Examples
     --------
@@ -86,37 +141,99 @@ def traction_difference(
     >>> round(result.q_diff_exact[0], 4)
     0.0281
     """
-    summary = slip_zone(law, cycle, mu, edge="right")
-    points = as_float_array("x", x).ravel()
-    require(points < summary.a2, "x", "must be < a2 (the state-2 contact edge): (49) is "
-            f"singular at x = a2 = {summary.a2:.12g}", points)  # fmt: skip
-    require(points > -summary.a2, "x", f"must be > -a2 = {-summary.a2:.12g} (inside the contact)",
-            points)  # fmt: skip
+    evaluation = _one_cycle(law, cycle, mu)
+    q = _edge_values(evaluation, edge)
+    points, outward = _positions(x, edge, q["a2"])
     if stick_boundary == "consistent":
-        b = summary.b
+        b = q["b"]
     elif stick_boundary == "exact":
-        if summary.b_exact is None:
+        if np.isnan(q["b_exact"]):
             raise InputError("b", "the exact stick boundary a(P_K) does not exist for this "
-                             "cycle (it needs eta = 0 and P_K > 0)")  # fmt: skip
-        b = summary.b_exact
+                             "cycle (it needs a symmetric law and eta = 0)")  # fmt: skip
+        b = q["b_exact"]
     else:
         raise InputError("b", "must be 'consistent' or 'exact'", stick_boundary)
-    q = {key: float(value) for key, value in edge_quantities(law, cycle, mu).items()}
-    direction = q["direction"]
-    if direction == 0:
-        raise InputError("b", "this edge does not slip (|lam + pi eta a2/4| <= mu): the "
-                         "traction difference is that of full stick, not (49)")  # fmt: skip
     # Backward slip is forward slip of the reversed loads, with q_diff negated (edge_symmetry).
+    direction = q["slip_direction"]
     asymptotic = direction * shear_traction_difference(
-        points, b, q["a1"], q["a2"], mu, q["L_I1"], q["L_I2"], direction * q["L_II1"],
+        outward, b, q["a1"], q["a2"], mu, q["L_I1"], q["L_I2"], direction * q["L_II1"],
         direction * q["L_II2"],
     )  # fmt: skip
-    exact = exact_traction_difference(law, cycle, mu, points, q["permanent_stick_load"],
-                                      direction)  # fmt: skip
+    exact = None
+    if not np.isnan(q["b_exact"]):
+        try:
+            pressures = [law.pressure(points, P)
+                         for P in (float(cycle.P2), float(cycle.P1), q["P_K"])]  # fmt: skip
+        except NotImplementedError:
+            pressures = None
+        if pressures is not None:
+            exact = direction * jaeger_ciavarella_traction_difference(*pressures, mu)
+    near_from = q["a2"] * (1 - NEAR_EDGE_FRACTION)
+    flags = int(evaluation.edges[edge].flags)
+    # The left edge is the right edge of the mirrored cycle: back in the global frame a
+    # traction along x changes sign.
+    global_sign = 1.0 if edge == "right" else -1.0
     return TractionResult(
+        edge=edge,
         x=points.tolist(),
-        q_diff=np.asarray(asymptotic, dtype=float).tolist(),
-        q_diff_exact=None if exact is None else np.asarray(exact, dtype=float).tolist(),
+        q_diff=(global_sign * np.asarray(asymptotic, dtype=float)).tolist(),
+        q_diff_exact=None if exact is None
+        else (global_sign * np.asarray(exact, dtype=float)).tolist(),
+        near_edge=(outward >= near_from).tolist(),
+        near_edge_from=near_from,
         b=float(b),
         stick_boundary=stick_boundary,
+        warnings=warning_texts(flags, law.for_edge(edge)),
+    )
+
+
+def slip_displacement(
+    law: ContactLaw,
+    cycle: LoadCycle,
+    mu: float,
+    x: ArrayLike,
+    *,
+    E_star: float | None = None,
+    edge: Side = "right",
+) -> SlipResult:
+    """Slip displacement accumulated on loading 1 -> 2 near one edge, from the density (15).
+
+    Sign convention: h(x) is the change, from state 1 to state 2, of the tangential
+    displacement of the body the shear tractions q act on, relative to the other body, in the
+    direction of x increasing.  Coulomb friction makes the traction resist the slip, so in a
+    slip zone h has the sign opposite to q2 - q1: forward slip at the right edge (q2 - q1 =
+    mu (p2 + p1) > 0) gives h < 0.  h = 0 in the stick zone; unloading takes the same slip
+    back, so |h| is the slip amplitude of the steady cycle (peak to peak).
+
+    Parameters
+    ----------
+    law, cycle, mu, edge
+        As for :func:`traction_difference`.
+    x
+        Positions measured from the contact centre, inside the contact.
+    E_star
+        Plane-strain modulus E* (the slip scales as 1/E*); taken from the law when it has one.
+    """
+    evaluation = _one_cycle(law, cycle, mu)
+    q = _edge_values(evaluation, edge)
+    if E_star is None:
+        E_star = getattr(law, "E_star", None)
+        if E_star is None:
+            raise InputError("E_star", f"is required for the slip displacement: the {law.name} "
+                             "law does not define the modulus E*")  # fmt: skip
+    E_star = float(positive("E_star", E_star))
+    points, outward = _positions(x, edge, q["a2"])
+    direction = q["slip_direction"]
+    # Along the edge's outward direction, then back to the global x (the left edge's outward
+    # direction is -x, which flips the sign of a displacement measured along x).
+    along = direction * slip_on_loading(outward, q["b"], q["a1"], mu, q["L_I1"], q["L_I2"],
+                                        direction * q["L_II1"], direction * q["L_II2"],
+                                        E_star)  # fmt: skip
+    global_sign = 1.0 if edge == "right" else -1.0
+    return SlipResult(
+        edge=edge,
+        x=points.tolist(),
+        slip=(global_sign * np.asarray(along, dtype=float)).tolist(),
+        b=q["b"],
+        warnings=warning_texts(int(evaluation.edges[edge].flags), law.for_edge(edge)),
     )

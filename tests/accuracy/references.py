@@ -694,6 +694,17 @@ register_quantity(Quantity(
     ("x=x_contact", "P1", "dP", "P_K", "mu", "R", "E_star"),
     exact_traction_difference_47, ("47", "48"), laws=("hertz",), where=_stick_zone_inside,
 ))  # fmt: skip
+def jaeger_ciavarella_47(p2, p1, p_K, mu):
+    """(47) in the three pressures, as the paper's piecewise form reads in every range."""
+    return mu * (p2 + p1 - 2 * p_K)
+
+
+# The general (47) is arithmetic on three pressures: any positive values exercise it, so the
+# problem's own positive quantities stand in for them.
+register_quantity(Quantity(
+    "tractions.jaeger_ciavarella_traction_difference", ("p2=L_I2", "p1=L_I1", "p_K=a1", "mu"),
+    jaeger_ciavarella_47, ("47",),
+))  # fmt: skip
 register_quantity(Quantity(
     "tractions.shear_traction_difference",
     ("x=x_contact", "b", "a1", "a2", "mu", "L_I1", "L_I2", "L_II1", "L_II2"),

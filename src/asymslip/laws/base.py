@@ -1,13 +1,20 @@
 """The contact-law interface: everything the paper's method needs from a contact.
 
 Section 2 needs only the law a(P) and the edge multiplier L_I of (19).  A law supplies P(a)
-and dP/da; the rest has sensible defaults that a law overrides where it knows better (a closed
-form inverse, a cancellation-free growth a(P1 + dP) - a(P1), a pressure distribution).
+and dP/da; the rest has defaults that a law overrides where it knows better (a closed-form
+inverse, a cancellation-free growth a(P1 + dP) - a(P1), a pressure distribution).
+
+A cycle asks its law once for everything it needs (:meth:`ContactLaw.cycle_state`): a1, a2,
+a2 - a1, L_I and the slopes at both states, shared by both edges and every estimate.  The
+default costs one root solve (a1), a few Newton steps from a tangent guess (a2) and one
+cancellation-free correction of a2 - a1 (see :func:`~asymslip.laws.roots.growth_from`).
 """
 
 from __future__ import annotations
 
 import abc
+from dataclasses import dataclass
+from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -15,8 +22,50 @@ from numpy.typing import ArrayLike, NDArray
 from asymslip_gen.edge_multipliers import normal_edge_multiplier
 
 from ..errors import InputError
+from .roots import (
+    growth_from,
+    invert_increasing_where_possible,
+    load_difference,
+    newton_from,
+)
 
 FloatArray = NDArray[np.float64]
+BoolArray = NDArray[np.bool_]
+Side = Literal["right", "left"]
+
+
+@dataclass(frozen=True)
+class LawState:
+    """The contact-law quantities of a load cycle, computed once per cycle.
+
+    All arrays broadcast to the cycles' shape.  ``found1``/``found2`` are False where the
+    law has no half-width carrying P1/P2 (a user law whose loads are bounded); the other
+    fields are NaN there.
+    """
+
+    P1: FloatArray
+    P2: FloatArray
+    a1: FloatArray
+    a2: FloatArray
+    da: FloatArray
+    L_I1: FloatArray
+    L_I2: FloatArray
+    load_slope1: FloatArray
+    load_slope2: FloatArray
+    L_I_slope1: FloatArray
+    L_I_slope2: FloatArray
+    found1: BoolArray | bool
+    found2: BoolArray | bool
+
+    @property
+    def a_slope1(self) -> FloatArray:
+        """a'(P1) = 1/(dP/da)."""
+        return 1.0 / self.load_slope1
+
+    @property
+    def a_slope2(self) -> FloatArray:
+        """a'(P2) = 1/(dP/da)."""
+        return 1.0 / self.load_slope2
 
 
 class ContactLaw(abc.ABC):
@@ -25,6 +74,7 @@ class ContactLaw(abc.ABC):
     #: Short name used by the command line (``--law NAME``) and in results.
     name: str = "contact law"
 
+    # --- what every law defines ------------------------------------------------------------
     @abc.abstractmethod
     def load(self, a: ArrayLike) -> FloatArray:
         """Normal load P(a) that gives contact half-width a."""
@@ -33,21 +83,63 @@ class ContactLaw(abc.ABC):
     def load_slope(self, a: ArrayLike) -> FloatArray:
         """dP/da of the law at half-width a; > 0 for an incomplete contact."""
 
+    # --- in terms of the half-width (no root solve) -----------------------------------------
+    def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+        """L_I of (19) at half-width a, given dP/da there."""
+        return normal_edge_multiplier(a, load_slope)
+
+    def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+        """dL_I/dP at half-width a: (dL_I/da)/(dP/da), by central differences in a.
+
+        Laws with a closed form override it; it only enters the validity measure (26).
+        """
+        a = np.asarray(a, dtype=np.float64)
+        step = 1e-5 * a
+        upper, lower = a + step, a - step
+        change = self.normal_multiplier_at(upper, self.load_slope(upper)) \
+            - self.normal_multiplier_at(lower, self.load_slope(lower))  # fmt: skip
+        return change / (2 * step) / np.asarray(load_slope, dtype=np.float64)
+
+    def load_difference(self, a: ArrayLike, d: ArrayLike) -> FloatArray:
+        """P(a + d) - P(a) without cancellation (see :func:`~.roots.load_difference`)."""
+        return load_difference(self.load_slope, self.load, a, d)
+
+    # --- in terms of the load ---------------------------------------------------------------
+    def half_width_where_possible(self, P: ArrayLike) -> tuple[FloatArray, BoolArray]:
+        """a(P), and a mask of the loads the law can carry (NaN elsewhere)."""
+        return invert_increasing_where_possible(self.load, np.asarray(P, dtype=np.float64),
+                                                self.load_slope)  # fmt: skip
+
     def half_width(self, P: ArrayLike) -> FloatArray:
         """Contact half-width a(P), the inverse of :meth:`load`."""
-        from .roots import invert_increasing
+        a, found = self.half_width_where_possible(P)
+        if not np.all(found):
+            loads = np.asarray(P, dtype=np.float64)
+            shown = float(loads.ravel()[int(np.flatnonzero(~np.asarray(found).ravel())[0])])
+            raise InputError("P", f"no contact half-width of the {self.name} law carries this "
+                             "load: it is outside the law's range", shown)  # fmt: skip
+        return a
 
-        return invert_increasing(self.load, np.asarray(P, dtype=np.float64), self.load_slope)
+    def half_width_near(self, P: ArrayLike, P_ref: ArrayLike, a_ref: ArrayLike) -> FloatArray:
+        """a(P) for loads near P_ref, where a(P_ref) = a_ref is known (e.g. a(P_K) from a1).
+
+        Newton from the tangent at a_ref, with the bracketing inverse where it does not settle.
+        """
+        P = np.asarray(P, dtype=np.float64)
+        a_ref = np.asarray(a_ref, dtype=np.float64)
+        with np.errstate(all="ignore"):
+            guess = a_ref + (P - P_ref) / self.load_slope(a_ref)
+        a, converged = newton_from(self.load, self.load_slope, P, guess)
+        if not np.all(converged):
+            a = np.array(a, dtype=float)
+            retry = ~np.asarray(converged)
+            a[retry] = self.half_width_where_possible(np.broadcast_to(P, a.shape)[retry])[0]
+            a = a[()] if a.ndim == 0 else a
+        return a
 
     def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:
-        """a(P1 + dP) - a(P1), as the integral of da/dP over (P1, P1 + dP).
-
-        A sum of positive terms, so it keeps full relative precision however small dP/P1 is;
-        laws with a closed form override it.
-        """
-        from .roots import inverse_growth
-
-        return inverse_growth(self.half_width, self.load_slope, P1, dP)
+        """a(P1 + dP) - a(P1), with full relative precision however small dP/P1 is."""
+        return self.cycle_state(P1, dP).da
 
     def half_width_slope(self, P: ArrayLike) -> FloatArray:
         """a'(P) = 1 / (dP/da)."""
@@ -56,29 +148,79 @@ class ContactLaw(abc.ABC):
     def normal_multiplier(self, P: ArrayLike) -> FloatArray:
         """Edge multiplier L_I of the contact pressure at load P, from (19)."""
         a = self.half_width(P)
-        return normal_edge_multiplier(a, self.load_slope(a))
+        return self.normal_multiplier_at(a, self.load_slope(a))
 
     def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
-        """dL_I/dP, for the validity measure (26); central differences unless overridden."""
-        P = np.asarray(P, dtype=np.float64)
-        step = 1e-5 * P
-        return (self.normal_multiplier(P + step) - self.normal_multiplier(P - step)) / (2 * step)
+        """dL_I/dP at load P."""
+        a = self.half_width(P)
+        return self.normal_multiplier_slope_at(a, self.load_slope(a))
+
+    def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
+        """Every law quantity a cycle from P1 to P1 + dP needs, computed once.
+
+        One root solve for a1; a2 - a1 by :func:`~.roots.growth_from` (Newton from a1 and one
+        cancellation-free correction); multipliers and slopes from the half-widths.  Loads the
+        law cannot carry are marked in ``found1``/``found2``, not raised.
+        """
+        P1 = np.asarray(P1, dtype=np.float64)
+        dP = np.asarray(dP, dtype=np.float64)
+        P1, dP = np.broadcast_arrays(P1, dP)
+        P2 = P1 + dP
+        a1, found1 = self.half_width_where_possible(P1)
+        with np.errstate(all="ignore"):
+            start = np.where(found1, a1, 1.0)
+            da, found2 = growth_from(self.load, self.load_slope, self.load_difference, start,
+                                     P2, dP)  # fmt: skip
+            found2 = found2 & found1
+            a2 = a1 + da
+        return self._state_from_half_widths(P1, P2, a1, a2, da, found1, found2)
+
+    def _state_from_half_widths(self, P1: FloatArray, P2: FloatArray, a1: FloatArray,
+                                a2: FloatArray, da: FloatArray, found1: BoolArray,
+                                found2: BoolArray) -> LawState:  # fmt: skip
+        """The multipliers and slopes at known half-widths (NaN where a load has no a)."""
+        with np.errstate(all="ignore"):  # unfound elements are NaN and marked, not warned
+            safe1, safe2 = np.where(found1, a1, 1.0), np.where(found2, a2, 1.0)
+            slope1, slope2 = self.load_slope(safe1), self.load_slope(safe2)
+            L_I1 = self.normal_multiplier_at(safe1, slope1)
+            L_I2 = self.normal_multiplier_at(safe2, slope2)
+            L_I_slope1 = self.normal_multiplier_slope_at(safe1, slope1)
+            L_I_slope2 = self.normal_multiplier_slope_at(safe2, slope2)
+
+        def mark(values: ArrayLike, found: BoolArray) -> FloatArray:
+            return np.where(found, values, np.nan)
+
+        return LawState(
+            P1=P1, P2=P2, a1=mark(a1, found1), a2=mark(a2, found2), da=mark(da, found2),
+            L_I1=mark(L_I1, found1), L_I2=mark(L_I2, found2),
+            load_slope1=mark(slope1, found1), load_slope2=mark(slope2, found2),
+            L_I_slope1=mark(L_I_slope1, found1), L_I_slope2=mark(L_I_slope2, found2),
+            found1=np.asarray(found1), found2=np.asarray(found2),
+        )  # fmt: skip
+
+    # --- the rest ------------------------------------------------------------------------------
+    def for_edge(self, side: Side) -> ContactLaw:
+        """The law of one edge: a symmetric contact has the same law at both."""
+        return self
+
+    @property
+    def symmetric(self) -> bool:
+        """True when both edges share one law (so a cycle's law quantities are shared)."""
+        return True
 
     def pressure(self, x: ArrayLike, P: ArrayLike) -> FloatArray:
         """Contact pressure p(x, P) over the whole contact (zero outside it)."""
         raise NotImplementedError(f"the {self.name} law has no pressure distribution")
 
-    def load_warnings(self, P1: float, P2: float) -> list[str]:
-        """Messages for load states where the law is extrapolated (default: none)."""
-        return []
+    def extrapolated(self, P: ArrayLike) -> BoolArray | bool:
+        """True where the law is extrapolated at load P (default: nowhere)."""
+        return np.zeros(P.shape, dtype=bool) if isinstance(P, np.ndarray) and P.ndim else False
 
-    def check_increasing(self, *half_widths: FloatArray) -> None:
-        """Refuse a law that is not increasing where it is used (dP/da <= 0)."""
-        for a in half_widths:
-            slope = self.load_slope(a)
-            if not np.all(slope > 0):
-                raise InputError(
-                    "law",
-                    f"the {self.name} contact law must be increasing (dP/da > 0) over the cycle",
-                    float(np.min(slope)),
-                )
+    def extrapolation_note(self, label: str) -> str:
+        """The warning for a load outside the range where the law is known (``label``: P1/P2)."""
+        return f"{label} lies outside the range where the {self.name} law is known"
+
+    def load_warnings(self, P1: float, P2: float) -> list[str]:
+        """Messages for the load states where the law is extrapolated."""
+        return [self.extrapolation_note(label) for label, P in (("P1", P1), ("P2", P2))
+                if bool(self.extrapolated(P))]  # fmt: skip

@@ -1,7 +1,7 @@
 """Flat punch with rounded corners: the law P(a), its inverse, multiplier and pressure.
 
 The formulas are generated from ``derivations/contact_law_flat_rounded.py`` (beyond the paper);
-a(P) has no closed form and is found by :func:`~asymslip.laws.roots.invert_increasing`.
+a(P) has no closed form and is found by Newton's method (:mod:`asymslip.laws.roots`).
 """
 
 from __future__ import annotations
@@ -21,8 +21,14 @@ from asymslip_gen.flat_rounded import (
 from asymslip_gen.hertz import hertz_half_width
 
 from ..errors import as_float_array, positive, require
-from .base import ContactLaw, FloatArray
-from .roots import inverse_growth, invert_increasing
+from .base import BoolArray, ContactLaw, FloatArray
+from .roots import (
+    GAUSS_NODES,
+    GAUSS_WEIGHTS,
+    QUADRATURE_LIMIT,
+    invert_increasing_where_possible,
+    newton_from,
+)
 
 
 @dataclass(frozen=True)
@@ -72,42 +78,79 @@ class FlatRoundedLaw(ContactLaw):
         """dP/da = E* a arccos(c/a) / R."""
         return flat_rounded_load_slope(a, self.c, self.R, self.E_star)
 
-    def half_width(self, P: ArrayLike) -> FloatArray:
-        """a(P) by safeguarded Newton on P(a), to within a few units in the last place.
+    def half_width_where_possible(self, P: ArrayLike) -> tuple[FloatArray, BoolArray]:
+        """a(P) by Newton on the convex P(a) from above, to a few units in the last place.
 
         The root is bracketed by max(c, a_H) <= a <= c + a_H with a_H = sqrt(4 P R/(pi E*)),
         the Hertz half-width: the rounded flat carries at most the cylinder's load at the same
-        half-width, and at least the load of the cylinder of half-width a - c.
+        half-width, and at least the load of the cylinder of half-width a - c.  P(a) is convex,
+        so Newton from the upper end converges monotonically; the bracketing inverse takes
+        over for the rare element that does not settle.  a - c grows like P^(2/3): below
+        P ~ 1e-23 E* c^2/R it is lost in the rounding of a, and such loads are not found.
         """
+        load = np.asarray(P, dtype=np.float64)
+        with np.errstate(over="ignore", invalid="ignore"):
+            hertz = hertz_half_width(load, self.R, self.E_star)
+            a, converged = newton_from(self.load, self.load_slope, load, self.c + hertz)
+        if not np.all(converged):
+            a = np.array(a, dtype=float)
+            retry = ~np.asarray(converged) & np.isfinite(hertz) & (load > 0)
+            if retry.any():
+                a[retry], _ = invert_increasing_where_possible(
+                    self.load, np.broadcast_to(load, a.shape)[retry], self.load_slope,
+                    lower=np.maximum(self.c, np.broadcast_to(hertz, a.shape)[retry]),
+                    upper=self.c + np.broadcast_to(hertz, a.shape)[retry],
+                )  # fmt: skip
+            a = a[()] if a.ndim == 0 else a
+        # a - c must be resolved: the nearest doubles to c can carry loads far above a tiny P.
+        with np.errstate(invalid="ignore"):
+            found = np.isfinite(a) & (a > self.c) & (np.abs(self.load(a) - load) <= 0.5 * load)
+        return np.where(found, a, np.nan)[()], found[()]
+
+    def half_width(self, P: ArrayLike) -> FloatArray:
+        """a(P), refusing a load too small to separate a from c in double precision."""
         load = positive("P", P)
-        hertz = hertz_half_width(load, self.R, self.E_star)
-        a = invert_increasing(
-            self.load, load, self.load_slope,
-            lower=np.maximum(self.c, hertz), upper=self.c + hertz,
-        )  # fmt: skip
-        # a - c grows like P^(2/3): below P ~ 1e-23 E* c^2/R it is lost in the rounding of a.
-        require(a > self.c, "P", "is too small: a(P) equals the flat half-width c in double "
+        a, found = self.half_width_where_possible(load)
+        require(found, "P", "is too small: a(P) equals the flat half-width c in double "
                 "precision (P R/(E* c^2) below about 1e-23)", load)  # fmt: skip
         return a
 
+    def load_difference(self, a: ArrayLike, d: ArrayLike) -> FloatArray:
+        """P(a + d) - P(a) without cancellation, also for a contact barely wider than the flat.
+
+        P'(a) = E* a arccos(c/a)/R has a branch point at a = c, which may lie much closer to
+        a than d; in u = sqrt(a - c) the integrand 2u P'(c + u^2) is analytic there (its
+        nearest singularities are at u^2 = -c and u^2 = -2c), so Gauss-Legendre in u is exact
+        to rounding for d <= a/4.  u2 - u1 = d/(u1 + u2), without cancellation.
+        """
+        a, d = np.broadcast_arrays(np.asarray(a, dtype=np.float64),
+                                   np.asarray(d, dtype=np.float64))  # fmt: skip
+        near = d <= QUADRATURE_LIMIT * a
+        out = np.empty(a.shape)
+        if near.any():
+            a_near, d_near = a[near], d[near]
+            u1 = np.sqrt(a_near - self.c)
+            u2 = np.sqrt(a_near + d_near - self.c)
+            du = d_near / (u1 + u2)
+            u = u1[:, None] + du[:, None] * GAUSS_NODES
+            integrand = 2 * u * self.load_slope(self.c + u * u)
+            out[near] = du * (integrand @ GAUSS_WEIGHTS)
+        if (~near).any():
+            out[~near] = self.load(a[~near] + d[~near]) - self.load(a[~near])
+        return out[()] if out.ndim == 0 else out
+
     def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:
-        """a(P1 + dP) - a(P1) as int dP/P'(a(P)): full relative precision for any dP/P1."""
+        """a(P1 + dP) - a(P1) with full relative precision for any dP/P1."""
         start = positive("P1", P1)
         change = as_float_array("dP", dP)
         require(change >= 0, "dP", "must be >= 0", change)
-        return inverse_growth(self.half_width, self.load_slope, start, change)
+        return self.cycle_state(start, change).da
 
-    def normal_multiplier(self, P: ArrayLike) -> FloatArray:
-        """L_I of (19) at load P."""
-        return flat_rounded_normal_edge_multiplier(
-            self.half_width(P), self.c, self.R, self.E_star
-        )
+    def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+        return flat_rounded_normal_edge_multiplier(a, self.c, self.R, self.E_star)
 
-    def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
-        """dL_I/dP at load P, in closed form."""
-        return flat_rounded_normal_edge_multiplier_slope(
-            self.half_width(P), self.c, self.R, self.E_star
-        )
+    def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+        return flat_rounded_normal_edge_multiplier_slope(a, self.c, self.R, self.E_star)
 
     def pressure(self, x: ArrayLike, P: ArrayLike) -> FloatArray:
         """Contact pressure p(x) at load P; zero for |x| >= a(P)."""

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
 from numpy.typing import ArrayLike
 
 from asymslip_gen.hertz import (
@@ -17,7 +18,7 @@ from asymslip_gen.hertz import (
 from asymslip_gen.tractions import hertz_pressure
 
 from ..errors import positive
-from .base import ContactLaw, FloatArray
+from .base import BoolArray, ContactLaw, FloatArray, LawState
 
 
 @dataclass(frozen=True)
@@ -48,8 +49,48 @@ class HertzLaw(ContactLaw):
     def half_width(self, P: ArrayLike) -> FloatArray:
         return hertz_half_width(P, self.R, self.E_star)
 
+    def half_width_where_possible(self, P: ArrayLike) -> tuple[FloatArray, BoolArray]:
+        with np.errstate(over="ignore"):  # a load beyond the double range: marked, not warned
+            a = hertz_half_width(P, self.R, self.E_star)
+        return a, np.asarray(np.isfinite(a))
+
+    def half_width_near(self, P: ArrayLike, P_ref: ArrayLike, a_ref: ArrayLike) -> FloatArray:
+        return hertz_half_width(P, self.R, self.E_star)
+
     def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:
         return hertz_half_width_growth(P1, dP, self.R, self.E_star)
+
+    def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
+        """Closed forms (29)-(31): no root solve, a2 - a1 without cancellation."""
+        scalar = isinstance(P1, float) and isinstance(dP, float)  # np.float64 included
+        if not scalar:
+            P1, dP = np.broadcast_arrays(np.asarray(P1, dtype=np.float64),
+                                         np.asarray(dP, dtype=np.float64))  # fmt: skip
+        R, E_star = self.R, self.E_star
+        with np.errstate(over="ignore"):  # overflow is marked by found1/found2, not warned
+            P2 = P1 + dP
+            a1 = hertz_half_width(P1, R, E_star)
+            da = hertz_half_width_growth(P1, dP, R, E_star)
+            a2 = a1 + da
+            L_I1 = hertz_normal_edge_multiplier(P1, R, E_star)
+            L_I2 = hertz_normal_edge_multiplier(P2, R, E_star)
+            # Every load P > 0 has a half-width; an overflow is caught by the finiteness rule.
+            found1 = True if scalar else np.ones(np.shape(a1), dtype=bool)
+            found2 = found1
+            return LawState(
+                P1=P1, P2=P2, a1=a1, a2=a2, da=da, L_I1=L_I1, L_I2=L_I2,
+                load_slope1=hertz_load_slope(a1, R, E_star),
+                load_slope2=hertz_load_slope(a2, R, E_star),
+                L_I_slope1=hertz_normal_edge_multiplier_slope(P1, R, E_star),
+                L_I_slope2=hertz_normal_edge_multiplier_slope(P2, R, E_star),
+                found1=found1, found2=found2,
+            )  # fmt: skip
+
+    def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+        return hertz_normal_edge_multiplier(self.load(a), self.R, self.E_star)
+
+    def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+        return hertz_normal_edge_multiplier_slope(self.load(a), self.R, self.E_star)
 
     def normal_multiplier(self, P: ArrayLike) -> FloatArray:
         return hertz_normal_edge_multiplier(P, self.R, self.E_star)

@@ -3,14 +3,13 @@
 The module defines ``load(a, *params)``, ``load_slope(a, *params)``,
 ``normal_edge_multiplier(a, *params)`` and optionally ``normal_edge_multiplier_slope(a,
 *params)`` (dL_I/dP), and describes itself in ``__asymslip_law__ = {"name": ..., "params":
-[...]}``.  a(P) is found by inverting the increasing P(a) (:func:`laws.roots.invert_increasing`).
+[...]}``.  a(P) is found by inverting the increasing P(a) (:mod:`asymslip.laws.roots`).
 """
 
 from __future__ import annotations
 
 import hashlib
 import importlib.util
-from collections import OrderedDict
 from collections.abc import Callable, Mapping
 from pathlib import Path
 from types import ModuleType
@@ -22,7 +21,6 @@ from ..errors import InputError, as_float_array
 from .base import ContactLaw, FloatArray
 
 REQUIRED_FUNCTIONS = ("load", "load_slope", "normal_edge_multiplier")
-_CACHE_SIZE = 4  # a(P) of the last few load arrays: one cycle asks for a(P1), a(P2) repeatedly
 
 
 def import_law_module(path: str | Path) -> ModuleType:
@@ -79,7 +77,6 @@ class ModuleLaw(ContactLaw):
         self.params = {name: float(as_float_array(name, param_values[name]))
                        for name in self.param_names}  # fmt: skip
         self._values = tuple(self.params.values())
-        self._half_widths: OrderedDict[tuple[tuple[int, ...], bytes], FloatArray] = OrderedDict()
 
     @classmethod
     def from_file(cls, path: str | Path, **param_values: float) -> ModuleLaw:
@@ -100,29 +97,13 @@ class ModuleLaw(ContactLaw):
     def load_slope(self, a: ArrayLike) -> FloatArray:
         return self._call(self.module.load_slope, a)
 
-    def half_width(self, P: ArrayLike) -> FloatArray:
-        """a(P) by inverting P(a); the last few results are kept (the inversion bisects)."""
-        P = np.asarray(P, dtype=np.float64)
-        key = (P.shape, P.tobytes())
-        if key in self._half_widths:
-            self._half_widths.move_to_end(key)
-            return self._half_widths[key]
-        a = super().half_width(P)
-        self._half_widths[key] = a
-        if len(self._half_widths) > _CACHE_SIZE:
-            self._half_widths.popitem(last=False)
-        return a
-
-    def half_width_slope(self, P: ArrayLike) -> FloatArray:
-        return 1.0 / self.load_slope(self.half_width(P))
-
-    def normal_multiplier(self, P: ArrayLike) -> FloatArray:
+    def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
         """L_I of (19), from the module's derived form."""
-        return self._call(self.module.normal_edge_multiplier, self.half_width(P))
+        return self._call(self.module.normal_edge_multiplier, a)
 
-    def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
+    def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
         """dL_I/dP from the module when it has it, else central differences."""
         function = getattr(self.module, "normal_edge_multiplier_slope", None)
         if function is None:
-            return super().normal_multiplier_slope(P)
-        return self._call(function, self.half_width(P))
+            return super().normal_multiplier_slope_at(a, load_slope)
+        return self._call(function, a)

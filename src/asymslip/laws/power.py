@@ -26,7 +26,7 @@ from asymslip_gen.power_law import (
 )
 
 from ..errors import as_float_array, positive, require
-from .base import ContactLaw, FloatArray
+from .base import BoolArray, ContactLaw, FloatArray, LawState
 
 #: Above this n, Gamma((n + 1)/2) overflows a double; use log-Gamma instead.
 _GAMMA_LIMIT = 300.0
@@ -115,6 +115,44 @@ class PowerLaw(ContactLaw):
         change = as_float_array("dP", dP)
         require(change >= 0, "dP", "must be >= 0", change)
         return power_law_half_width_growth(positive("P1", P1), change, *self._parameters)
+
+    def half_width_where_possible(self, P: ArrayLike) -> tuple[FloatArray, BoolArray]:
+        with np.errstate(over="ignore", under="ignore"):
+            a = power_law_half_width(P, *self._parameters)
+        return a, np.isfinite(a) & (a > 0)
+
+    def half_width_near(self, P: ArrayLike, P_ref: ArrayLike, a_ref: ArrayLike) -> FloatArray:
+        return power_law_half_width(P, *self._parameters)
+
+    def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
+        """Closed forms: a = (P/(K E* A))^(1/n); a2 - a1 = a1 expm1(log1p(dP/P1)/n)."""
+        P1, dP = np.broadcast_arrays(np.asarray(P1, dtype=np.float64),
+                                     np.asarray(dP, dtype=np.float64))  # fmt: skip
+        parameters = self._parameters
+        with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):
+            P2 = P1 + dP
+            a1 = power_law_half_width(P1, *parameters)
+            da = power_law_half_width_growth(P1, dP, *parameters)
+            a2 = a1 + da
+            L_I1 = power_law_normal_edge_multiplier(P1, *parameters)
+            L_I2 = power_law_normal_edge_multiplier(P2, *parameters)
+            # Every load P > 0 has a half-width; overflow is caught by the finiteness rule.
+            found1 = np.ones(np.shape(a1), dtype=bool)
+            found2 = found1
+            return LawState(
+                P1=P1, P2=P2, a1=a1, a2=a2, da=da, L_I1=L_I1, L_I2=L_I2,
+                load_slope1=power_law_load_slope(a1, *parameters),
+                load_slope2=power_law_load_slope(a2, *parameters),
+                L_I_slope1=power_law_normal_edge_multiplier_slope(P1, *parameters),
+                L_I_slope2=power_law_normal_edge_multiplier_slope(P2, *parameters),
+                found1=found1, found2=found2,
+            )  # fmt: skip
+
+    def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+        return power_law_normal_edge_multiplier(self.load(a), *self._parameters)
+
+    def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+        return power_law_normal_edge_multiplier_slope(self.load(a), *self._parameters)
 
     def normal_multiplier(self, P: ArrayLike) -> FloatArray:
         return power_law_normal_edge_multiplier(positive("P", P), *self._parameters)

@@ -56,7 +56,7 @@ from numpy.typing import ArrayLike, NDArray
 from asymslip_gen.edge_multipliers import normal_edge_multiplier
 
 from ..errors import InputError, as_float_array
-from .base import ContactLaw, FloatArray
+from .base import BoolArray, ContactLaw, FloatArray, LawState
 
 #: The columns a table file must have (header row, any order; other columns are ignored).
 COLUMNS = ("P", "a")
@@ -290,6 +290,54 @@ class TableLaw(ContactLaw):
         increment = self._curve.increment(u1, np.log1p(np.asarray(dP, dtype=np.float64) / P1))
         return np.exp(self._curve.evaluate(u1, 0)[0]) * np.expm1(increment)
 
+    def half_width_where_possible(self, P: ArrayLike) -> tuple[FloatArray, BoolArray]:
+        P = np.asarray(P, dtype=np.float64)
+        usable = np.isfinite(P) & (P > 0)
+        with np.errstate(all="ignore"):
+            a = self.half_width(np.where(usable, P, 1.0))
+        found = usable & np.isfinite(a)
+        return np.where(found, a, np.nan)[()], found[()]
+
+    def half_width_near(self, P: ArrayLike, P_ref: ArrayLike, a_ref: ArrayLike) -> FloatArray:
+        return self.half_width(P)
+
+    def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
+        """a, a' and L_I straight from the fitted curve: no root solve at all."""
+        P1, dP = np.broadcast_arrays(np.asarray(P1, dtype=np.float64),
+                                     np.asarray(dP, dtype=np.float64))  # fmt: skip
+        P2 = P1 + dP
+        with np.errstate(all="ignore"):
+            u1, u2 = np.log(P1), np.log(P2)
+            s1, ds1, d2s1 = self._curve.evaluate(u1, 2)
+            s2, ds2, d2s2 = self._curve.evaluate(u2, 2)
+            a1, a2 = np.exp(s1), np.exp(s2)
+            da = a1 * np.expm1(self._curve.increment(u1, np.log1p(dP / P1)))
+            slope1, slope2 = P1 / (a1 * ds1), P2 / (a2 * ds2)  # dP/da = 1/a'(P)
+            L_I1 = normal_edge_multiplier(a1, slope1)
+            L_I2 = normal_edge_multiplier(a2, slope2)
+            found1 = np.isfinite(a1) & np.isfinite(L_I1) & (P1 > 0)
+            found2 = found1 & np.isfinite(a2) & np.isfinite(L_I2) & np.isfinite(da)
+            return LawState(
+                P1=P1, P2=P2, a1=a1, a2=a1 + da, da=da, L_I1=L_I1, L_I2=L_I2,
+                load_slope1=slope1, load_slope2=slope2,
+                L_I_slope1=self._multiplier_slope(P1, L_I1, ds1, d2s1),
+                L_I_slope2=self._multiplier_slope(P2, L_I2, ds2, d2s2),
+                found1=found1, found2=found2,
+            )  # fmt: skip
+
+    @staticmethod
+    def _multiplier_slope(P: FloatArray, L_I: FloatArray, ds: FloatArray,
+                          d2s: FloatArray) -> FloatArray:  # fmt: skip
+        return L_I / P * (1 - 1.5 * ds - d2s / ds)
+
+    def extrapolated(self, P: ArrayLike) -> BoolArray:
+        return self.outside_range(P)
+
+    def extrapolation_note(self, label: str) -> str:
+        low, high = self.load_range
+        return (f"{label} is outside the table's loads [{low:.6g}, {high:.6g}] ({self.source}): "
+                "a(P) there is the end power law, extrapolated")  # fmt: skip
+
     def load(self, a: ArrayLike) -> FloatArray:
         """P(a), by inverting the fitted a(P) (bisection; the fit is strictly increasing)."""
         from .roots import invert_increasing
@@ -313,7 +361,7 @@ class TableLaw(ContactLaw):
         """
         P = np.asarray(P, dtype=np.float64)
         _, ds, d2s = self._log_half_width(P, 2)
-        return self.normal_multiplier(P) / P * (1 - 1.5 * ds - d2s / ds)
+        return self._multiplier_slope(P, self.normal_multiplier(P), ds, d2s)
 
     # --- range and error ------------------------------------------------------------------
     @property
@@ -325,19 +373,6 @@ class TableLaw(ContactLaw):
         """True where P lies outside the tabulated loads (the law is extrapolated there)."""
         P = np.asarray(P, dtype=np.float64)
         return (P < self.P[0]) | (P > self.P[-1])
-
-    def range_warning(self, label: str, P: float) -> str:
-        """The message for a load outside the table (see :meth:`load_warnings`)."""
-        low, high = self.load_range
-        return (
-            f"{label} = {P:.6g} is outside the table's loads [{low:.6g}, {high:.6g}] "
-            f"({self.source}): a(P) there is the end power law, extrapolated"
-        )
-
-    def load_warnings(self, P1: float, P2: float) -> list[str]:
-        """Messages for load states outside the table, for a result's ``warnings``."""
-        return [self.range_warning(label, float(P)) for label, P in (("P1", P1), ("P2", P2))
-                if self.outside_range(P)]  # fmt: skip
 
     @cached_property
     def refits(self) -> tuple[TableLaw, ...]:

@@ -1,0 +1,49 @@
+"""The ``asymslip`` command line: a thin layer over the Python API.
+
+Every command prints what the corresponding API call returns, so a notebook user and a shell
+user get the same numbers.  Bad input gives one line naming the option and the rule, and exit
+status 2; a missing optional dependency gives one line naming the extra to install.
+
+One module per command (``register`` adds its parser, ``run`` executes it); one registry of
+contact laws (:mod:`.laws`).
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Sequence
+
+from ..errors import InputError
+from . import derive, figure, slip_zone, sweep, traction
+from .laws import OPTION_OF
+from .parser import Parser
+
+COMMANDS = (slip_zone, traction, figure, derive, sweep)
+
+
+def build_parser() -> Parser:
+    parser = Parser(
+        prog="asymslip",
+        description="Steady-state partial slip at contact edges: slip-zone size, tractions, "
+        "slip and figures from the asymptotic corrective-slip solution (TAFM 2022, 103457).  "
+        "Loads are per unit length of contact; lengths and moduli in any consistent units.",
+    )
+    commands = parser.add_subparsers(dest="command", required=True, parser_class=Parser)
+    for command in COMMANDS:
+        command.register(commands)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args.run(args))
+    except InputError as error:
+        option = OPTION_OF.get(error.parameter, error.parameter)
+        message = str(error).removeprefix(f"{error.parameter}: ")
+        print(f"asymslip: error: {option}: {message}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("asymslip: interrupted; nothing partial was written", file=sys.stderr)
+        return 130

@@ -1,0 +1,51 @@
+"""``asymslip sweep``: the slip zone of every load cycle in a CSV file."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from ..errors import InputError, positive
+from .laws import add_law_options, build_law
+from .parser import number, whole_number
+
+
+def register(commands: argparse._SubParsersAction) -> None:
+    sweep = commands.add_parser(
+        "sweep",
+        help="slip zone of every load cycle in a CSV file",
+        description="One cycle per row (columns P1, Q1, P2, Q2; optional sigma1, sigma2, mu; "
+        "other columns are copied).  Writes every slip-zone quantity per row; a row that "
+        "breaks a rule gets its reason in the error column and the others go on.  Exit "
+        "status 1 when some rows were invalid.",
+    )
+    sweep.add_argument("cases", type=Path, metavar="CASES.csv", help="the load cycles")
+    add_law_options(sweep)
+    sweep.add_argument("--mu", type=number, help="coefficient of friction for rows without mu")
+    sweep.add_argument("--edge", choices=["right", "left", "both"], default="both",
+                       help="which edge (default both; left-edge columns are prefixed left_)")
+    sweep.add_argument("--out", required=True, type=Path, metavar="RESULTS.csv",
+                       help="the results, written when complete (a temporary file beside it "
+                       "until then)")
+    sweep.add_argument("--chunk-rows", dest="chunk_rows", type=whole_number, default=100_000,
+                       help="rows evaluated at once (default 100000)")
+    sweep.add_argument("--workers", type=whole_number, default=None,
+                       help="processes evaluating chunks at once (default: every CPU)")
+    sweep.set_defaults(run=run)  # fmt: skip
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..sweep import sweep_file
+
+    if args.chunk_rows < 1:
+        raise InputError("chunk_rows", "must be >= 1", args.chunk_rows)
+    if args.mu is not None:
+        positive("mu", args.mu)  # a bad default is one error, not one per row
+    law = build_law(args)
+    if args.workers is not None and args.workers < 1:
+        raise InputError("workers", "must be >= 1", args.workers)
+    summary = sweep_file(args.cases, law, args.out, mu=args.mu, edge=args.edge,
+                         chunk_rows=args.chunk_rows, workers=args.workers)  # fmt: skip
+    print(summary.report(), file=sys.stderr)
+    return 1 if summary.invalid else 0

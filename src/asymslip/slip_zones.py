@@ -1,0 +1,437 @@
+"""Steady-state slip zone at the contact edges: the paper's Section 2 on arrays of cycles.
+
+:func:`evaluate` is the one evaluation model behind the API, the tractions, the figures and
+the sweep.  It takes a law, cycles (a :class:`~asymslip.cycle.LoadCycle` whose fields may be
+arrays) and friction coefficients (broadcast together), and
+
+1. checks every element against the rules of :mod:`asymslip.rules`, marking each invalid
+   element with the first rule it breaks instead of raising on the first;
+2. asks the law once per cycle for everything the cycle needs
+   (:meth:`~asymslip.laws.base.ContactLaw.cycle_state`: a1, a2, a2 - a1, L_I and the slopes),
+   shared by both edges (for a symmetric law) and by every estimate;
+3. evaluates both edges -- always both, since a cycle is a steady partial-slip state only if
+   both edges are (their slip zones must not meet) -- with the generated kernels.
+
+:func:`slip_zone` wraps it for people: scalars in, scalars out, as NumPy does; invalid input
+raises :class:`~asymslip.errors.InputError` (or, with ``invalid="mark"``, comes back as NaN
+with its reason in ``errors``).  Warnings are kept as bit flags per element and turned into
+words only when asked, so that 10^6 cycles cost no 10^6 lists of strings.
+
+Edges and slip direction (``derivations/edge_symmetry.py``): the left edge is the right edge of
+the mirrored cycle (lam -> -lam, eta kept); backward slip is forward slip with
+(lam, eta) -> (-lam, -eta).  The paper's formulas are evaluated on these oriented slopes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import astuple, dataclass, field
+from typing import Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from asymslip_gen.corrective_slip import slip_zone_width, stick_boundary_denominator
+from asymslip_gen.corrective_stick import corrective_stick_slip_zone_width
+from asymslip_gen.edge_multipliers import shear_edge_multiplier_proportional
+from asymslip_gen.exact_solution import permanent_stick_load
+from asymslip_gen.validity import (
+    contact_growth_measure,
+    multiplier_growth_measure,
+    slip_zone_growth_measure,
+    stick_ratio_first_order,
+)
+
+from .cycle import LoadCycle
+from .errors import InputError, as_numbers
+from .laws.base import ContactLaw, LawState
+from .rules import Verdict, check_friction, check_partial_slip, finite
+
+FloatArray = NDArray[np.float64]
+Side = Literal["right", "left"]
+SIDES: tuple[Side, Side] = ("right", "left")
+
+#: A validity measure above this is reported in ``warnings`` ("<< 1" made concrete).
+VALIDITY_THRESHOLD = 0.1
+
+VALIDITY_MEANING = {
+    "eq24": "contact growth dP a'(P)/a1",
+    "eq25": "slip-zone size |b - a1|/a1",
+    "eq26": "edge-multiplier growth dP |L_I'(P)|/L_I1",
+    "eq27": "necessary condition dP a'(P)/a1 |1 - lam/mu - pi eta a1/(4 mu)| (0 where the edge "
+    "does not slip)",
+}
+
+#: The numeric fields of one edge's result, in JSON order (validity measures flattened).
+NUMBER_KEYS = (
+    "a1", "a2", "lam", "eta", "L_I1", "L_I2", "L_II1", "L_II2", "b", "slip_zone_width",
+    "b_first_order", "b_exact", "b_corrective_stick", "slip_direction",
+)  # fmt: skip
+MEASURE_KEYS = tuple(VALIDITY_MEANING)
+
+# --- warnings as flags --------------------------------------------------------------------------
+NO_SLIP = 1 << 0
+_MEASURE_FLAGS = {key: 1 << (1 + i) for i, key in enumerate(MEASURE_KEYS)}
+EXTRAPOLATED_P1 = 1 << 5
+EXTRAPOLATED_P2 = 1 << 6
+
+_NO_SLIP_TEXT = (
+    "no slip at this edge: |L_II2| <= mu L_I2 (|lam + pi eta a2/4| <= mu), so the edge sticks "
+    "wherever it is in contact; b = a1 and the slip-zone width is 0"
+)
+
+
+def warning_texts(flags: int, law: ContactLaw) -> list[str]:
+    """The warnings of one element, in words, from its flags."""
+    texts = []
+    if flags & NO_SLIP:
+        texts.append(_NO_SLIP_TEXT)
+    for key, bit in _MEASURE_FLAGS.items():
+        if flags & bit:
+            texts.append(f"{key} > {VALIDITY_THRESHOLD}: {VALIDITY_MEANING[key]} is not small, so "
+                         "the asymptotic solution is doubtful")  # fmt: skip
+    for bit, label in ((EXTRAPOLATED_P1, "P1"), (EXTRAPOLATED_P2, "P2")):
+        if flags & bit:
+            texts.append(law.extrapolation_note(label))
+    return texts
+
+
+# --- the evaluation -----------------------------------------------------------------------------
+@dataclass
+class EdgeValues:
+    """One edge, elementwise: every number of the result, and the warning flags."""
+
+    values: dict[str, FloatArray]
+    flags: NDArray[np.int64]
+
+
+@dataclass
+class Evaluation:
+    """Both edges of every cycle, with each element's verdict."""
+
+    law: ContactLaw
+    shape: tuple[int, ...]
+    verdict: Verdict
+    edges: dict[str, EdgeValues]
+
+
+#: (17)'s denominator counts as zero below this many units in the last place of its terms.
+_DENOMINATOR_TOLERANCE = 64 * float(np.finfo(float).eps)
+
+
+def _where(condition: ArrayLike, yes: ArrayLike, no: ArrayLike) -> ArrayLike:
+    """``numpy.where``, without its cost for a single cycle (plain Python then)."""
+    if isinstance(condition, (bool, np.bool_)):
+        return yes if condition else no
+    return np.where(condition, yes, no)
+
+
+def _maximum(first: ArrayLike, second: ArrayLike) -> ArrayLike:
+    """``numpy.maximum``, without its cost for a single cycle."""
+    if isinstance(first, float) and isinstance(second, float):  # np.float64 is a float
+        return first if first >= second else second
+    return np.maximum(first, second)
+
+
+def _is_array(value: object) -> bool:
+    return isinstance(value, np.ndarray) and value.ndim > 0
+
+
+def _slip_direction(mu: FloatArray, L_I2: FloatArray, L_II2: FloatArray) -> FloatArray:
+    """+1 (forward), -1 (backward) or 0 (no slip) on loading at an edge.
+
+    Next to the state-2 edge (a1 < x < a2) the state-1 traction is zero, so loading slips there
+    iff |L_II2| > mu L_I2 (derivations/edge_symmetry.py).
+    """
+    capacity = mu * L_I2
+    return 1.0 * (L_II2 > capacity) - 1.0 * (L_II2 < -capacity)
+
+
+def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta: FloatArray,
+          dP: FloatArray, verdict: Verdict, side: Side) -> EdgeValues:  # fmt: skip
+    a1, a2, da, L_I1, L_I2 = state.a1, state.a2, state.da, state.L_I1, state.L_I2
+    L_II1 = shear_edge_multiplier_proportional(lam, eta, a1, L_I1)
+    L_II2 = shear_edge_multiplier_proportional(lam, eta, a2, L_I2)
+    direction = _slip_direction(mu, L_I2, L_II2)
+    slips = direction != 0
+    orientation = _where(slips, direction, 1.0)
+    lam_o, eta_o = orientation * lam, orientation * eta
+    width = _where(slips, slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, L_I2), 0.0)
+    b = a1 - width
+    denominator = stick_boundary_denominator(mu, lam_o, eta_o, a1, a2, L_I1, L_I2)
+    worst_slope = _maximum(state.a_slope1, state.a_slope2)
+    worst_multiplier_slope = _maximum(abs(state.L_I_slope1), abs(state.L_I_slope2))
+    first_order = a1 * stick_ratio_first_order(mu, lam_o, eta_o, a1, dP, state.a_slope1)
+    stick_width = corrective_stick_slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, dP)
+    # Jaeger-Ciavarella: b = a(P_K) is exact for a symmetric law without bulk tension.
+    exact = (eta == 0) & law.symmetric
+    P_K = _where(slips, permanent_stick_load(state.P1, dP, lam_o, mu), state.P1)
+    if exact is True or (_is_array(exact) and exact.any()):
+        b_exact = _where(exact, law.half_width_near(_where(exact, P_K, state.P1), state.P1, a1),
+                         np.nan)  # fmt: skip
+    else:
+        b_exact = np.full(np.shape(a1), np.nan) if _is_array(a1) else np.nan
+    values = {
+        "a1": a1, "a2": a2, "lam": lam, "eta": eta, "L_I1": L_I1, "L_I2": L_I2,
+        "L_II1": L_II1, "L_II2": L_II2, "b": b, "slip_zone_width": width,
+        "b_first_order": _where(slips, first_order, a1),
+        "b_exact": b_exact,
+        "b_corrective_stick": _where(slips, a1 - stick_width, a1),
+        "slip_direction": direction,
+        "P_K": P_K,
+        "eq24": contact_growth_measure(dP, worst_slope, a1),
+        "eq25": abs(width) / a1,
+        "eq26": multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),
+        "eq27": _where(slips, slip_zone_growth_measure(mu, lam_o, eta_o, a1, dP, worst_slope),
+                       0.0),
+    }  # fmt: skip
+    # What the asymptotic solution can answer at this edge.
+    scale = 2 * mu * (L_I1 + L_I2) + abs(L_II1) + abs(L_II2)
+    tolerance = _DENOMINATOR_TOLERANCE * scale
+    verdict.require("denominator", ~slips | (denominator > tolerance) if not
+                    isinstance(slips, (bool, np.bool_)) else (not slips) or denominator > tolerance,
+                    mu, side=side, denominator=denominator)  # fmt: skip
+    verdict.require("b_range", (b > 0) & (b <= a2), None, side=side, b=b,
+                    eq25=values["eq25"], eq24=values["eq24"], eq27=values["eq27"])  # fmt: skip
+    total = b + values["slip_zone_width"] + values["b_first_order"] + \
+        values["b_corrective_stick"] + L_II1 + L_II2 + values["eq24"] + values["eq25"] + \
+        values["eq26"] + values["eq27"]  # fmt: skip
+    if not (finite(total).all() if _is_array(total) else finite(total)):
+        for key in ("b", "slip_zone_width", "b_first_order", "b_corrective_stick", "L_II1",
+                    "L_II2", *MEASURE_KEYS):  # fmt: skip
+            verdict.require("result_finite", finite(values[key]), None, side=side,
+                            law=law.name, quantity=key)  # fmt: skip
+    flags = _where(slips, 0, NO_SLIP)
+    for key, bit in _MEASURE_FLAGS.items():
+        flags = flags | _where(values[key] > VALIDITY_THRESHOLD, bit, 0)
+    flags = flags | _where(law.extrapolated(state.P1), EXTRAPOLATED_P1, 0)
+    flags = flags | _where(law.extrapolated(state.P2), EXTRAPOLATED_P2, 0)
+    return EdgeValues(values, flags)
+
+
+def _check_law(verdict: Verdict, state: LawState, name: str) -> None:
+    """The law at the cycle's loads: defined, finite, increasing."""
+    verdict.require("law_range_1", state.found1, state.P1, law=name)
+    verdict.require("law_range_2", state.found2, state.P2, law=name)
+    for number, quantities in (("1", (state.a1, state.L_I1, state.load_slope1)),
+                               ("2", (state.a2, state.da, state.L_I2, state.load_slope2))):
+        verdict.require(f"law_finite_{number}", finite(sum(quantities)),
+                        getattr(state, f"P{number}"), law=name)  # fmt: skip
+    slope = -_maximum(-state.load_slope1, -state.load_slope2)
+    verdict.require("law_increasing", slope > 0, slope, law=name, slope=slope)
+
+
+def evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> Evaluation:
+    """Both edges of every cycle, each element checked and marked, nothing raised.
+
+    Invalid elements are evaluated on harmless stand-in values (so that no NumPy warning is
+    raised) and their results are meaningless: look at ``verdict`` before using them.
+    """
+    with np.errstate(all="ignore"):  # what overflows is marked in the verdict, never warned
+        try:
+            return _evaluate(law, cycle, mu, float)
+        except (ZeroDivisionError, OverflowError):
+            # A single cycle runs on Python floats (fast), which raise where NumPy gives inf;
+            # such a cycle is evaluated again on NumPy scalars, so the rules see the infs.
+            return _evaluate(law, cycle, mu, np.float64)
+
+
+def _evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike,
+              scalar: type[float]) -> Evaluation:  # fmt: skip
+    mu = as_numbers("mu", mu)
+    shape = () if cycle.shape == () and mu.shape == () else \
+        np.broadcast_shapes(cycle.shape, mu.shape)  # fmt: skip
+    verdict = cycle.verdict(shape) if not cycle.checked or shape != cycle.shape \
+        else Verdict(shape)  # a checked cycle of this shape already passed its rules
+    if shape == ():
+        # One cycle: scalars through the kernels cost a fraction of 0-d arrays.
+        mu = scalar(mu)
+        values = {name: scalar(value) for name, value in cycle.values().items()}
+    else:
+        mu = np.broadcast_to(mu, shape)
+        values = {name: np.broadcast_to(value, shape) for name, value in cycle.values().items()}
+    check_friction(verdict, mu)
+    check_partial_slip(verdict, mu, values)
+    # Stand-in values where a rule is already broken: the law and the kernels see valid input.
+    P1, P2 = values["P1"], values["P2"]
+    dQ, dsigma = values["Q2"] - values["Q1"], values["sigma2"] - values["sigma1"]
+    if verdict.any_invalid:
+        ok = verdict.valid
+        P1, P2 = np.where(ok, P1, 1.0), np.where(ok, P2, 2.0)
+        dQ, dsigma = np.where(ok, dQ, 0.0), np.where(ok, dsigma, 0.0)
+        mu = np.where(ok, mu, 1.0)
+        if shape == ():
+            P1, P2, dQ, dsigma, mu = (scalar(v) for v in (P1, P2, dQ, dsigma, mu))
+    dP = P2 - P1
+    lam, eta = dQ / dP, dsigma / dP
+    states: dict[str, LawState] = {}
+    for side in SIDES if not law.symmetric else SIDES[:1]:
+        edge_law = law.for_edge(side)
+        state = edge_law.cycle_state(P1, dP)
+        if shape == ():  # NumPy scalars from here on, not 0-d arrays
+            state = LawState(*(scalar(value) for value in astuple(state)[:11]),
+                             bool(state.found1), bool(state.found2))  # fmt: skip
+        _check_law(verdict, state, edge_law.name)
+        states[side] = state
+    if law.symmetric:
+        states["left"] = states["right"]
+    edges: dict[str, EdgeValues] = {}
+    for side, sign in (("right", 1.0), ("left", -1.0)):
+        edges[side] = _edge(law.for_edge(side), states[side], mu, sign * lam, eta, dP,
+                            verdict, side)  # fmt: skip
+    b_sum = edges["right"].values["b"] + edges["left"].values["b"]
+    verdict.require("slip_zones_meet", b_sum > 0, None, b_sum=b_sum)
+    return Evaluation(law, shape, verdict, edges)
+
+
+# --- the result ----------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class SlipZoneResult:
+    """Everything `asymslip slip-zone` reports for one edge; field names are the JSON keys.
+
+    Fields are floats for one cycle and arrays for many.  Lengths are in the units of the
+    law's parameters.  ``b`` is measured from the contact centre along the edge's outward
+    direction (for the left edge, the distance of the left stick boundary from the centre).
+    ``b_exact`` is None (NaN in arrays) where no exact solution exists (eta != 0).
+    ``errors`` is None when every element is valid; with ``invalid="mark"`` it lists each
+    element's reason (None where valid) and the invalid elements' numbers are NaN.
+    """
+
+    a1: FloatArray | float
+    a2: FloatArray | float
+    lam: FloatArray | float
+    eta: FloatArray | float
+    L_I1: FloatArray | float
+    L_I2: FloatArray | float
+    L_II1: FloatArray | float
+    L_II2: FloatArray | float
+    b: FloatArray | float
+    slip_zone_width: FloatArray | float
+    b_first_order: FloatArray | float
+    b_exact: FloatArray | float | None
+    b_corrective_stick: FloatArray | float
+    slip_direction: FloatArray | float
+    validity: dict[str, FloatArray | float]
+    warning_flags: NDArray[np.int64] | int = field(repr=False)
+    law: ContactLaw = field(repr=False)
+    errors: list[str | None] | None = field(default=None, repr=False)
+    left: SlipZoneResult | None = None
+
+    @property
+    def warnings(self) -> list[str] | list[list[str]]:
+        """The warnings in words: a list for one cycle, a list of lists for many."""
+        if np.ndim(self.warning_flags) == 0:
+            return warning_texts(int(self.warning_flags), self.law)
+        return [warning_texts(int(flags), self.law)
+                for flags in np.ravel(self.warning_flags)]  # fmt: skip
+
+    def to_dict(self) -> dict[str, object]:
+        """The JSON object of one cycle: these keys, with ``left`` when both edges were asked."""
+        if np.ndim(self.a1):
+            raise InputError("cycle", "to_dict describes one cycle; this result holds many")
+        data: dict[str, object] = {key: getattr(self, key) for key in NUMBER_KEYS}
+        data["validity"] = dict(self.validity)
+        data["warnings"] = self.warnings
+        if self.left is not None:
+            data["left"] = self.left.to_dict()
+        return data
+
+
+def _edge_result(evaluation: Evaluation, side: str, scalar: bool,
+                 errors: list[str | None] | None) -> SlipZoneResult:  # fmt: skip
+    edge = evaluation.edges[side]
+    values = edge.values
+    if scalar:
+        numbers = {key: float(values[key]) for key in NUMBER_KEYS}
+        numbers["slip_direction"] = int(numbers["slip_direction"])
+        if numbers["b_exact"] != numbers["b_exact"]:  # NaN: no exact solution
+            numbers["b_exact"] = None
+        validity = {key: float(values[key]) for key in MEASURE_KEYS}
+        flags: NDArray[np.int64] | int = int(edge.flags)
+    else:
+        invalid = ~evaluation.verdict.valid
+        shape = evaluation.shape
+
+        def column(key: str) -> FloatArray:
+            value = np.broadcast_to(np.asarray(values[key], dtype=np.float64), shape)
+            return np.where(invalid, np.nan, value) if invalid.any() else np.array(value)
+
+        numbers = {key: column(key) for key in NUMBER_KEYS}
+        validity = {key: column(key) for key in MEASURE_KEYS}
+        flags = np.broadcast_to(np.asarray(edge.flags, dtype=np.int64), shape).copy()
+    return SlipZoneResult(
+        **numbers,
+        validity=validity,
+        warning_flags=flags,
+        law=evaluation.law.for_edge(side),  # type: ignore[arg-type]
+        errors=errors,
+    )  # fmt: skip
+
+
+def slip_zone(
+    law: ContactLaw,
+    cycle: LoadCycle,
+    mu: ArrayLike,
+    *,
+    edge: Literal["right", "left", "both"] = "right",
+    invalid: Literal["raise", "mark"] = "raise",
+) -> SlipZoneResult:
+    """Steady-state slip zone at the contact edges, for one cycle or arrays of them.
+
+    Parameters
+    ----------
+    law
+        The contact law, e.g. ``HertzLaw(R=1, E_star=1)``.
+    cycle
+        The load cycle (states 1 and 2, P2 > P1); its fields may be arrays.
+    mu
+        Coefficient of friction, > 0; broadcast against the cycle's fields.
+    edge
+        ``"right"`` (the paper's edge), ``"left"``, or ``"both"`` (right-edge fields at the
+        top level and the left edge's in ``.left``).  Both edges are checked in every case:
+        a cycle is a steady partial-slip state only if both are.
+    invalid
+        ``"raise"`` (default): an :class:`InputError` for the first invalid element, naming the
+        parameter, the rule and how many elements break one.  ``"mark"``: invalid elements
+        are NaN and ``result.errors`` gives each one's reason.
+
+    Returns
+    -------
+    SlipZoneResult
+        b from (22), the slip-zone width a1 - b (cancellation-free), b to first order (28),
+        the corrective-stick b (40), the exact b = a(P_K) of (33) when eta = 0, the slip
+        direction, the validity measures (24)-(27) and warnings.  Floats for one cycle,
+        arrays for many.
+
+    Raises
+    ------
+    InputError
+        Naming the parameter and the rule (see :mod:`asymslip.rules`): non-finite or
+        non-positive values, P2 <= P1, gross sliding at a state (|Q_i| >= mu P_i), a law that
+        cannot carry a load or is not increasing, no steady partial-slip state ((17) has a
+        non-positive denominator), a slip zone outside the contact, or the two edges' slip
+        zones meeting.
+
+    Examples
+    --------
+    >>> from asymslip import HertzLaw, LoadCycle, slip_zone
+    >>> result = slip_zone(HertzLaw(R=1, E_star=1), LoadCycle(100, 0, 105, 1), mu=0.1)
+    >>> round(result.slip_zone_width, 6)
+    0.141908
+    """
+    if edge not in ("right", "left", "both"):
+        raise InputError("edge", "must be 'right', 'left' or 'both'", edge)
+    if invalid not in ("raise", "mark"):
+        raise InputError("invalid", "must be 'raise' or 'mark'", invalid)
+    evaluation = evaluate(law, cycle, mu)
+    errors = None
+    if evaluation.verdict.any_invalid:
+        if invalid == "raise":
+            evaluation.verdict.raise_first()
+        errors = evaluation.verdict.messages()
+    scalar = evaluation.shape == ()
+    if edge == "left":
+        return _edge_result(evaluation, "left", scalar, errors)
+    right = _edge_result(evaluation, "right", scalar, errors)
+    if edge == "both":
+        object.__setattr__(right, "left", _edge_result(evaluation, "left", scalar, errors))
+    return right
