@@ -30,9 +30,9 @@ import sympy
 
 from asymslip.codegen import Argument, Derivation
 
-from _glossary import a, dP_da
-from contact_law_hertz import E_star, load_from_profile, x
-from section2_calibrations import normal_multiplier
+from ._glossary import a, dP_da
+from .contact_law_hertz import E_star, load_from_profile, x
+from .section2_calibrations import normal_multiplier
 
 c = sympy.Symbol("c", positive=True)  # flat half-width, > 0 while deriving
 # Emitted code allows c = 0 (a plain cylinder).  A separate symbol of the same name keeps

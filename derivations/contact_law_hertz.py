@@ -15,8 +15,8 @@ import sympy
 
 from asymslip.codegen import Argument, Derivation
 
-from _glossary import P1, a, dP, dP_da
-from section2_calibrations import normal_multiplier
+from ._glossary import P1, a, dP, dP_da
+from .section2_calibrations import normal_multiplier
 
 x = sympy.Symbol("x", real=True)
 R = sympy.Symbol("R", positive=True)

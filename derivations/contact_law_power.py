@@ -30,9 +30,9 @@ from sympy.codegen.cfunctions import expm1, log1p
 
 from asymslip.codegen import Argument, Derivation
 
-from _glossary import P1, a, dP, dP_da
-from contact_law_hertz import E_star, P, R, hertz_load, load_from_profile, x
-from section2_calibrations import normal_multiplier
+from ._glossary import P1, a, dP, dP_da
+from .contact_law_hertz import E_star, P, R, hertz_load, load_from_profile, x
+from .section2_calibrations import normal_multiplier
 
 n = sympy.Symbol("n", positive=True)
 A = sympy.Symbol("A", positive=True)

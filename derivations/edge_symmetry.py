@@ -21,8 +21,8 @@ import sympy
 
 from asymslip.codegen import Derivation
 
-from _glossary import L_I1, L_I2, L_II1, L_II2, mu
-from section2_integral_equation import dislocations_12, edge1, edge2, integral_equation, q1
+from ._glossary import L_I1, L_I2, L_II1, L_II2, mu
+from .section2_integral_equation import dislocations_12, edge1, edge2, integral_equation, q1
 
 x, c = sympy.symbols("x c", real=True)
 Q, sigma = sympy.symbols("Q sigma", real=True)

@@ -11,10 +11,10 @@ import sympy
 
 from asymslip.codegen import Derivation
 
-from _glossary import L_I1, L_I2, L_II1, L_II2, P1, a1, a2, b, dP, lam, mu, x
-from contact_law_hertz import E_star, P, R, hertz_half_width, hertz_multiplier
-from section3_exact_solution import permanent_stick_load
-from section3_tractions import P_K, hertz_traction_difference, traction_difference
+from ._glossary import L_I1, L_I2, L_II1, L_II2, P1, a1, a2, b, dP, lam, mu, x
+from .contact_law_hertz import E_star, P, R, hertz_half_width, hertz_multiplier
+from .section3_exact_solution import permanent_stick_load
+from .section3_tractions import P_K, hertz_traction_difference, traction_difference
 
 FIG5 = {R: 1, E_star: 1, mu: sympy.Rational(1, 10), lam: sympy.Rational(1, 5), P1: 100, dP: 5}
 

@@ -24,7 +24,7 @@ import sympy
 
 from asymslip.codegen import Argument, Derivation
 
-from _glossary import (
+from ._glossary import (
     L_I1,
     L_I2,
     P1,
@@ -40,9 +40,9 @@ from _glossary import (
     lam,
     mu,
 )
-from section2_calibrations import normal_multiplier, stick_boundary_proportional
-from section2_validity import first_order_stick_ratio
-from section3_exact_solution import permanent_stick_load
+from .section2_calibrations import normal_multiplier, stick_boundary_proportional
+from .section2_validity import first_order_stick_ratio
+from .section3_exact_solution import permanent_stick_load
 
 load = sympy.Symbol("P", positive=True)
 step = sympy.Symbol("h", real=True)  # P - P1

@@ -18,7 +18,7 @@ import sympy
 
 from asymslip.codegen import Derivation
 
-from _glossary import (
+from ._glossary import (
     L_I,
     L_I1,
     L_I2,
@@ -36,7 +36,7 @@ from _glossary import (
     lam,
     mu,
 )
-from section2_consistency import (
+from .section2_consistency import (
     coefficient1,
     coefficient2,
     load_coefficients,

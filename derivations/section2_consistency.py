@@ -13,8 +13,8 @@ import sympy
 
 from asymslip.codegen import Derivation
 
-from _glossary import L_I1, L_I2, L_II1, L_II2, a1, a2, arguments, b, mu
-from section2_hilbert_identity import beta, weight_integral
+from ._glossary import L_I1, L_I2, L_II1, L_II2, a1, a2, arguments, b, mu
+from .section2_hilbert_identity import beta, weight_integral
 
 
 def scaled_weight_integral(lower: sympy.Expr, top: sympy.Expr) -> sympy.Expr:

@@ -16,9 +16,9 @@ import sympy
 
 from asymslip.codegen import Derivation
 
-from _glossary import L_I1, L_I2, L_II1, L_II2, E_star, a1, a2, arguments, b, mu, x
-from section2_consistency import stick_boundary
-from section2_hilbert_identity import hilbert_on_interval
+from ._glossary import L_I1, L_I2, L_II1, L_II2, E_star, a1, a2, arguments, b, mu, x
+from .section2_consistency import stick_boundary
+from .section2_hilbert_identity import hilbert_on_interval
 
 # Positive distances that put x inside each piece of the slip zone.
 beyond_b, beyond_a1 = sympy.symbols("r s", positive=True)

@@ -14,7 +14,7 @@ import sympy
 
 from asymslip.codegen import Derivation
 
-from _glossary import L_I1, L_I2, L_II1, L_II2, mu
+from ._glossary import L_I1, L_I2, L_II1, L_II2, mu
 
 # sqrt(a2 - x) and H(a1 - x) sqrt(a1 - x) as opaque, non-negative shape functions.
 edge2 = sympy.Symbol("s_2", nonnegative=True)

@@ -12,7 +12,7 @@ import sympy
 
 from asymslip.codegen import Derivation
 
-from _glossary import (
+from ._glossary import (
     L_I1,
     L_I2,
     P1,
@@ -27,7 +27,7 @@ from _glossary import (
     lam,
     mu,
 )
-from section2_calibrations import slip_zone_width, stick_boundary_proportional
+from .section2_calibrations import slip_zone_width, stick_boundary_proportional
 
 law = sympy.Function("a")  # contact half-width as a function of load
 multiplier = sympy.Function("L_I")  # normal edge multiplier as a function of load

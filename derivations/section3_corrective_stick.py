@@ -22,8 +22,8 @@ import sympy
 
 from asymslip.codegen import Argument, Derivation
 
-from _glossary import L_I, L_I1, P1, a, a1, a2, arguments, da, dP, eta, lam, mu
-from contact_law_hertz import (
+from ._glossary import L_I, L_I1, P1, a, a1, a2, arguments, da, dP, eta, lam, mu
+from .contact_law_hertz import (
     LOAD1,
     LOAD_CHANGE,
     MODULUS,
@@ -36,7 +36,7 @@ from contact_law_hertz import (
     hertz_load,
     hertz_multiplier,
 )
-from section3_exact_solution import eps, exact_stick_ratio_series
+from .section3_exact_solution import eps, exact_stick_ratio_series
 
 Q, Q1, sigma, sigma1 = sympy.symbols("Q Q1 sigma sigma1", real=True)
 x = sympy.Symbol("x", real=True)

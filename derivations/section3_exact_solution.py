@@ -25,8 +25,8 @@ import sympy
 
 from asymslip.codegen import Argument, Derivation
 
-from _glossary import P1, dP, lam, mu
-from contact_law_hertz import LOAD1, LOAD_CHANGE, MODULUS, RADIUS, E_star, P, R, hertz_half_width
+from ._glossary import P1, dP, lam, mu
+from .contact_law_hertz import LOAD1, LOAD_CHANGE, MODULUS, RADIUS, E_star, P, R, hertz_half_width
 
 # End points of the load path in (P, Q)-space, for (33)-(34) in the paper's own variables.
 P2 = sympy.Symbol("P2", positive=True)

@@ -22,8 +22,8 @@ import sympy
 
 from asymslip.codegen import Argument, Derivation
 
-from _glossary import L_I1, L_I2, P1, a1, a2, da_dP, dP, eta, lam, mu
-from contact_law_hertz import (
+from ._glossary import L_I1, L_I2, P1, a1, a2, da_dP, dP, eta, lam, mu
+from .contact_law_hertz import (
     LOAD1,
     LOAD_CHANGE,
     MODULUS,
@@ -32,10 +32,10 @@ from contact_law_hertz import (
     hertz_half_width,
     hertz_multiplier,
 )
-from section2_calibrations import stick_boundary_proportional
-from section2_validity import first_order_slip_zone_width, first_order_stick_ratio
-from section3_corrective_stick import hertz_stick_ratio_series
-from section3_exact_solution import eps, exact_stick_ratio_series
+from .section2_calibrations import stick_boundary_proportional
+from .section2_validity import first_order_slip_zone_width, first_order_stick_ratio
+from .section3_corrective_stick import hertz_stick_ratio_series
+from .section3_exact_solution import eps, exact_stick_ratio_series
 
 ORDER = 3  # expansions through eps**3
 # lam/mu and dP/P1 as the report writes them, for the readable formulas

@@ -17,9 +17,9 @@ import sympy
 
 from asymslip.codegen import Derivation
 
-from _glossary import L_I1, L_I2, L_II1, L_II2, E_star, a1, arguments, b, mu, x
-from section2_dislocation_density import dislocation_density, example_cycle
-from section3_tractions import density_pieces
+from ._glossary import L_I1, L_I2, L_II1, L_II2, E_star, a1, arguments, b, mu, x
+from .section2_dislocation_density import dislocation_density, example_cycle
+from .section3_tractions import density_pieces
 
 t = sympy.Symbol("t", real=True)
 beyond = sympy.Symbol("g", positive=True)  # x - c > 0

@@ -25,8 +25,8 @@ import sympy
 
 from asymslip.codegen import Argument, Derivation
 
-from _glossary import L_I1, L_I2, L_II1, L_II2, P1, a, a1, a2, arguments, b, dP, mu, x
-from contact_law_hertz import (
+from ._glossary import L_I1, L_I2, L_II1, L_II2, P1, a, a1, a2, arguments, b, dP, mu, x
+from .contact_law_hertz import (
     LOAD,
     LOAD1,
     LOAD_CHANGE,
@@ -37,9 +37,9 @@ from contact_law_hertz import (
     hertz_half_width,
     hertz_load,
 )
-from section2_consistency import scaled_weight_integral, stick_boundary
-from section2_dislocation_density import EXAMPLE_CYCLE, dislocation_density
-from section2_hilbert_identity import hilbert_on_interval
+from .section2_consistency import scaled_weight_integral, stick_boundary
+from .section2_dislocation_density import EXAMPLE_CYCLE, dislocation_density
+from .section2_hilbert_identity import hilbert_on_interval
 
 P_K = sympy.Symbol("P_K", positive=True)
 PERMANENT_STICK_LOAD = Argument(

@@ -2,13 +2,21 @@
 
 from __future__ import annotations
 
+import sys
+import textwrap
+from pathlib import Path
+
 import numpy as np
 import pytest
 import sympy
 
 from asymslip.codegen import Argument, Formula
 from asymslip.codegen.emit import format_source, render_module
+from asymslip.codegen.loader import DERIVATIONS_PACKAGE, import_derivation
 from asymslip.codegen.printer import GeneratedCodePrinter
+from asymslip.codegen.runner import run_derivations
+
+ROOT = Path(__file__).resolve().parents[1]
 
 x, a, b = sympy.symbols("x a b", positive=True)
 ARGS = (Argument(x, "position"), Argument(a, "half-width"))
@@ -66,3 +74,61 @@ def test_rendering_is_byte_identical_on_repetition():
     first = format_source(render_module("demo", "Demo.", [_formula(expr)]))
     second = format_source(render_module("demo", "Demo.", [_formula(expr)]))
     assert first == second
+
+
+def _write_tiny_derivations(folder):
+    """Two scripts, the second importing a building block of the first relatively."""
+    folder.mkdir()
+    (folder / "_symbols.py").write_text("import sympy\n\nx = sympy.Symbol('x', positive=True)\n")
+    (folder / "first.py").write_text(textwrap.dedent("""
+        from asymslip.codegen import Derivation
+
+        from ._symbols import x
+
+
+        def square():
+            return x**2
+
+
+        def derive():
+            return Derivation(__file__)
+    """))
+    (folder / "second.py").write_text(textwrap.dedent("""
+        from asymslip.codegen import Argument, Derivation
+
+        from ._symbols import x
+        from .first import square
+
+
+        def derive():
+            d = Derivation(__file__)
+            d.describe_module("tiny", "Tiny.")
+            d.emit(name="square", args=(Argument(x, "x > 0."),), expr=square(),
+                   equations=("1",), summary="x^2.", doc="Square.", module="tiny")
+            return d
+    """))
+
+
+def test_derivations_load_as_a_package_with_relative_imports_and_no_sys_path_entry(tmp_path):
+    folder = tmp_path / "derivations"
+    _write_tiny_derivations(folder)
+    path_before = list(sys.path)
+    run = run_derivations(folder, progress=False)
+    assert sys.path == path_before
+    assert [formula.name for formula in run.formulas] == ["square"]
+    assert run.formulas[0].source == "derivations/second.py"
+    assert sys.modules[DERIVATIONS_PACKAGE].__path__ == [str(folder.resolve())]
+
+
+def test_a_script_importing_a_neighbour_by_plain_name_fails(tmp_path):
+    folder = tmp_path / "derivations"
+    _write_tiny_derivations(folder)
+    (folder / "third.py").write_text("from _symbols import x\n\n\ndef derive():\n    pass\n")
+    with pytest.raises(ModuleNotFoundError, match="_symbols"):
+        run_derivations(folder, progress=False)
+
+
+def test_the_repository_derivations_import_each_other_relatively():
+    glossary = import_derivation(ROOT / "derivations", "_glossary")
+    assert glossary.__name__ == f"{DERIVATIONS_PACKAGE}._glossary"
+    assert str(ROOT / "derivations") not in sys.path

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import keyword
 import re
-import sys
 import textwrap
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -45,11 +44,9 @@ def _derivations_folder() -> Path:
 
 def parse_law(text: str, params: Sequence[str]) -> tuple[Any, Any, list[Any]]:
     """(P(a) as a SymPy expression, the symbol a, the parameter symbols) from screened text."""
-    sys.path.insert(0, str(_derivations_folder()))
-    try:
-        from _glossary import a  # the half-width symbol (19) is derived with
-    finally:
-        sys.path.pop(0)
+    from .codegen.loader import import_derivation
+
+    a = import_derivation(_derivations_folder(), "_glossary").a  # the symbol (19) is in
     expr, symbols = parse_formula(text, a, params, option="P_of_a")
     return expr, a, symbols
 
@@ -62,12 +59,11 @@ def derive_law(text: str, params: Sequence[str]) -> dict[str, Any]:
     """
     load, a, symbols = parse_law(text, params)
     sympy = _sympy()
-    sys.path.insert(0, str(_derivations_folder()))
-    try:
-        from _glossary import dP_da
-        from section2_calibrations import normal_multiplier
-    finally:
-        sys.path.pop(0)
+    from .codegen.loader import import_derivation
+
+    dP_da = import_derivation(_derivations_folder(), "_glossary").dP_da
+    calibrations = import_derivation(_derivations_folder(), "section2_calibrations")
+    normal_multiplier = calibrations.normal_multiplier
     slope = sympy.diff(load, a)
     if sympy.simplify(slope) == 0:
         raise InputError("P_of_a", "does not depend on a (dP/da is identically zero); a "

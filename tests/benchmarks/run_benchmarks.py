@@ -145,10 +145,10 @@ def hand_slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2):
 
 @cache
 def _emitted_formulas() -> dict[str, object]:
-    if str(DERIVATIONS) not in sys.path:
-        sys.path.insert(0, str(DERIVATIONS))
-    import section2_calibrations  # the script that emits both functions of section (a)
+    from asymslip.codegen.loader import import_derivation
 
+    # The script that emits both functions of section (a).
+    section2_calibrations = import_derivation(DERIVATIONS, "section2_calibrations")
     return {formula.name: formula for formula in section2_calibrations.derive().formulas}
 
 

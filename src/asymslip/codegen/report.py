@@ -15,7 +15,6 @@ and its bytes must not depend on ``PYTHONHASHSEED`` (records keep the scripts' f
 
 from __future__ import annotations
 
-import importlib
 import re
 from collections import defaultdict
 from collections.abc import Iterable, Mapping, Sequence
@@ -91,17 +90,6 @@ def display_math(tex: str) -> list[str]:
 
 def anchor(label: str) -> str:
     return "eq-" + re.sub(r"[^a-z0-9]+", "-", label.lower()).strip("-")
-
-
-def _load_paper_equations() -> Mapping[str, str]:
-    # derivations/ is on sys.path once the derivations have run (runner.run_derivations).
-    try:
-        module = importlib.import_module("_paper_equations")
-    except ImportError as error:  # pragma: no cover - only without the derivations folder
-        raise RuntimeError(
-            "derivations/_paper_equations.py not importable: run the derivations first"
-        ) from error
-    return module.PAPER_EQUATIONS
 
 
 def _source_link(source: str) -> str:
@@ -184,12 +172,12 @@ def render_report(run: DerivationRun, paper_equations: Mapping[str, str] | None 
     """Markdown text of ``generated/report/derivation.md`` for a :class:`DerivationRun`.
 
     Reads ``run.checks`` (EquationCheck records) and ``run.formulas`` (Formula records);
-    ``paper_equations`` maps equation numbers to the paper's printed LaTeX (default:
-    ``derivations/_paper_equations.py``), used where a check recorded no ``printed`` form.
+    ``paper_equations`` maps equation numbers to the paper's printed LaTeX (default: the run's
+    own ``paper_equations`` record), used where a check recorded no ``printed`` form.
     """
     checks: list[EquationCheck] = list(run.checks)
     formulas: list[Formula] = list(run.formulas)
-    printed = dict(paper_equations if paper_equations is not None else _load_paper_equations())
+    printed = dict(paper_equations if paper_equations is not None else run.paper_equations)
 
     by_label: dict[str, list[EquationCheck]] = defaultdict(list)
     for check in checks:

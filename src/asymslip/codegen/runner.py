@@ -1,4 +1,9 @@
-"""Run the derivation scripts, then write, verify or freshness-check the generated package."""
+"""Run the derivation scripts, then write, verify or freshness-check the generated package.
+
+The scripts in ``derivations/`` are imported as one package (:mod:`asymslip.codegen.loader`),
+never through ``sys.path``: a script imports its neighbours relatively
+(``from ._glossary import a``; see ``derivations/README.md``).
+"""
 
 from __future__ import annotations
 
@@ -17,6 +22,7 @@ from pathlib import Path
 from .derivation import Derivation
 from .emit import format_source, render_module, render_package_init
 from .formula import EquationCheck, Formula
+from .loader import load_derivations_package
 
 PACKAGE = "asymslip_gen"
 
@@ -29,6 +35,9 @@ class DerivationRun:
     checks: list[EquationCheck] = field(default_factory=list)
     module_docs: dict[str, str] = field(default_factory=dict)
     seconds: dict[str, float] = field(default_factory=dict)
+    #: The paper's printed equations (number -> LaTeX), display only: the derivations
+    #: package's ``PAPER_EQUATIONS``, shown by the report where a check recorded none.
+    paper_equations: dict[str, str] = field(default_factory=dict)
 
 
 def derivation_scripts(directory: Path) -> list[Path]:
@@ -39,14 +48,12 @@ def derivation_scripts(directory: Path) -> list[Path]:
 def run_derivations(directory: Path, *, progress: bool = True) -> DerivationRun:
     """Import each derivation script and call its ``derive()``; report progress on stderr."""
     directory = directory.resolve()
-    if str(directory) not in sys.path:
-        # Scripts import each other's cached building blocks by plain module name.
-        sys.path.insert(0, str(directory))
-    run = DerivationRun()
+    package = load_derivations_package(directory)
+    run = DerivationRun(paper_equations=dict(getattr(package, "PAPER_EQUATIONS", {})))
     scripts = derivation_scripts(directory)
     for index, script in enumerate(scripts, start=1):
         start = time.perf_counter()
-        module = importlib.import_module(script.stem)
+        module = importlib.import_module(f"{package.__name__}.{script.stem}")
         derive = getattr(module, "derive", None)
         if derive is None:
             raise RuntimeError(f"{script} has no derive() function")
