@@ -260,11 +260,17 @@ def test_csv_with_extra_columns_comments_and_any_column_order_reads_like_the_arr
         ("load,a\n1,1\n2,2\n3,3\n4,4\n", r"^table: .*line 1: the header has no column P\b"),
         ("P,a\n1,1\n2,2\n3,x3\n4,4\n", r"^table: .*line 4: column a: 'x3' is not a number"),
         ("P,a\n1,1\n2,2\n\n3,3,9\n", r"^table: .*line 5: 3 fields, the header has 2"),
-        ("P,a\n1,1\n2,2\n3,3\n", r"^table: needs at least 4 points .*\(got 3\)"),
-        ("P,a\n1,1\n2,2\n3,2\n4,4\n", r"^a: table values must be strictly increasing \(point 2"),
-        ("P,a\n1,1\n3,2\n2,3\n4,4\n", r"^P: table values must be strictly increasing \(point 2"),
-        ("P,a\n0,1\n1,2\n2,3\n4,4\n", r"^P: table values must be > 0 \(point 0\)"),
-        ("P,a\n1,1\n2,nan\n3,3\n4,4\n", r"^a: must be finite"),
+        ("P,a\n1,1\n2,2\n3,3\n", r"^table: .*: needs at least 4 points .*\(got 3\)"),
+        ("P,a\n1,1\n2,2\n3,2\n4,4\n",
+         r"^table: .*: a: table values must be strictly increasing \(line 4 does not exceed "
+         r"line 3\)"),
+        # Lines as an editor numbers them: the header is line 1.
+        ("P,a\n1,1\n3,2\n2,3\n4,4\n",
+         r"^table: .*: P: table values must be strictly increasing \(line 4 does not exceed "
+         r"line 3\)"),
+        ("P,a\n0,1\n1,2\n2,3\n4,4\n", r"^table: .*: P: table values must be > 0 \(line 2\)"),
+        ("# comment\nP,a\n\n1,1\n2,nan\n3,3\n4,4\n",
+         r"^table: .*: a: table values must be finite \(not inf or nan; line 5\)"),
         ("# only a comment\n", r"^table: .*no header row"),
     ],
 )

@@ -123,6 +123,10 @@ def draw_problem(
         "d2a_dP2": -d2P_da2 / dP_da1**3,
         "dQ_da": lam_ * dP_da1, "dsigma_da": eta_ * dP_da1, "x_slip": x_slip,
         "x_contact": x_contact, "P_K": P1_ + dP_ * (mu_ - lam_) / (2 * mu_),
+        # s = log a against u = log P: s' = P a'/a, s'' = s' + P^2 a''/a - s'^2.
+        "log_slope1": P1_ / (dP_da1 * a1),
+        "log_curvature1": P1_ / (dP_da1 * a1) + P1_**2 * (-d2P_da2 / dP_da1**3) / a1
+        - (P1_ / (dP_da1 * a1)) ** 2,
     }  # fmt: skip
     problem = {key: float(value) for key, value in exact.items()}
     problem.update(parameters)

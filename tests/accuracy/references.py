@@ -694,6 +694,29 @@ register_quantity(Quantity(
     ("x=x_contact", "P1", "dP", "P_K", "mu", "R", "E_star"),
     exact_traction_difference_47, ("47", "48"), laws=("hertz",), where=_stick_zone_inside,
 ))  # fmt: skip
+def multiplier_slope_along_loglog_fit(P, L_I, ds, d2s):
+    """dL_I/dP by numerical differentiation of (19), with a(P) the local quadratic in log-log
+    through (log P, log a) of slope ds and curvature d2s; log a is fixed by L_I itself."""
+    u0 = mpmath.log(P)
+    # (19) at u0: L_I = (1/pi) sqrt(2/a) P/(a s'), so a^(3/2) = sqrt(2) P/(pi L_I s').
+    s0 = mpmath.log((mpmath.sqrt(2) * P / (pi * L_I * ds)) ** (mpmath.mpf(2) / 3))
+
+    def multiplier(u):
+        s = s0 + ds * (u - u0) + d2s * (u - u0) ** 2 / 2
+        slope = ds + d2s * (u - u0)
+        a, load = mpmath.exp(s), mpmath.exp(u)
+        return mpmath.sqrt(2 / a) * load / (a * slope) / pi  # (19) with dP/da = P/(a s')
+
+    return mpmath.diff(multiplier, u0) / P
+
+
+register_quantity(Quantity(
+    "table_law.normal_edge_multiplier_slope_loglog",
+    ("P=P1", "L_I=L_I1", "ds=log_slope1", "d2s=log_curvature1"),
+    multiplier_slope_along_loglog_fit, ("19", "26"),
+))  # fmt: skip
+
+
 def jaeger_ciavarella_47(p2, p1, p_K, mu):
     """(47) in the three pressures, as the paper's piecewise form reads in every range."""
     return mu * (p2 + p1 - 2 * p_K)

@@ -25,7 +25,7 @@ from asymslip_gen.power_law import (
     wedge_pressure,
 )
 
-from ..errors import as_float_array, positive, require
+from ..errors import InputError, as_float_array, positive, require
 from .base import BoolArray, ContactLaw, FloatArray, LawState
 
 #: Above this n, Gamma((n + 1)/2) overflows a double; use log-Gamma instead.
@@ -47,11 +47,10 @@ def _hyp2f1():
     """SciPy's hyp2f1, imported only when a pressure needs it."""
     try:
         from scipy.special import hyp2f1
-    except ImportError as missing:  # pragma: no cover - exercised by monkeypatching in tests
-        raise ImportError(
-            "PowerLaw.pressure for n other than 1 or 2 needs scipy.special.hyp2f1: "
-            "install the 'special' extra, e.g. pip install 'asymslip[special]'"
-        ) from missing
+    except ImportError:
+        raise InputError("n", "the power-law pressure for n other than 1 or 2 needs SciPy's "
+                         "hyp2f1: install the 'special' extra (pip install "
+                         "'asymslip[special]')") from None  # fmt: skip
     return hyp2f1
 
 

@@ -54,6 +54,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from asymslip_gen.edge_multipliers import normal_edge_multiplier
+from asymslip_gen.table_law import normal_edge_multiplier_slope_loglog
 
 from ..errors import InputError, as_float_array
 from .base import BoolArray, ContactLaw, FloatArray, LawState
@@ -169,7 +170,22 @@ class _LogLogCurve:
         return np.where(j2 == j1, same, np.where(j2 == j1 + 1, across_one, far))
 
 
-def _validated_points(P: ArrayLike, a: ArrayLike) -> tuple[FloatArray, FloatArray]:
+def _validated_points(P: ArrayLike, a: ArrayLike,
+                      lines: list[int] | None = None) -> tuple[FloatArray, FloatArray]:  # fmt: skip
+    """Refuse tables the fit cannot use.  ``lines``: the file line (1-based) of each point,
+    for messages that point at the line an editor shows; else points are numbered from 1."""
+
+    def where(index: int) -> str:
+        return f"line {lines[index]}" if lines is not None else f"point {index + 1}"
+
+    P = np.asarray(P, dtype=np.float64) if lines is None else np.asarray(P)
+    for name, values in (("P", P), ("a", a)):
+        values = np.asarray(values, dtype=np.float64)
+        bad = ~np.isfinite(values)
+        if bad.any():
+            index = int(np.flatnonzero(bad.ravel())[0])
+            raise InputError(name, f"table values must be finite (not inf or nan; "
+                             f"{where(index)})")  # fmt: skip
     P = as_float_array("P", P)
     a = as_float_array("a", a)
     if P.ndim != 1 or a.ndim != 1 or P.size != a.size:
@@ -181,14 +197,14 @@ def _validated_points(P: ArrayLike, a: ArrayLike) -> tuple[FloatArray, FloatArra
     for name, values in (("P", P), ("a", a)):
         if not np.all(values > 0):
             index = int(np.flatnonzero(~(values > 0))[0])
-            raise InputError(name, f"table values must be > 0 (point {index})",
+            raise InputError(name, f"table values must be > 0 ({where(index)})",
                              float(values[index]))  # fmt: skip
         if not np.all(np.diff(values) > 0):
             index = int(np.flatnonzero(~(np.diff(values) > 0))[0]) + 1
             raise InputError(
                 name,
-                f"table values must be strictly increasing (point {index} does not exceed "
-                f"point {index - 1}); a contact law a(P) is increasing -- sort the table by P",
+                f"table values must be strictly increasing ({where(index)} does not exceed "
+                f"{where(index - 1)}); a contact law a(P) is increasing -- sort the table by P",
                 float(values[index]),
             )
     return P, a
@@ -217,9 +233,10 @@ class TableLaw(ContactLaw):
     name = "table"
 
     def __init__(
-        self, P: ArrayLike, a: ArrayLike, *, source: str = "table", _cubic_ends: bool = False
+        self, P: ArrayLike, a: ArrayLike, *, source: str = "table", _cubic_ends: bool = False,
+        _lines: list[int] | None = None,
     ) -> None:
-        self.P, self.a = _validated_points(P, a)
+        self.P, self.a = _validated_points(P, a, _lines)
         self.source = source
         self._curve = _LogLogCurve(np.log(self.P), np.log(self.a), cubic_ends=_cubic_ends)
 
@@ -240,6 +257,7 @@ class TableLaw(ContactLaw):
             raise InputError("table", f"cannot read {path}: {error}") from None
         header: list[str] | None = None
         columns: dict[str, list[float]] = {name: [] for name in COLUMNS}
+        lines: list[int] = []
         for number, line in enumerate(text.splitlines(), start=1):
             if not line.strip() or line.lstrip().startswith("#"):
                 continue
@@ -266,9 +284,15 @@ class TableLaw(ContactLaw):
                 except ValueError:
                     raise InputError("table", f"{path}: line {number}: column {name}: "
                                      f"{field!r} is not a number") from None  # fmt: skip
+            lines.append(number)
         if header is None:
             raise InputError("table", f"{path}: no header row (columns P and a)")
-        return cls(columns["P"], columns["a"], source=str(path))
+        try:
+            return cls(columns["P"], columns["a"], source=str(path), _lines=lines)
+        except InputError as error:  # name the file too: the table option is a path
+            inner = "" if error.parameter == "table" else f"{error.parameter}: "
+            raise InputError("table", f"{path}: {inner}{error.rule}",
+                             error.value) from None  # fmt: skip
 
     # --- the law --------------------------------------------------------------------------
     def _log_half_width(self, P: ArrayLike, derivatives: int = 1) -> tuple[FloatArray, ...]:
@@ -328,7 +352,7 @@ class TableLaw(ContactLaw):
     @staticmethod
     def _multiplier_slope(P: FloatArray, L_I: FloatArray, ds: FloatArray,
                           d2s: FloatArray) -> FloatArray:  # fmt: skip
-        return L_I / P * (1 - 1.5 * ds - d2s / ds)
+        return normal_edge_multiplier_slope_loglog(P, L_I, ds, d2s)
 
     def extrapolated(self, P: ArrayLike) -> BoolArray:
         return self.outside_range(P)
@@ -355,9 +379,10 @@ class TableLaw(ContactLaw):
     def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
         """dL_I/dP = (L_I/P) (1 - 3 s'/2 - s''/s') with s = log a as a function of log P.
 
-        From L_I = sqrt(2/a)/(pi a'(P)) of (19); for a power law a ~ P^k it is (1 - 3k/2) L_I/P
-        (Hertz, k = 1/2: L_I/(4P), as (30) states).  s'' jumps at the table points (the fit is
-        C1), so this is piecewise continuous; it only enters the validity measure (26).
+        Derived from (19) in ``derivations/contact_law_table.py``; for a power law a ~ P^k it
+        is (1 - 3k/2) L_I/P (Hertz, k = 1/2: L_I/(4P), as Section 3 states).  s'' jumps at the
+        table points (the fit is C1), so this is piecewise continuous; it only enters the
+        validity measure (26).
         """
         P = np.asarray(P, dtype=np.float64)
         _, ds, d2s = self._log_half_width(P, 2)
