@@ -145,10 +145,32 @@ def in_angle(expr: sympy.Expr) -> sympy.Expr:
     return sympy.simplify(replaced.subs(sympy.sqrt(a**2 - c**2), chord))
 
 
+def chord_value() -> sympy.Expr:
+    """D = sqrt(a^2 - c^2), clamped to 0 for a <= c."""
+    return sympy.sqrt(sympy.Max(0, (a - c_emit) * (a + c_emit)))
+
+
+def angle_value() -> sympy.Expr:
+    """psi = arccos(c/a) as atan2(D, c): accurate as a -> c, pi/2 for c = 0."""
+    return sympy.atan2(chord_value(), c_emit)
+
+
 def emitted(expr: sympy.Expr) -> sympy.Expr:
     """psi as atan2(D, c) and D = sqrt(Max(0, (a - c)(a + c))), with c allowed to be 0."""
-    chord_value = sympy.sqrt(sympy.Max(0, (a - c_emit) * (a + c_emit)))
-    return expr.subs(c, c_emit).subs({psi: sympy.atan2(chord_value, c_emit), chord: chord_value})
+    return expr.subs(c, c_emit).subs({psi: angle_value(), chord: chord_value()})
+
+
+def emitted_at_angle(expr: sympy.Expr) -> sympy.Expr:
+    """The same quantity with psi and D left as arguments, for callers that evaluate many
+    quantities at one half-width (a Newton iteration needs P and dP/da together)."""
+    return expr.subs(c, c_emit)
+
+
+ANGLE = Argument(psi, "Corner angle psi = arccos(c/a) at this half-width, from "
+                 "flat_rounded_corner_angle [rad].")
+assert chord.name == "D" and psi.name == "psi"
+CHORD = Argument(chord, "Chord D = sqrt(a^2 - c^2) at this half-width, from flat_rounded_chord "
+                 "[length].")
 
 
 @functools.cache
@@ -378,6 +400,25 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
          "(dL_I/da)/(dP/da) = sqrt(2)/(pi a^(3/2)) (1/2 + c/(sqrt(a^2 - c^2) arccos(c/a))); it "
          "grows without bound as a -> c, where the contact is nearly a flat punch.",
          "dL_I/dP [1/length^(3/2)].")  # fmt: skip
+    # The same four quantities from psi and D computed once (a Newton step needs P and P').
+    emit("flat_rounded_chord", (HALF_WIDTH, FLAT), chord_value(), ("29",),
+         "Chord D = sqrt(a^2 - c^2) of the rounded flat at half-width a (0 for a <= c).",
+         "The length shared by the law, its slope and the edge multiplier.", "D [length].")
+    emit("flat_rounded_corner_angle", (CHORD, FLAT), angle_value().subs(chord_value(), chord),
+         ("29",), "Corner angle psi = arccos(c/a) of the rounded flat, from its chord D.",
+         "atan2(D, c) with D = sqrt(a^2 - c^2) from flat_rounded_chord: accurate as a -> c "
+         "(where arccos(c/a) loses digits), pi/2 for c = 0 and 0 for a <= c.", "psi [rad].")
+    for name, expr in (("load", load), ("load_slope", slope), ("normal_edge_multiplier",
+                       multiplier), ("normal_edge_multiplier_slope", multiplier_slope)):
+        at_angle = emitted_at_angle(in_angle(expr))
+        used = [arg for arg in (ANGLE, CHORD) if arg.symbol in at_angle.free_symbols]
+        emit(f"flat_rounded_{name}_at_angle", (*LAW_ARGS, *used), at_angle,
+             ("26",) if name.endswith("slope") and "multiplier" in name else
+             ("19",) if "multiplier" in name else ("29",),
+             f"flat_rounded_{name} from the corner angle (and chord) at half-width a.",
+             f"Equals flat_rounded_{name}(a, c, R, E_star) with psi and D passed in, so that "
+             "several quantities at one half-width share one atan2 and one sqrt.",
+             "As flat_rounded_" + name + ".")  # fmt: skip
     emit("flat_rounded_pressure", (POSITION, *LAW_ARGS), flat_rounded_pressure(), ("4", "48"),
          "Contact pressure p(x) under the flat punch with rounded corners; 0 for |x| >= a.",
          "The counterpart of (48), with the edge asymptote (4): (E*/(pi R)) [psi S - c ln((S + "

@@ -17,6 +17,12 @@ __all__ = [
     "flat_rounded_load_slope",
     "flat_rounded_normal_edge_multiplier",
     "flat_rounded_normal_edge_multiplier_slope",
+    "flat_rounded_chord",
+    "flat_rounded_corner_angle",
+    "flat_rounded_load_at_angle",
+    "flat_rounded_load_slope_at_angle",
+    "flat_rounded_normal_edge_multiplier_at_angle",
+    "flat_rounded_normal_edge_multiplier_slope_at_angle",
     "flat_rounded_pressure",
 ]
 
@@ -143,6 +149,179 @@ def flat_rounded_normal_edge_multiplier_slope(
     tmp0 = numpy.sqrt(numpy.maximum(0, (a - c) * (a + c)))
     tmp1 = numpy.arctan2(tmp0, c)
     return numpy.sqrt(2) * (c + (1 / 2) * tmp0 * tmp1) / (numpy.pi * a ** (3 / 2) * tmp0 * tmp1)
+
+
+def flat_rounded_chord(a: ArrayLike, c: ArrayLike) -> FloatArray:
+    """Chord D = sqrt(a^2 - c^2) of the rounded flat at half-width a (0 for a <= c).
+
+    The length shared by the law, its slope and the edge multiplier.
+
+    Implements Eq. (29) of the paper; derived in ``derivations/contact_law_flat_rounded.py``.
+
+    Parameters
+    ----------
+    a : array_like
+        Contact half-width a > c [length].
+    c : array_like
+        Half-width c >= 0 of the flat face of the punch [length].
+
+    Returns
+    -------
+    ndarray or float64
+        D [length].
+    """
+    return numpy.sqrt(numpy.maximum(0, (a - c) * (a + c)))
+
+
+def flat_rounded_corner_angle(D: ArrayLike, c: ArrayLike) -> FloatArray:
+    """Corner angle psi = arccos(c/a) of the rounded flat, from its chord D.
+
+    atan2(D, c) with D = sqrt(a^2 - c^2) from flat_rounded_chord: accurate as a -> c (where
+    arccos(c/a) loses digits), pi/2 for c = 0 and 0 for a <= c.
+
+    Implements Eq. (29) of the paper; derived in ``derivations/contact_law_flat_rounded.py``.
+
+    Parameters
+    ----------
+    D : array_like
+        Chord D = sqrt(a^2 - c^2) at this half-width, from flat_rounded_chord [length].
+    c : array_like
+        Half-width c >= 0 of the flat face of the punch [length].
+
+    Returns
+    -------
+    ndarray or float64
+        psi [rad].
+    """
+    return numpy.arctan2(D, c)
+
+
+def flat_rounded_load_at_angle(
+    a: ArrayLike, c: ArrayLike, R: ArrayLike, E_star: ArrayLike, psi: ArrayLike, D: ArrayLike
+) -> FloatArray:
+    """flat_rounded_load from the corner angle (and chord) at half-width a.
+
+    Equals flat_rounded_load(a, c, R, E_star) with psi and D passed in, so that several
+    quantities at one half-width share one atan2 and one sqrt.
+
+    Implements Eq. (29) of the paper; derived in ``derivations/contact_law_flat_rounded.py``.
+
+    Parameters
+    ----------
+    a : array_like
+        Contact half-width a > c [length].
+    c : array_like
+        Half-width c >= 0 of the flat face of the punch [length].
+    R : array_like
+        Radius R > 0 of the rounded corners [length].
+    E_star : array_like
+        Plane-strain contact modulus E* > 0 [force/length^2].
+    psi : array_like
+        Corner angle psi = arccos(c/a) at this half-width, from flat_rounded_corner_angle [rad].
+    D : array_like
+        Chord D = sqrt(a^2 - c^2) at this half-width, from flat_rounded_chord [length].
+
+    Returns
+    -------
+    ndarray or float64
+        As flat_rounded_load.
+    """
+    return (1 / 2) * E_star * (-D * c + a**2 * psi) / R
+
+
+def flat_rounded_load_slope_at_angle(
+    a: ArrayLike, c: ArrayLike, R: ArrayLike, E_star: ArrayLike, psi: ArrayLike
+) -> FloatArray:
+    """flat_rounded_load_slope from the corner angle (and chord) at half-width a.
+
+    Equals flat_rounded_load_slope(a, c, R, E_star) with psi and D passed in, so that several
+    quantities at one half-width share one atan2 and one sqrt.
+
+    Implements Eq. (29) of the paper; derived in ``derivations/contact_law_flat_rounded.py``.
+
+    Parameters
+    ----------
+    a : array_like
+        Contact half-width a > c [length].
+    c : array_like
+        Half-width c >= 0 of the flat face of the punch [length].
+    R : array_like
+        Radius R > 0 of the rounded corners [length].
+    E_star : array_like
+        Plane-strain contact modulus E* > 0 [force/length^2].
+    psi : array_like
+        Corner angle psi = arccos(c/a) at this half-width, from flat_rounded_corner_angle [rad].
+
+    Returns
+    -------
+    ndarray or float64
+        As flat_rounded_load_slope.
+    """
+    return E_star * a * psi / R
+
+
+def flat_rounded_normal_edge_multiplier_at_angle(
+    a: ArrayLike, c: ArrayLike, R: ArrayLike, E_star: ArrayLike, psi: ArrayLike
+) -> FloatArray:
+    """flat_rounded_normal_edge_multiplier from the corner angle (and chord) at half-width a.
+
+    Equals flat_rounded_normal_edge_multiplier(a, c, R, E_star) with psi and D passed in, so
+    that several quantities at one half-width share one atan2 and one sqrt.
+
+    Implements Eq. (19) of the paper; derived in ``derivations/contact_law_flat_rounded.py``.
+
+    Parameters
+    ----------
+    a : array_like
+        Contact half-width a > c [length].
+    c : array_like
+        Half-width c >= 0 of the flat face of the punch [length].
+    R : array_like
+        Radius R > 0 of the rounded corners [length].
+    E_star : array_like
+        Plane-strain contact modulus E* > 0 [force/length^2].
+    psi : array_like
+        Corner angle psi = arccos(c/a) at this half-width, from flat_rounded_corner_angle [rad].
+
+    Returns
+    -------
+    ndarray or float64
+        As flat_rounded_normal_edge_multiplier.
+    """
+    return numpy.sqrt(2) * E_star * numpy.sqrt(a) * psi / (numpy.pi * R)
+
+
+def flat_rounded_normal_edge_multiplier_slope_at_angle(
+    a: ArrayLike, c: ArrayLike, R: ArrayLike, E_star: ArrayLike, psi: ArrayLike, D: ArrayLike
+) -> FloatArray:
+    """flat_rounded_normal_edge_multiplier_slope from the corner angle (and chord) at half-width a.
+
+    Equals flat_rounded_normal_edge_multiplier_slope(a, c, R, E_star) with psi and D passed in,
+    so that several quantities at one half-width share one atan2 and one sqrt.
+
+    Implements Eq. (26) of the paper; derived in ``derivations/contact_law_flat_rounded.py``.
+
+    Parameters
+    ----------
+    a : array_like
+        Contact half-width a > c [length].
+    c : array_like
+        Half-width c >= 0 of the flat face of the punch [length].
+    R : array_like
+        Radius R > 0 of the rounded corners [length].
+    E_star : array_like
+        Plane-strain contact modulus E* > 0 [force/length^2].
+    psi : array_like
+        Corner angle psi = arccos(c/a) at this half-width, from flat_rounded_corner_angle [rad].
+    D : array_like
+        Chord D = sqrt(a^2 - c^2) at this half-width, from flat_rounded_chord [length].
+
+    Returns
+    -------
+    ndarray or float64
+        As flat_rounded_normal_edge_multiplier_slope.
+    """
+    return numpy.sqrt(2) * ((1 / 2) * D * psi + c) / (numpy.pi * D * a ** (3 / 2) * psi)
 
 
 def flat_rounded_pressure(

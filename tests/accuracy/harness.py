@@ -128,6 +128,8 @@ def draw_problem(
         "log_curvature1": P1_ / (dP_da1 * a1) + P1_**2 * (-d2P_da2 / dP_da1**3) / a1
         - (P1_ / (dP_da1 * a1)) ** 2,
     }  # fmt: skip
+    if law.extras is not None:
+        exact.update(law.extras(a1, mp))
     problem = {key: float(value) for key, value in exact.items()}
     problem.update(parameters)
     problem.update(mu=mu, lam=lam, eta=eta, P1=P1, dP=dP, P2=P1 + dP)

@@ -211,6 +211,9 @@ register_law(
         half_width=lambda P, law: flat_half_width_mp(P, law["c"], law["R"], law["E_star"]),
         # d/da of the published law, by hand: E* a arccos(c/a) / R.
         load_slope=lambda a, law: law["E_star"] * a * mpmath.acos(law["c"] / a) / law["R"],
+        # The chord sqrt(a^2 - c^2) and corner angle arccos(c/a) at a1, by their definitions.
+        extras=lambda a, law: {"chord1": mpmath.sqrt(a * a - law["c"] ** 2),
+                               "angle1": mpmath.acos(law["c"] / a)},
     )
 )
 
@@ -772,6 +775,38 @@ register_quantity(Quantity(
 register_quantity(Quantity(
     "flat_rounded.flat_rounded_normal_edge_multiplier_slope", _FLAT,
     flat_multiplier_slope_mp, ("19", "26"), laws=("flat-rounded",),
+))  # fmt: skip
+# The same quantities from the chord and corner angle passed in: the references do not use
+# them (they recompute everything from a), so a wrong chord or angle kernel, or a wrong use of
+# them, shows up as a difference.
+_AT_ANGLE = ("a=a1", "c", "R", "E_star", "psi=angle1")
+register_quantity(Quantity(
+    "flat_rounded.flat_rounded_chord", ("a=a1", "c"),
+    lambda a, c: mpmath.sqrt(a * a - c * c), ("29",), laws=("flat-rounded",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "flat_rounded.flat_rounded_corner_angle", ("D=chord1", "c"),
+    lambda D, c: mpmath.atan2(D, c), ("29",), laws=("flat-rounded",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "flat_rounded.flat_rounded_load_at_angle", (*_AT_ANGLE, "D=chord1"),
+    lambda a, c, R, E_star, psi, D: published_flat_load(a, c, R, E_star), ("29",),
+    laws=("flat-rounded",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "flat_rounded.flat_rounded_load_slope_at_angle", _AT_ANGLE,
+    lambda a, c, R, E_star, psi: flat_load_slope_mp(a, c, R, E_star), ("29",),
+    laws=("flat-rounded",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "flat_rounded.flat_rounded_normal_edge_multiplier_at_angle", _AT_ANGLE,
+    lambda a, c, R, E_star, psi: normal_multiplier_19(a, flat_load_slope_mp(a, c, R, E_star)),
+    ("19",), laws=("flat-rounded",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "flat_rounded.flat_rounded_normal_edge_multiplier_slope_at_angle", (*_AT_ANGLE, "D=chord1"),
+    lambda a, c, R, E_star, psi, D: flat_multiplier_slope_mp(a, c, R, E_star), ("19", "26"),
+    laws=("flat-rounded",),
 ))  # fmt: skip
 register_quantity(Quantity(
     "flat_rounded.flat_rounded_pressure", ("x=x_contact", "a=a2", "c", "R", "E_star"),

@@ -43,6 +43,9 @@ class LawCase:
     parameters: Callable[[np.random.Generator], dict[str, float]]
     half_width: Callable[[mpmath.mpf, MpValues], mpmath.mpf]
     load_slope: Callable[[mpmath.mpf, MpValues], mpmath.mpf]
+    #: Further exact values of the law at the half-width a1, for kernels that take
+    #: intermediate quantities (the rounded flat's chord and corner angle): ``extras(a1, law)``.
+    extras: Callable[[mpmath.mpf, MpValues], dict[str, mpmath.mpf]] | None = None
 
 
 @dataclass(frozen=True)

@@ -129,7 +129,8 @@ class ContactLaw(abc.ABC):
         a_ref = np.asarray(a_ref, dtype=np.float64)
         with np.errstate(all="ignore"):
             guess = a_ref + (P - P_ref) / self.load_slope(a_ref)
-        a, converged = newton_from(self.load, self.load_slope, P, guess)
+        a, converged = newton_from(self.load, self.load_slope, P, guess,
+                                   both=getattr(self, "load_and_slope", None))  # fmt: skip
         if not np.all(converged):
             a = np.array(a, dtype=float)
             retry = ~np.asarray(converged)
@@ -170,7 +171,7 @@ class ContactLaw(abc.ABC):
         with np.errstate(all="ignore"):
             start = np.where(found1, a1, 1.0)
             da, found2 = growth_from(self.load, self.load_slope, self.load_difference, start,
-                                     P2, dP)  # fmt: skip
+                                     P2, dP, both=getattr(self, "load_and_slope", None))
             found2 = found2 & found1
             a2 = a1 + da
         return self._state_from_half_widths(P1, P2, a1, a2, da, found1, found2)

@@ -12,20 +12,23 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from asymslip_gen.flat_rounded import (
+    flat_rounded_chord,
+    flat_rounded_corner_angle,
     flat_rounded_load,
+    flat_rounded_load_at_angle,
     flat_rounded_load_slope,
-    flat_rounded_normal_edge_multiplier,
-    flat_rounded_normal_edge_multiplier_slope,
+    flat_rounded_load_slope_at_angle,
+    flat_rounded_normal_edge_multiplier_at_angle,
+    flat_rounded_normal_edge_multiplier_slope_at_angle,
     flat_rounded_pressure,
 )
 from asymslip_gen.hertz import hertz_half_width
 
 from ..errors import as_float_array, positive, require
-from .base import BoolArray, ContactLaw, FloatArray
+from .base import BoolArray, ContactLaw, FloatArray, LawState
 from .roots import (
-    GAUSS_NODES,
-    GAUSS_WEIGHTS,
     QUADRATURE_LIMIT,
+    gauss_integral,
     invert_increasing_where_possible,
     newton_from,
 )
@@ -78,6 +81,13 @@ class FlatRoundedLaw(ContactLaw):
         """dP/da = E* a arccos(c/a) / R."""
         return flat_rounded_load_slope(a, self.c, self.R, self.E_star)
 
+    def load_and_slope(self, a: ArrayLike) -> tuple[FloatArray, FloatArray]:
+        """P(a) and dP/da from one chord and one corner angle (a Newton step needs both)."""
+        chord = flat_rounded_chord(a, self.c)
+        angle = flat_rounded_corner_angle(chord, self.c)
+        return (flat_rounded_load_at_angle(a, self.c, self.R, self.E_star, angle, chord),
+                flat_rounded_load_slope_at_angle(a, self.c, self.R, self.E_star, angle))
+
     def half_width_where_possible(self, P: ArrayLike) -> tuple[FloatArray, BoolArray]:
         """a(P) by Newton on the convex P(a) from above, to a few units in the last place.
 
@@ -91,7 +101,14 @@ class FlatRoundedLaw(ContactLaw):
         load = np.asarray(P, dtype=np.float64)
         with np.errstate(over="ignore", invalid="ignore"):
             hertz = hertz_half_width(load, self.R, self.E_star)
-            a, converged = newton_from(self.load, self.load_slope, load, self.c + hertz)
+            # Two upper bounds: c + a_H, and the root of the law's expansion for a >> c,
+            # P ~ pi E*/(4R) (a^2 - 4 a c/pi), whose neglected terms are positive; the smaller
+            # one is within 30 % (within 1e-5 once a > 10 c), and Newton from above on the
+            # convex P(a) converges monotonically.
+            lever = 2 * self.c / np.pi
+            upper = np.minimum(self.c + hertz, lever + np.sqrt(hertz * hertz + lever * lever))
+            a, converged = newton_from(self.load, self.load_slope, load, upper,
+                                       both=self.load_and_slope)  # fmt: skip
         if not np.all(converged):
             a = np.array(a, dtype=float)
             retry = ~np.asarray(converged) & np.isfinite(hertz) & (load > 0)
@@ -121,7 +138,8 @@ class FlatRoundedLaw(ContactLaw):
         P'(a) = E* a arccos(c/a)/R has a branch point at a = c, which may lie much closer to
         a than d; in u = sqrt(a - c) the integrand 2u P'(c + u^2) is analytic there (its
         nearest singularities are at u^2 = -c and u^2 = -2c), so Gauss-Legendre in u is exact
-        to rounding for d <= a/4.  u2 - u1 = d/(u1 + u2), without cancellation.
+        to rounding for d <= a/4 with the rule chosen by du/sqrt(a).  u2 - u1 = d/(u1 + u2),
+        without cancellation.
         """
         a, d = np.broadcast_arrays(np.asarray(a, dtype=np.float64),
                                    np.asarray(d, dtype=np.float64))  # fmt: skip
@@ -132,9 +150,9 @@ class FlatRoundedLaw(ContactLaw):
             u1 = np.sqrt(a_near - self.c)
             u2 = np.sqrt(a_near + d_near - self.c)
             du = d_near / (u1 + u2)
-            u = u1[:, None] + du[:, None] * GAUSS_NODES
-            integrand = 2 * u * self.load_slope(self.c + u * u)
-            out[near] = du * (integrand @ GAUSS_WEIGHTS)
+            # The singularities at u^2 = -c, -2c lie at least sqrt(a) from [u1, u2].
+            out[near] = gauss_integral(lambda u: 2 * u * self.load_slope(self.c + u * u), u1,
+                                       du, du / np.sqrt(a_near))  # fmt: skip
         if (~near).any():
             out[~near] = self.load(a[~near] + d[~near]) - self.load(a[~near])
         return out[()] if out.ndim == 0 else out
@@ -146,11 +164,42 @@ class FlatRoundedLaw(ContactLaw):
         require(change >= 0, "dP", "must be >= 0", change)
         return self.cycle_state(start, change).da
 
+    def _state_from_half_widths(self, P1, P2, a1, a2, da, found1, found2) -> LawState:  # noqa: ANN001
+        """Multipliers and slopes at both half-widths from one chord and angle each."""
+        values = []
+        for a, found in ((a1, found1), (a2, found2)):
+            with np.errstate(all="ignore"):
+                safe = np.where(found, a, self.c + 1.0)
+                chord = flat_rounded_chord(safe, self.c)
+                angle = flat_rounded_corner_angle(chord, self.c)
+                parameters = (safe, self.c, self.R, self.E_star, angle)
+                values.append([
+                    flat_rounded_load_slope_at_angle(*parameters),
+                    flat_rounded_normal_edge_multiplier_at_angle(*parameters),
+                    flat_rounded_normal_edge_multiplier_slope_at_angle(*parameters, chord),
+                ])  # fmt: skip
+        (slope1, L_I1, L_I_slope1), (slope2, L_I2, L_I_slope2) = values
+
+        def mark(value: FloatArray, found: BoolArray) -> FloatArray:
+            return np.where(found, value, np.nan)
+
+        return LawState(
+            P1=P1, P2=P2, a1=mark(a1, found1), a2=mark(a2, found2), da=mark(da, found2),
+            L_I1=mark(L_I1, found1), L_I2=mark(L_I2, found2),
+            load_slope1=mark(slope1, found1), load_slope2=mark(slope2, found2),
+            L_I_slope1=mark(L_I_slope1, found1), L_I_slope2=mark(L_I_slope2, found2),
+            found1=np.asarray(found1), found2=np.asarray(found2),
+        )  # fmt: skip
+
     def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
-        return flat_rounded_normal_edge_multiplier(a, self.c, self.R, self.E_star)
+        chord = flat_rounded_chord(a, self.c)
+        return flat_rounded_normal_edge_multiplier_at_angle(
+            a, self.c, self.R, self.E_star, flat_rounded_corner_angle(chord, self.c))
 
     def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
-        return flat_rounded_normal_edge_multiplier_slope(a, self.c, self.R, self.E_star)
+        chord = flat_rounded_chord(a, self.c)
+        return flat_rounded_normal_edge_multiplier_slope_at_angle(
+            a, self.c, self.R, self.E_star, flat_rounded_corner_angle(chord, self.c), chord)
 
     def pressure(self, x: ArrayLike, P: ArrayLike) -> FloatArray:
         """Contact pressure p(x) at load P; zero for |x| >= a(P)."""

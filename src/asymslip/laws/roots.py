@@ -114,33 +114,67 @@ def newton_from(
     guess: ArrayLike,
     *,
     iterations: int = 12,
+    both: Callable[[FloatArray], tuple[FloatArray, FloatArray]] | None = None,
 ) -> tuple[FloatArray, NDArray[np.bool_]]:
-    """Plain Newton steps from a good first guess, on the elements that still move.
+    """Plain Newton steps from a good first guess.
 
-    For inverting an increasing law near a known point (a2 from a1, a(P_K) from a1), where
-    the tangent guess is already close and two or three steps reach full precision.  An element
-    counts as converged when its last step is within four units in the last place and its
-    iterate stayed positive and finite; the others are returned unconverged, for the caller to
-    hand to the bracketing :func:`invert_increasing_where_possible`.
+    For inverting an increasing law near a known point (a1 from a tight upper bound, a2 and
+    a(P_K) from the tangent at a1), where two or three steps reach full precision.  An element
+    is converged when its last step is within four units in the last place, or when quadratic
+    convergence predicts the next one will be: steps shrink as s_(k+1) = C s_k^2, and with C
+    estimated from the last two steps the step after |s_k| is |s_k|^3 / |s_(k-1)|^2 -- below
+    two units in the last place, one more function evaluation would not change the double.
+    The others (a step leaving the positive reals, no convergence) come back unconverged, for
+    the caller to hand to the bracketing :func:`invert_increasing_where_possible`.
+
+    ``both``, if given, returns the function and its slope from one evaluation (laws whose
+    two share their costly parts).  While most elements still move, every element is stepped
+    (a converged one stays put to rounding); the stragglers are then stepped on their own.
     """
     goal = np.asarray(target, dtype=np.float64)
     x = np.array(np.broadcast_to(np.asarray(guess, dtype=np.float64), goal.shape), dtype=float)
     goal = np.broadcast_to(goal, x.shape)
+    shape = x.shape
+    x, goal = x.reshape(-1), np.ascontiguousarray(goal).reshape(-1)
+    if both is None:
+        def both(points: FloatArray) -> tuple[FloatArray, FloatArray]:
+            return function(points), slope(points)
+    usable = np.isfinite(x) & (x > 0) & np.isfinite(goal)
     converged = np.zeros(x.shape, dtype=bool)
-    active = np.flatnonzero(np.isfinite(x.ravel()) & (x.ravel() > 0) & np.isfinite(goal.ravel()))
-    flat_x, flat_goal, flat_done = x.reshape(-1), goal.reshape(-1), converged.reshape(-1)
+    moving = usable.copy()
+    previous = np.zeros(x.shape)  # no step yet: the prediction needs two
+    index: NDArray[np.intp] | None = None  # None: step the whole array
     with np.errstate(all="ignore"):  # a step may leave the domain: it is then not converged
         for _ in range(iterations):
-            if active.size == 0:
+            if index is None and moving.sum() < x.size // 4:
+                index = np.flatnonzero(moving)  # few left: step only those
+            if index is not None and index.size == 0:
                 break
-            current = flat_x[active]
-            step = (function(current) - flat_goal[active]) / slope(current)
+            current = x if index is None else x[index]
+            value, gradient = both(current)
+            step = (value - (goal if index is None else goal[index])) / gradient
             new = current - step
             ok = np.isfinite(new) & (new > 0)
-            done = ok & (np.abs(step) <= 4 * np.spacing(new))
-            flat_x[active] = np.where(ok, new, current)
-            flat_done[active[done]] = True
-            active = active[ok & ~done]
+            size = np.abs(step)
+            ulp = np.spacing(new)
+            last = previous if index is None else previous[index]
+            done = ok & ((size <= 4 * ulp) | (size**3 <= 2 * ulp * last**2))
+            if index is None:
+                active = moving
+                x = np.where(active & ok, new, x)
+                converged |= active & done
+                moving = active & ok & ~done
+                previous = size
+            else:
+                x[index] = np.where(ok, new, current)
+                converged[index[done]] = True
+                keep = ok & ~done
+                moving[index] = keep
+                index, previous_kept = index[keep], size[keep]
+                previous[index] = previous_kept
+            if index is None and not moving.any():
+                break
+    x, converged = x.reshape(shape), converged.reshape(shape)
     if x.ndim == 0:
         return x[()], converged[()]
     return x, converged
@@ -272,12 +306,36 @@ def _refine(
     return best
 
 
-#: Gauss-Legendre rule of :func:`load_difference` (12 nodes on [0, 1]).
-GAUSS_NODES, GAUSS_WEIGHTS = np.polynomial.legendre.leggauss(12)
-GAUSS_NODES, GAUSS_WEIGHTS = 0.5 * (GAUSS_NODES + 1), 0.5 * GAUSS_WEIGHTS
-#: Up to this d/a the difference is integrated; beyond it the plain difference loses at most
-#: a few units in the last place (P(a + d) - P(a) >= P(a) d/a for a convex law through 0).
+#: Up to this relative length the difference is integrated; beyond it the plain difference
+#: loses at most a few units in the last place (P(a + d) - P(a) >= P(a) d/a for a convex law
+#: through 0).
 QUADRATURE_LIMIT = 0.25
+#: Gauss-Legendre rules on [0, 1] by the interval's length relative to its distance from the
+#: law's nearest singularity (r = d/a in the half-width): the n-point rule's error is about
+#: (r/4)^(2n), so 3 points are exact to rounding up to r = 1e-3, 5 up to 0.03, 7 up to 0.25.
+GAUSS_RULES = tuple(
+    (limit, 0.5 * (nodes + 1), 0.5 * weights)
+    for limit, (nodes, weights) in (
+        (1e-3, np.polynomial.legendre.leggauss(3)),
+        (3e-2, np.polynomial.legendre.leggauss(5)),
+        (QUADRATURE_LIMIT, np.polynomial.legendre.leggauss(7)),
+    )
+)
+
+
+def gauss_integral(integrand: Callable[[FloatArray], FloatArray], start: FloatArray,
+                   length: FloatArray, ratio: FloatArray) -> FloatArray:  # fmt: skip
+    """int_start^(start + length) integrand, elementwise, each with the smallest rule of
+    :data:`GAUSS_RULES` whose limit covers its ``ratio`` (all ratios <= QUADRATURE_LIMIT)."""
+    out = np.empty(start.shape)
+    lower = -np.inf
+    for limit, nodes, weights in GAUSS_RULES:
+        chosen = (ratio > lower) & (ratio <= limit)
+        lower = limit
+        if chosen.any():
+            points = start[chosen, None] + length[chosen, None] * nodes
+            out[chosen] = length[chosen] * (integrand(points) @ weights)
+    return out
 
 
 def load_difference(
@@ -288,18 +346,15 @@ def load_difference(
 ) -> FloatArray:
     """P(a + d) - P(a) without cancellation: int_a^{a+d} P'(s) ds by Gauss-Legendre.
 
-    For d <= :data:`QUADRATURE_LIMIT` a the 12-node rule on [a, a + d] is exact to rounding
-    for a law analytic on the disc around the interval that reaches to s = 0 (the nearest
-    singularity of every law here): the interval's half-length is at most a/8, so the rule's
-    error is below 1e-25 relative.  Larger d: the plain difference, which is then accurate.
+    For d <= :data:`QUADRATURE_LIMIT` a the rule of :data:`GAUSS_RULES` chosen by d/a is exact
+    to rounding for a law analytic on the disc around the interval that reaches to s = 0 (the
+    nearest singularity of every law here).  Larger d: the plain difference, then accurate.
     """
     a, d = np.broadcast_arrays(np.asarray(a, dtype=np.float64), np.asarray(d, dtype=np.float64))
     near = d <= QUADRATURE_LIMIT * a
     out = np.empty(a.shape)
     if near.any():
-        a_near, d_near = a[near], d[near]
-        nodes = a_near[:, None] + d_near[:, None] * GAUSS_NODES
-        out[near] = d_near * (slope(nodes) @ GAUSS_WEIGHTS)
+        out[near] = gauss_integral(slope, a[near], d[near], d[near] / a[near])
     if (~near).any():
         out[~near] = load(a[~near] + d[~near]) - load(a[~near])
     return out[()] if out.ndim == 0 else out
@@ -312,6 +367,8 @@ def growth_from(
     a1: ArrayLike,
     P2: ArrayLike,
     dP: ArrayLike,
+    *,
+    both: Callable[[FloatArray], tuple[FloatArray, FloatArray]] | None = None,
 ) -> tuple[FloatArray, NDArray[np.bool_]]:
     """a(P1 + dP) - a(P1) from a1 = a(P1), with full relative precision however small dP/P1.
 
@@ -328,7 +385,7 @@ def growth_from(
     a1, P2, dP = np.broadcast_arrays(a1, P2, dP)
     with np.errstate(all="ignore"):
         guess = a1 + dP / slope(a1)
-    a2, found = newton_from(load, slope, P2, guess)
+    a2, found = newton_from(load, slope, P2, guess, both=both)
     if not np.all(found):
         retry = ~found
         a2 = np.array(a2, dtype=float)

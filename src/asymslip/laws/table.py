@@ -131,9 +131,10 @@ class _LogLogCurve:
         # interval, so that its change measures the fit's error there, not a straight line's.
         return np.clip(j, 1, self.knots.size - 1) if self.cubic_ends else j
 
-    def evaluate(self, u: FloatArray, derivatives: int = 1) -> tuple[FloatArray, ...]:
-        """s(u) and its first ``derivatives`` derivatives."""
-        j = self.piece(u)
+    def evaluate(self, u: FloatArray, derivatives: int = 1,
+                 j: NDArray[np.intp] | None = None) -> tuple[FloatArray, ...]:  # fmt: skip
+        """s(u) and its first ``derivatives`` derivatives (``j``: the pieces, if known)."""
+        j = self.piece(u) if j is None else j
         t = u - self.base[j]
         c1, c2, c3 = self.c1[j], self.c2[j], self.c3[j]
         out = [self.c0[j] + t * (c1 + t * (c2 + t * c3)), c1 + t * (2 * c2 + 3 * t * c3)]
@@ -149,25 +150,36 @@ class _LogLogCurve:
             + self.c3[j] * (t_high**2 + t_high * t_low + t_low**2)
         )
 
-    def increment(self, u1: FloatArray, du: FloatArray) -> FloatArray:
+    def increment(self, u1: FloatArray, du: FloatArray, j1: NDArray[np.intp] | None = None,
+                  j2: NDArray[np.intp] | None = None) -> FloatArray:  # fmt: skip
         """s(u1 + du) - s(u1) for du > 0, keeping full relative precision as du -> 0.
 
         Within one piece the cubic's difference is du times its mean slope.  Across one knot
         the two pieces' parts are recombined as du * g2 + d1 (g1 - g2), in which the knot
         position d1 (known only to rounding) multiplies the small g1 - g2 (s' is continuous).
         Across several knots du is at least one spacing and the plain difference is accurate.
+        ``j1``, ``j2``: the pieces of u1 and u1 + du, if known.
         """
+        u1, du = np.broadcast_arrays(np.asarray(u1, dtype=np.float64),
+                                     np.asarray(du, dtype=np.float64))  # fmt: skip
+        shape = u1.shape
+        u1, du = u1.reshape(-1), du.reshape(-1)
         u2 = u1 + du
-        j1, j2 = self.piece(u1), self.piece(u2)
+        j1 = self.piece(u1) if j1 is None else np.reshape(j1, -1)
+        j2 = self.piece(u2) if j2 is None else np.reshape(j2, -1)
         t1 = u1 - self.base[j1]
-        same = self.mean_slope(j1, t1, t1 + du) * du
-        knot = self.base[np.minimum(j1 + 1, self.base.size - 1)]
-        d1 = knot - u1
-        g1 = self.mean_slope(j1, t1, knot - self.base[j1])
-        g2 = self.mean_slope(j2, np.zeros_like(du), u2 - self.base[j2])
-        across_one = du * g2 + d1 * (g1 - g2)
-        far = self.evaluate(u2, 0)[0] - self.evaluate(u1, 0)[0]
-        return np.where(j2 == j1, same, np.where(j2 == j1 + 1, across_one, far))
+        out = self.mean_slope(j1, t1, t1 + du) * du
+        crossing = j2 != j1
+        if crossing.any():
+            k1, k2, v1, v2, step = j1[crossing], j2[crossing], u1[crossing], u2[crossing], \
+                du[crossing]  # fmt: skip
+            knot = self.base[np.minimum(k1 + 1, self.base.size - 1)]
+            g1 = self.mean_slope(k1, v1 - self.base[k1], knot - self.base[k1])
+            g2 = self.mean_slope(k2, np.zeros_like(step), v2 - self.base[k2])
+            across_one = step * g2 + (knot - v1) * (g1 - g2)
+            far = self.evaluate(v2, 0, k2)[0] - self.evaluate(v1, 0, k1)[0]
+            out[crossing] = np.where(k2 == k1 + 1, across_one, far)
+        return out.reshape(shape) if shape else out[0]
 
 
 def _validated_points(P: ArrayLike, a: ArrayLike,
@@ -331,11 +343,13 @@ class TableLaw(ContactLaw):
                                      np.asarray(dP, dtype=np.float64))  # fmt: skip
         P2 = P1 + dP
         with np.errstate(all="ignore"):
-            u1, u2 = np.log(P1), np.log(P2)
-            s1, ds1, d2s1 = self._curve.evaluate(u1, 2)
-            s2, ds2, d2s2 = self._curve.evaluate(u2, 2)
+            u1, du = np.log(P1), np.log1p(dP / P1)
+            u2 = u1 + du
+            j1, j2 = self._curve.piece(u1), self._curve.piece(u2)
+            s1, ds1, d2s1 = self._curve.evaluate(u1, 2, j1)
+            s2, ds2, d2s2 = self._curve.evaluate(u2, 2, j2)
             a1, a2 = np.exp(s1), np.exp(s2)
-            da = a1 * np.expm1(self._curve.increment(u1, np.log1p(dP / P1)))
+            da = a1 * np.expm1(self._curve.increment(u1, du, j1, j2))
             slope1, slope2 = P1 / (a1 * ds1), P2 / (a2 * ds2)  # dP/da = 1/a'(P)
             L_I1 = normal_edge_multiplier(a1, slope1)
             L_I2 = normal_edge_multiplier(a2, slope2)
