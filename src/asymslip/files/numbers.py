@@ -172,7 +172,8 @@ _SIGN, _LEAD, _DIGITS, _EXP = 0, 1, 8, 35
 WIDTH = 40
 
 
-def format_doubles(values: ArrayLike, block_rows: int = 1 << 15) -> NDArray[np.uint8]:
+def format_doubles(values: ArrayLike, block_rows: int = 1 << 15,
+                   out: NDArray[np.uint8] | None = None) -> NDArray[np.uint8]:
     """Each double as the shortest text that reads back to it, in pyarrow's layout.
 
     Parameters
@@ -181,6 +182,8 @@ def format_doubles(values: ArrayLike, block_rows: int = 1 << 15) -> NDArray[np.u
         Any array of float64 (flattened, C order).
     block_rows
         Numbers formatted at once (small enough for the work to stay in cache).
+    out
+        Where to write: ``(n, WIDTH)`` zeros (a view is fine); a new array by default.
 
     Returns
     -------
@@ -190,7 +193,8 @@ def format_doubles(values: ArrayLike, block_rows: int = 1 << 15) -> NDArray[np.u
         NaN gives an empty row (NaN means "no value" in the tool's tables).
     """
     x = np.ascontiguousarray(values, dtype=np.float64).ravel()
-    out = np.zeros((x.size, WIDTH), np.uint8)
+    if out is None:
+        out = np.zeros((x.size, WIDTH), np.uint8)
     for start in range(0, x.size, block_rows):
         _format_block(x[start : start + block_rows], out[start : start + block_rows])
     return out
