@@ -351,7 +351,8 @@ def _record_bytes(layout: _Layout, records: NDArray[np.intp]) -> memoryview | by
     if not len(records):
         return b""
     starts, ends = layout.starts[records], layout.ends[records]
-    if len(records) == len(layout.starts) and (starts[1:] - ends[:-1] <= 2).all():
+    line_break = 1 + (layout.buffer[ends[:-1]] == 13)  # "\n" or "\r\n"
+    if len(records) == len(layout.starts) and (starts[1:] - ends[:-1] == line_break).all():
         return memoryview(layout.data)[starts[0] : ends[-1]]
     data = layout.data
     return b"\n".join(data[a:b] for a, b in zip(starts.tolist(), ends.tolist(), strict=True))
@@ -406,6 +407,9 @@ def _parse_arrow(layout: _Layout, wanted: list[str]):
             good = np.flatnonzero(counts == len(header))
             table = pcsv.read_csv(pa.py_buffer(_record_bytes(layout, good)), read, parse,
                                   convert)  # fmt: skip
+        if table.num_rows != len(good):  # the scan and pyarrow disagree on the records
+            raise RuntimeError(f"pyarrow read {table.num_rows} rows where "
+                               f"the scan found {len(good)}; use engine='numpy'")
     text: dict[str, TextColumn] = {}
     for name in header:
         column = _text_from_arrow(table[name])

@@ -72,10 +72,7 @@ class TextColumn:
         return self.data[self.offsets[row] : self.offsets[row + 1]].tobytes().decode("utf-8")
 
     def to_list(self) -> list[str]:
-        buffer = self.data.tobytes()
-        base = int(self.offsets[0])
-        bounds = (self.offsets - base).tolist()
-        return [buffer[a:b].decode("utf-8") for a, b in zip(bounds[:-1], bounds[1:], strict=True)]
+        return [item.decode("utf-8") for item in self.to_bytes_list()]
 
     def to_bytes_list(self) -> list[bytes]:
         buffer = self.data[self.offsets[0] : self.offsets[-1]].tobytes()
