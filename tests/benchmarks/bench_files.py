@@ -234,7 +234,9 @@ def main(argv: list[str] | None = None) -> int:
     for key, run in (("r", bench_read), ("w", bench_write), ("p", bench_pool)):
         if key not in args.skip:
             print(f"({key}) ...", file=sys.stderr, flush=True)
-            rows.extend(run(args.rows, args.repeat))
+            measured = run(args.rows, args.repeat)
+            print(table(measured), file=sys.stderr, flush=True)  # seen before the end
+            rows.extend(measured)
     print(table(rows))
     return 0
 
