@@ -5,7 +5,7 @@ PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
-EXTRAS := derive,dev,plot,bench,dask,special
+EXTRAS := derive,dev,plot,bench,dask,special,parquet
 
 .DEFAULT_GOAL := all
 .PHONY: all env demo generate check-generated verify test bench figures report accuracy clean help

@@ -366,8 +366,8 @@ def bench_import(repeat: int) -> list[Row]:
             continue
         target, met = ("< 1.5x", verdict(t_module < 1.5 * t_numpy)) if module == "asymslip" else (
             "(information)", "-")  # fmt: skip
-        rows.append(Row(f"`{IMPORT_STATEMENTS[module]}` vs `import numpy` (fresh interpreters, best of "
-                        f"{repeat})", seconds(t_module), seconds(t_numpy),
+        rows.append(Row(f"`{IMPORT_STATEMENTS[module]}` vs `import numpy` (fresh interpreters, "
+                        f"best of {repeat})", seconds(t_module), seconds(t_numpy),
                         f"{t_module / t_numpy:.2f}x", target, met))  # fmt: skip
     return rows
 

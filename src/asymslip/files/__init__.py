@@ -1,1 +1,36 @@
-"""Files the tool reads and writes: safe (atomic) writing, and later the table readers/writers."""
+"""Files the tool reads and writes.
+
+- :func:`read_table` (:mod:`.reader`): a cases CSV -> :class:`CaseTable` (text of every column,
+  numeric columns as float64, 1-based file line and error of each row).
+- :func:`open_table` (:mod:`.writer`): a result table, chunk by chunk, to ``.csv`` (shortest
+  round-trip doubles) or ``.parquet``, atomically; :class:`TextColumn` and :class:`Categorical`
+  (:mod:`.text`) hold text without a Python string per row.
+- :func:`format_doubles` (:mod:`.numbers`): the NumPy formatter of shortest round-trip doubles.
+- :class:`Progress` (:mod:`.progress`), :func:`atomic_write` and :func:`refuse_same_file`
+  (:mod:`.atomic`).
+
+pyarrow (the ``parquet`` extra) is used when installed and imported only when a table is read
+or written; without it everything but Parquet works with NumPy alone.
+"""
+
+from .atomic import atomic_write, refuse_same_file
+from .numbers import format_doubles
+from .progress import Progress
+from .reader import CaseTable, read_table
+from .text import Categorical, TextColumn
+from .writer import TableWriter, WrittenTable, open_table, table_format
+
+__all__ = [
+    "CaseTable",
+    "Categorical",
+    "Progress",
+    "TableWriter",
+    "TextColumn",
+    "WrittenTable",
+    "atomic_write",
+    "format_doubles",
+    "open_table",
+    "read_table",
+    "refuse_same_file",
+    "table_format",
+]
