@@ -49,6 +49,17 @@ def test_csv_text_fields_read_back_as_written(tmp_path, engine):
 
 
 @pytest.mark.parametrize("engine", ENGINES)
+def test_csv_text_is_always_quoted_and_a_missing_category_is_an_empty_field(tmp_path, engine):
+    out = tmp_path / "r.csv"
+    with open_table(out, SCHEMA, engine=engine) as table:
+        table.write(chunk())
+    lines = out.read_bytes().split(b"\n")
+    assert lines[1].startswith(b'"plain",') and lines[1].endswith(b',,"P2: must exceed P1"')
+    b = repr(float(np.linspace(-1, 1, len(AWKWARD))[1] / 3)).encode()
+    assert lines[2] == b'"a,b",' + b + b',1e-7,"eq24 = 0.2 > 0.1",""'
+
+
+@pytest.mark.parametrize("engine", ENGINES)
 def test_csv_numbers_read_back_identically_and_nan_is_an_empty_field(tmp_path, engine):
     out = tmp_path / "r.csv"
     data = chunk(1000)
@@ -65,8 +76,8 @@ def test_csv_numbers_read_back_identically_and_nan_is_an_empty_field(tmp_path, e
 @pytest.mark.skipif(not arrow.available(), reason="pyarrow not installed")
 @pytest.mark.parametrize("quoted", [True, False])
 def test_pyarrow_and_numpy_writers_give_the_same_bytes(tmp_path, quoted):
-    """Same bytes, not only the same values: both write pyarrow's number layout and quote a
-    text field only when it needs it (a chunk whose text needs quotes goes the NumPy way)."""
+    """Same bytes, not only the same values: both write pyarrow's number layout and put every
+    text field in quotes, whatever it holds."""
     data = chunk(5000)
     if not quoted:
         data["case"] = [f"case{i}" for i in range(5000)]

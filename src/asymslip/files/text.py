@@ -24,6 +24,12 @@ def quote(text: str) -> str:
     return text
 
 
+def quote_always(text: str) -> str:
+    """A CSV text field, always in quotes (quotes doubled), as ``pyarrow.csv`` writes strings
+    with ``quoting_style="needed"``."""
+    return '"' + text.replace('"', '""') + '"'
+
+
 def ragged_take(data: NDArray[np.uint8], offsets: NDArray[np.int64],
                 rows: NDArray[np.intp]) -> tuple[NDArray[np.uint8], NDArray[np.int64]]:  # fmt: skip
     """The byte strings ``rows`` of a ragged (data, offsets) column, vectorised."""

@@ -4,12 +4,14 @@ Columns have a fixed schema: ``"float"`` (float64; NaN means no value: an empty 
 Parquet null), ``"text"`` (:class:`TextColumn` or a sequence of strings) and ``"category"``
 (:class:`Categorical`: codes and a few distinct strings, a Parquet dictionary column).
 
-CSV: doubles as the shortest text that reads back to the same double; a text field is quoted
-only when it holds a comma, a quote or a line break (quotes doubled); ``\\n`` line ends; the
-header written the same way.  With pyarrow the rows are written by ``pyarrow.csv`` (whose
+CSV: doubles as the shortest text that reads back to the same double; every text field in
+double quotes (quotes doubled), a missing one (a category's code -1) an empty field, as
+``pyarrow.csv`` writes strings with ``quoting_style="needed"``; ``\\n`` line ends; the header
+unquoted unless a name needs it.  With pyarrow the rows are written by ``pyarrow.csv`` (whose
 doubles are the shortest round-trip ones: tested), without it by the NumPy formatter of
-:mod:`asymslip.files.numbers`; the two give the same bytes (tested).  A chunk whose text needs
-quotes is written by the NumPy formatter either way (pyarrow would quote every text field).
+:mod:`asymslip.files.numbers`; the two give the same bytes (tested).  Quoting every text field
+keeps the fast writer whatever the text holds (pyarrow can only quote all strings or none);
+CSV readers (pyarrow, pandas, Python's csv) read a quoted number as the number.
 
 Everything goes through :func:`asymslip.files.atomic.atomic_write`: the file appears complete
 when the ``with`` block ends without an error, and not at all otherwise.
@@ -31,7 +33,7 @@ from ..errors import InputError
 from . import arrow
 from .atomic import atomic_write, refuse_same_file
 from .numbers import WIDTH, format_doubles
-from .text import Categorical, TextColumn, quote
+from .text import Categorical, TextColumn, quote, quote_always
 
 Kind = Literal["float", "text", "category"]
 Format = Literal["csv", "parquet"]
@@ -92,7 +94,11 @@ class TableWriter:
             import pyarrow.parquet as pq
 
             self._arrow_schema = pa.schema([(name, _arrow_type(kind)) for name, kind in schema])
-            self._parquet = pq.ParquetWriter(pa.PythonFile(handle, mode="w"), self._arrow_schema)
+            # Dictionary pages only for the category columns: trying them on a million distinct
+            # doubles more than doubles the write time and saves nothing.
+            categories = [name for name, kind in schema if kind == "category"]
+            self._parquet = pq.ParquetWriter(pa.PythonFile(handle, mode="w"), self._arrow_schema,
+                                             use_dictionary=categories)  # fmt: skip
 
     def write(self, chunk: Mapping[str, Column]) -> None:
         """Append rows: one entry per schema column, all of the same length."""
@@ -107,7 +113,7 @@ class TableWriter:
                              schema=self._arrow_schema)  # fmt: skip
             assert self._parquet is not None
             self._parquet.write_table(table)
-        elif self.engine == "pyarrow" and not _needs_quotes(columns, self.schema):
+        elif self.engine == "pyarrow":
             self._write_csv_arrow(columns)
         else:
             for start in range(0, rows, _NUMPY_ROWS):
@@ -122,7 +128,7 @@ class TableWriter:
 
         table = pa.table({name: _arrow_array(columns[name], kind) for name, kind in self.schema})
         sink = pa.BufferOutputStream()
-        options = pcsv.WriteOptions(include_header=False, quoting_style="none")
+        options = pcsv.WriteOptions(include_header=False, quoting_style="needed")
         pcsv.write_csv(table, sink, options)
         self._handle.write(sink.getvalue())
 
@@ -259,18 +265,6 @@ def _arrow_array(column: Column, kind: Kind):  # noqa: ANN202
     return pa.DictionaryArray.from_arrays(indices, pa.array(column.categories, pa.string()))
 
 
-def _needs_quotes(columns: Mapping[str, Column], schema: Sequence[tuple[str, Kind]]) -> bool:
-    for name, _ in schema:
-        column = columns[name]
-        if isinstance(column, TextColumn) and column.needs_quotes():
-            return True
-        if isinstance(column, Categorical):
-            special = [code for code, item in enumerate(column.categories) if quote(item) != item]
-            if special and np.isin(column.codes, special).any():
-                return True
-    return False
-
-
 def _slice(column: Column, start: int, stop: int) -> Column:
     if isinstance(column, TextColumn | Categorical):
         return column.slice(start, min(stop, len(column)))
@@ -300,14 +294,12 @@ def csv_rows(columns: Mapping[str, Column], schema: Sequence[tuple[str, Kind]]) 
         flush()
         column = columns[name]
         if isinstance(column, Categorical):
-            names = [quote(item).encode("utf-8") for item in column.categories] + [b""]
+            names = [quote_always(item).encode("utf-8") for item in column.categories] + [b""]
             segments.append([names[code] for code in column.codes.tolist()])
         else:
             assert isinstance(column, TextColumn)
-            items = column.to_bytes_list()
-            if column.needs_quotes():
-                items = [quote(item.decode("utf-8")).encode("utf-8") for item in items]
-            segments.append(items)
+            segments.append([b'"' + item.replace(b'"', b'""') + b'"'
+                             for item in column.to_bytes_list()])  # fmt: skip
     flush()
     width = 2 * len(segments)
     pieces: list[bytes] = [b","] * (rows * width)

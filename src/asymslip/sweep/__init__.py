@@ -9,8 +9,11 @@ others.  Nothing is dropped: every non-blank input line gives one output line, i
 
 Output columns: the input columns as given, then the JSON keys of ``slip-zone`` flattened
 (``validity.eq24 -> eq24``; ``warnings`` joined by :data:`WARNING_SEPARATOR`), the left edge's
-prefixed ``left_``, then ``error``.  The result is written beside the target and renamed when
-complete: an interrupted sweep leaves no truncated file.
+prefixed ``left_``, then ``error``.  CSV numbers are the shortest text that reads back to the
+same double; ``--out RESULTS.parquet`` writes Parquet (pyarrow, the ``parquet`` extra).  The
+result is written beside the target and renamed when complete: an interrupted sweep leaves no
+truncated file.  Reading and writing go through :mod:`asymslip.files` (pyarrow when it is
+installed, NumPy otherwise, the same bytes either way).
 """
 
 from __future__ import annotations
@@ -24,20 +27,22 @@ from typing import TextIO
 import numpy as np
 
 from ..errors import InputError
-from ..files.atomic import atomic_write, refuse_same_file
+from ..files import CaseTable, Categorical, Progress, WrittenTable, open_table, read_table
+from ..files.atomic import refuse_same_file
+from ..files.writer import Kind, table_format
 from ..laws.base import ContactLaw
 from .columns import (
     CYCLE_COLUMNS,
+    DEFAULTS,
+    PREFIX,
+    REQUIRED_COLUMNS,
     WARNING_SEPARATOR,
     Edges,
     edge_columns,
     edges_of,
     output_columns,
 )
-from .evaluate import evaluate_chunk
-from .progress import Progress
-from .reading import parse_chunk, read_header
-from .writing import _compressed_rows, _quoted, format_numbers
+from .evaluate import FloatArray, evaluate_chunk
 
 __all__ = ["WARNING_SEPARATOR", "SweepSummary", "edge_columns", "output_columns", "sweep_file"]
 
@@ -54,6 +59,8 @@ class SweepSummary:
     out: Path
     seconds: float
     invalid: list[tuple[int, str]] = field(default_factory=list)
+    written: WrittenTable | None = None
+    comment_lines: int = 0
 
     @property
     def rows_per_second(self) -> float:
@@ -61,8 +68,12 @@ class SweepSummary:
 
     def report(self, shown: int = 10) -> str:
         """The stderr summary."""
-        lines = [f"asymslip sweep: {self.rows} rows written to {self.out} in "
+        lines = [f"asymslip sweep: {self.rows:,} rows written to {self.out} in "
                  f"{self.seconds:.2f} s ({self.rows_per_second:,.0f} rows/s)"]  # fmt: skip
+        if self.written is not None:
+            lines.append(f"  {self.written}")
+        if self.comment_lines:
+            lines.append(f"  {self.comment_lines} comment lines of the input were skipped")
         if self.invalid:
             lines.append(f"{len(self.invalid)} invalid rows (reason in the error column):")
             lines.extend(f"  line {line}: {message}" for line, message in self.invalid[:shown])
@@ -71,38 +82,40 @@ class SweepSummary:
         return "\n".join(lines)
 
 
-def _chunk_text(lines: list[bytes], header: list[str], law: ContactLaw, edge: Edges,
-                default_mu: float | None, numbers: np.ndarray) -> tuple[bytes, list[str | None]]:
-    chunk = parse_chunk(lines, numbers, header, default_mu)
-    result = evaluate_chunk(law, {name: chunk.values[name] for name in CYCLE_COLUMNS},
-                            chunk.values["mu"], edge, chunk.errors)  # fmt: skip
-    rows = len(lines)
-    invalid = np.array([error is not None for error in result.errors], dtype=bool)
-    commas = len(header) - 1
-    # The input columns exactly as read; a line with the wrong number of fields gets empty ones.
-    segments = [[line if line.count(b",") == commas else b"," * commas for line in lines]]
+def _schema(header: list[str], edge: Edges) -> list[tuple[str, Kind]]:
+    """Input columns as text, then each edge's numbers and warnings, then the error."""
+    schema: list[tuple[str, Kind]] = [(name, "text") for name in header]
     for side in edges_of(edge):
-        prefix = "" if side == "right" else "left_"
-        blocks = []
-        for column in edge_columns():
-            if column == "warnings":
-                segments.append(_compressed_rows(blocks))
-                texts = result.warnings[prefix + "warnings"]
-                quoted = [_quoted(text) for text in texts.categories]
-                segments.append([quoted[code] for code in texts.codes.tolist()])
-                blocks = []
-                continue
-            values = result.numbers[prefix + column]
-            blocks.append(format_numbers(values, invalid | np.isnan(values)))
-        if blocks:
-            segments.append(_compressed_rows(blocks))
-    segments.append([_quoted(error or "") for error in result.errors])
-    width = 2 * len(segments)
-    pieces: list[bytes] = [b","] * (rows * width)
-    for position, segment in enumerate(segments):
-        pieces[2 * position :: width] = segment
-    pieces[width - 1 :: width] = [b"\n"] * rows
-    return b"".join(pieces), result.errors
+        schema.extend((PREFIX[side] + name, "category" if name == "warnings" else "float")
+                      for name in edge_columns())  # fmt: skip
+    schema.append(("error", "category"))
+    return schema
+
+
+def _cycle_values(part: CaseTable, default_mu: float | None) -> tuple[dict[str, FloatArray],
+                                                                        FloatArray,
+                                                                        list[str | None]]:
+    """The cycle columns and mu of a chunk, defaults filled in, and each row's parse error."""
+    rows = len(part)
+    errors: list[str | None] = [part.errors.get(row) for row in range(rows)]
+    values = {}
+    for name in CYCLE_COLUMNS:
+        if name in part.values:
+            column = part.values[name]
+            if name in DEFAULTS:
+                column = np.where(part.empty[name], DEFAULTS[name], column)
+            values[name] = column
+        else:
+            values[name] = np.full(rows, DEFAULTS[name])
+    fallback = np.nan if default_mu is None else default_mu
+    if "mu" in part.values:
+        mu = np.where(part.empty["mu"], fallback, part.values["mu"])
+        if default_mu is None:
+            for row in np.flatnonzero(part.empty["mu"]).tolist():
+                errors[row] = errors[row] or "mu: missing (give --mu or a value in the mu column)"
+    else:
+        mu = np.full(rows, fallback)
+    return values, mu, errors
 
 
 def sweep_file(
@@ -115,9 +128,8 @@ def sweep_file(
     chunk_rows: int = CHUNK_ROWS,
     progress: bool | None = None,
     stream: TextIO | None = None,
-    workers: int | None = None,
 ) -> SweepSummary:
-    """Evaluate the slip zone of every cycle in ``cases`` and write one CSV row per cycle.
+    """Evaluate the slip zone of every cycle in ``cases`` and write one row per cycle.
 
     Parameters
     ----------
@@ -127,7 +139,8 @@ def sweep_file(
     law
         The contact law.
     out
-        The result CSV (see the module docstring for its columns); never the input file.
+        The results, ``.csv`` or ``.parquet`` (see the module docstring for the columns);
+        never the input file.  Written beside the target and renamed when complete.
     mu
         Coefficient of friction for rows without their own ``mu``.
     edge
@@ -138,8 +151,6 @@ def sweep_file(
         Show a progress bar; default: only when ``stream`` is a terminal.
     stream
         Where the progress bar goes (default ``sys.stderr``).
-    workers
-        Accepted for compatibility; chunks are evaluated in this process.
 
     Returns
     -------
@@ -157,23 +168,32 @@ def sweep_file(
     cases, out = Path(cases), Path(out)
     if edge not in ("right", "left", "both"):
         raise InputError("edge", "must be 'right', 'left' or 'both'", edge)
+    table_format(out, "out")
     refuse_same_file(out, "out", cases)
-    if mu is not None:
-        mu = float(mu)
-    header, lines, numbers = read_header(cases)
-    if mu is None and "mu" not in header:
+    table = read_table(cases, required=REQUIRED_COLUMNS, numeric=("sigma1", "sigma2", "mu"),
+                       option="cases")  # fmt: skip
+    clash = sorted(set(table.header) & set(output_columns([], "both")))
+    if clash:
+        raise InputError("cases", f"{cases}: input column {', '.join(clash)} has the name of "
+                         "an output column; rename it")  # fmt: skip
+    if mu is None and "mu" not in table.header:
         raise InputError("mu", "is required: give --mu or a mu column in the cases file")
-    bar = Progress(len(lines), stream or sys.stderr, progress)
+    default_mu = None if mu is None else float(mu)
     invalid: list[tuple[int, str]] = []
-    with atomic_write(out, "out") as handle:
-        handle.write((",".join(output_columns(header, edge)) + "\n").encode())
-        for begin in range(0, len(lines), chunk_rows):
-            end = begin + chunk_rows
-            text, errors = _chunk_text(lines[begin:end], header, law, edge, mu,
-                                       numbers[begin:end])  # fmt: skip
-            handle.write(text)
-            invalid.extend((int(numbers[begin + row]), message)
-                           for row, message in enumerate(errors) if message is not None)
-            bar.update(min(end, len(lines)))
+    bar = Progress(len(table), stream or sys.stderr, progress)
+    with open_table(out, _schema(table.header, edge), option="out", inputs=[cases]) as writer:
+        for part in table.chunks(chunk_rows):
+            values, friction, errors = _cycle_values(part, default_mu)
+            result = evaluate_chunk(law, values, friction, edge, errors)
+            columns: dict[str, object] = {name: part.text[name] for name in table.header}
+            columns.update(result.numbers)
+            columns.update({name: Categorical(encoded.codes, encoded.categories)
+                            for name, encoded in result.warnings.items()})  # fmt: skip
+            columns["error"] = Categorical.from_strings(result.errors)  # None: no error
+            writer.write(columns)
+            invalid.extend((int(part.line[row]), message)
+                           for row, message in enumerate(result.errors) if message is not None)
+            bar.update(writer.rows)
     bar.close()
-    return SweepSummary(len(lines), out, time.perf_counter() - start, invalid)
+    return SweepSummary(len(table), out, time.perf_counter() - start, invalid, writer.written,
+                        len(table.comments))
