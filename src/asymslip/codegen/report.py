@@ -168,12 +168,19 @@ def _labelled_section(
     return lines
 
 
-def render_report(run: DerivationRun, paper_equations: Mapping[str, str] | None = None) -> str:
+def render_report(
+    run: DerivationRun,
+    paper_equations: Mapping[str, str] | None = None,
+    *,
+    languages: Mapping[str, Sequence[str]] | None = None,
+) -> str:
     """Markdown text of ``generated/report/derivation.md`` for a :class:`DerivationRun`.
 
     Reads ``run.checks`` (EquationCheck records) and ``run.formulas`` (Formula records);
     ``paper_equations`` maps equation numbers to the paper's printed LaTeX (default: the run's
-    own ``paper_equations`` record), used where a check recorded no ``printed`` form.
+    own ``paper_equations`` record), used where a check recorded no ``printed`` form;
+    ``languages`` maps each function to the languages it is emitted in (a column of the table
+    of generated functions).
     """
     checks: list[EquationCheck] = list(run.checks)
     formulas: list[Formula] = list(run.formulas)
@@ -275,13 +282,28 @@ def render_report(run: DerivationRun, paper_equations: Mapping[str, str] | None 
     )
 
     lines += ["## Generated functions", ""]
-    lines += ["| Function | Module | Equations | Derivation |", "| --- | --- | --- | --- |"]
+    if languages is not None:
+        lines += [
+            "Every function is emitted as NumPy (`generated/asymslip_gen/`) and, unless the "
+            "language lacks a function it needs, as C (`generated/c/`), Fortran "
+            "(`generated/fortran/`) and MATLAB/Octave (`generated/matlab/`), from the same "
+            "records.",
+            "",
+        ]
+    header = "| Function | Module | Equations | Derivation |"
+    rule = "| --- | --- | --- | --- |"
+    if languages is not None:
+        header, rule = header + " Languages |", rule + " --- |"
+    lines += [header, rule]
     for formula in sorted(formulas, key=lambda f: (f.module, f.name)):
         equations = ", ".join(f"({label})" for label in formula.equations)
-        lines.append(
+        row = (
             f"| `{formula.name}` | `asymslip_gen.{formula.module}` | {equations} | "
             f"{_source_link(formula.source)} |"
         )
+        if languages is not None:
+            row += f" {', '.join(languages.get(formula.name, ()))} |"
+        lines.append(row)
     lines.append("")
     text = "\n".join(lines)
     # One blank line between blocks, a single trailing newline: stable bytes for the diff.
