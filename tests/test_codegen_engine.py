@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import os
 import subprocess
 import sys
@@ -16,6 +17,7 @@ from asymslip.codegen import Argument, Formula
 from asymslip.codegen.emit import format_source, render_module
 from asymslip.codegen.loader import DERIVATIONS_PACKAGE, import_derivation
 from asymslip.codegen.printer import GeneratedCodePrinter
+from asymslip.codegen.records import RecordError, expression_from_srepr, packaged_formulas
 from asymslip.codegen.runner import run_derivations
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -160,3 +162,36 @@ def test_the_repository_derivations_import_each_other_relatively():
     glossary = import_derivation(ROOT / "derivations", "_glossary")
     assert glossary.__name__ == f"{DERIVATIONS_PACKAGE}._glossary"
     assert str(ROOT / "derivations") not in sys.path
+
+
+def test_every_packaged_formula_record_reads_back_to_the_same_expression():
+    records = json.loads((ROOT / "generated" / "asymslip_gen" / "formulas.json").read_text())
+    formulas = packaged_formulas()
+    assert len(formulas) == len(records["formulas"]) > 0
+    for record in records["formulas"]:
+        formula = formulas[record["name"]]
+        assert sympy.srepr(formula.expr) == record["expr"]
+        assert [arg.name for arg in formula.args] == [arg["name"] for arg in record["args"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "__import__('os').system('true')",
+        "sympify('x')",
+        "Symbol('x').__class__",
+        "Symbol('x', evaluate=exec)",
+        "Symbol('x', foo=True)",
+        "lambda: 0",
+        "[Symbol('x') for _ in ()]",
+    ],
+)
+def test_a_record_holding_anything_but_sympy_expression_data_is_refused(text):
+    with pytest.raises(RecordError):
+        expression_from_srepr(text)
+
+
+def test_records_rebuild_assumptions_and_singletons():
+    expr = expression_from_srepr(sympy.srepr(sympy.pi * sympy.sqrt(a) / x + sympy.Rational(1, 3)))
+    assert expr == sympy.pi * sympy.sqrt(a) / x + sympy.Rational(1, 3)
+    assert next(s for s in expr.free_symbols if s.name == "a").is_positive

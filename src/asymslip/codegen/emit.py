@@ -15,12 +15,14 @@ from .formula import Formula
 from .printer import GeneratedCodePrinter
 
 
-def banner(sources: Sequence[str], command: str = "make generate") -> str:
+def banner(
+    sources: Sequence[str], command: str = "make generate", edit: str = "the derivation"
+) -> str:
     """Header comment of a generated file: where it comes from, and not to edit it.
 
     No timestamps or tool versions, so that regeneration is byte-identical.
     """
-    return commented(banner_lines(sources, command), "#")
+    return commented(banner_lines(sources, command, edit), "#")
 
 
 def _equation_refs(equations: Sequence[str]) -> str:

@@ -39,6 +39,9 @@ def _expression_classes() -> dict[str, type]:
 
 
 _CLASSES = _expression_classes()
+#: Singletons srepr prints as bare names.
+_NAMES = {"pi": sympy.pi, "E": sympy.E, "oo": sympy.oo, "zoo": sympy.zoo, "nan": sympy.nan,
+          "I": sympy.I, "EulerGamma": sympy.EulerGamma, "Catalan": sympy.Catalan}  # fmt: skip
 _KEYWORDS = set(_assume_defined) | {"precision"}
 
 
@@ -53,6 +56,8 @@ def _build(node: ast.AST) -> Any:
         value = _build(node.operand)
         if isinstance(value, (int, float)) and not isinstance(value, bool):
             return -value
+    if isinstance(node, ast.Name) and node.id in _NAMES:
+        return _NAMES[node.id]
     if isinstance(node, (ast.Tuple, ast.List)):
         return tuple(_build(element) for element in node.elts)
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
