@@ -19,7 +19,14 @@
 static const double asymslip_pi = 3.14159265358979323846;
 
 /* Stick-slip boundary b on a proportional load path. See asymslip_gen.h. */
-double asymslip_stick_boundary_proportional(double mu, double lam, double eta, double a1, double a2, double L_I1, double L_I2)
+double asymslip_stick_boundary_proportional(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double a2,
+    double L_I1,
+    double L_I2)
 {
     const double tmp0 = 4*lam;
     const double tmp1 = 4*mu;
@@ -30,7 +37,14 @@ double asymslip_stick_boundary_proportional(double mu, double lam, double eta, d
 }
 
 /* Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) on a proportional path. See asymslip_gen.h. */
-double asymslip_stick_boundary_denominator(double mu, double lam, double eta, double a1, double a2, double L_I1, double L_I2)
+double asymslip_stick_boundary_denominator(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double a2,
+    double L_I1,
+    double L_I2)
 {
     const double tmp0 = 4*lam;
     const double tmp1 = 4*mu;
@@ -39,7 +53,14 @@ double asymslip_stick_boundary_denominator(double mu, double lam, double eta, do
 }
 
 /* Width a1 - b of the slip zone inside the load-state-1 contact. See asymslip_gen.h. */
-double asymslip_slip_zone_width(double mu, double lam, double eta, double a1, double da, double L_I1, double L_I2)
+double asymslip_slip_zone_width(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double da,
+    double L_I1,
+    double L_I2)
 {
     const double tmp0 = 4*mu;
     const double tmp1 = asymslip_pi*eta;
@@ -49,7 +70,14 @@ double asymslip_slip_zone_width(double mu, double lam, double eta, double a1, do
 }
 
 /* Stick-slip boundary b of the steady-state cycle from the edge multipliers. See asymslip_gen.h. */
-double asymslip_stick_boundary(double mu, double a1, double a2, double L_I1, double L_I2, double L_II1, double L_II2)
+double asymslip_stick_boundary(
+    double mu,
+    double a1,
+    double a2,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2)
 {
     const double tmp0 = L_I1*mu + L_II1;
     const double tmp1 = L_I2*mu - L_II2;
@@ -57,7 +85,16 @@ double asymslip_stick_boundary(double mu, double a1, double a2, double L_I1, dou
 }
 
 /* Glide-dislocation density B^{1->2}(a2 - x) inserted on loading. See asymslip_gen.h. */
-double asymslip_dislocation_density(double x, double b, double a1, double mu, double L_I1, double L_I2, double L_II1, double L_II2, double E_star)
+double asymslip_dislocation_density(
+    double x,
+    double b,
+    double a1,
+    double mu,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2,
+    double E_star)
 {
     const double tmp0 = -x;
     const double tmp1 = L_I1*mu + L_II1;
@@ -74,7 +111,14 @@ double asymslip_shear_intensity_rate(double lam, double eta, double a)
 }
 
 /* Slip-zone width d1 = a1 - b of the corrective-stick asymptote [12]. See asymslip_gen.h. */
-double asymslip_corrective_stick_slip_zone_width(double mu, double lam, double eta, double a1, double da, double L_I1, double dP)
+double asymslip_corrective_stick_slip_zone_width(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double da,
+    double L_I1,
+    double dP)
 {
     const double tmp0 = sqrt(2);
     const double tmp1 = sqrt(a1);
@@ -82,7 +126,14 @@ double asymslip_corrective_stick_slip_zone_width(double mu, double lam, double e
 }
 
 /* Corrective-stick stick boundary b of (41) for the Hertzian contact. See asymslip_gen.h. */
-double asymslip_hertz_stick_boundary_corrective_stick(double P1, double dP, double lam, double eta, double mu, double R, double E_star)
+double asymslip_hertz_stick_boundary_corrective_stick(
+    double P1,
+    double dP,
+    double lam,
+    double eta,
+    double mu,
+    double R,
+    double E_star)
 {
     const double tmp0 = sqrt(P1);
     const double tmp1 = sqrt(asymslip_pi);
@@ -97,7 +148,14 @@ double asymslip_hertz_stick_boundary_corrective_stick(double P1, double dP, doub
 }
 
 /* Corrective-stick slip-zone width a1 - b of (41) for Hertz, without cancellation. See asymslip_gen.h. */
-double asymslip_hertz_slip_zone_width_corrective_stick(double P1, double dP, double lam, double eta, double mu, double R, double E_star)
+double asymslip_hertz_slip_zone_width_corrective_stick(
+    double P1,
+    double dP,
+    double lam,
+    double eta,
+    double mu,
+    double R,
+    double E_star)
 {
     const double tmp0 = sqrt(P1);
     const double tmp1 = sqrt(asymslip_pi);
@@ -135,13 +193,25 @@ double asymslip_permanent_stick_load(double P1, double dP, double lam, double mu
 }
 
 /* Exact stick-slip boundary b = a(P_K) of the Hertzian contact. See asymslip_gen.h. */
-double asymslip_hertz_stick_boundary_exact(double P1, double dP, double lam, double mu, double R, double E_star)
+double asymslip_hertz_stick_boundary_exact(
+    double P1,
+    double dP,
+    double lam,
+    double mu,
+    double R,
+    double E_star)
 {
     return 2*sqrt(R)*sqrt(P1 - 1.0/2.0*dP*(lam - mu)/mu)/(sqrt(asymslip_pi)*sqrt(E_star));
 }
 
 /* Exact slip-zone width a1 - a(P_K) of the Hertzian contact, without cancellation. See asymslip_gen.h. */
-double asymslip_hertz_slip_zone_width_exact(double P1, double dP, double lam, double mu, double R, double E_star)
+double asymslip_hertz_slip_zone_width_exact(
+    double P1,
+    double dP,
+    double lam,
+    double mu,
+    double R,
+    double E_star)
 {
     const double tmp0 = 2*sqrt(R)/(sqrt(asymslip_pi)*sqrt(E_star));
     const double tmp1 = dP*(lam - mu)/mu;
@@ -168,7 +238,11 @@ double asymslip_flat_rounded_normal_edge_multiplier(double a, double c, double R
 }
 
 /* Slope dL_I/dP of the rounded-flat edge multiplier at half-width a > c. See asymslip_gen.h. */
-double asymslip_flat_rounded_normal_edge_multiplier_slope(double a, double c, double R, double E_star)
+double asymslip_flat_rounded_normal_edge_multiplier_slope(
+    double a,
+    double c,
+    double R,
+    double E_star)
 {
     (void)R;
     (void)E_star;
@@ -231,13 +305,24 @@ double asymslip_flat_rounded_pressure(double x, double a, double c, double R, do
 }
 
 /* Coefficient C of b(22) - a(P_K) = C dP^2 + O(dP^3) for a generic contact law. See asymslip_gen.h. */
-double asymslip_second_order_stick_boundary_gap(double mu, double lam, double a1, double da_dP, double d2a_dP2)
+double asymslip_second_order_stick_boundary_gap(
+    double mu,
+    double lam,
+    double a1,
+    double da_dP,
+    double d2a_dP2)
 {
     return (1.0/8.0)*(lam - mu)*(lam + mu)*(a1*d2a_dP2 + pow(da_dP, 2))/(a1*pow(mu, 2));
 }
 
 /* The coefficient C of b(22) - a(P_K) = C dP^2 + O(dP^3), from L_I'(P1). See asymslip_gen.h. */
-double asymslip_second_order_stick_boundary_gap_from_multiplier(double mu, double lam, double a1, double da_dP, double L_I1, double dL_I_dP)
+double asymslip_second_order_stick_boundary_gap_from_multiplier(
+    double mu,
+    double lam,
+    double a1,
+    double da_dP,
+    double L_I1,
+    double dL_I_dP)
 {
     return -1.0/16.0*da_dP*(lam - mu)*(lam + mu)*(-L_I1*da_dP + 2*a1*dL_I_dP)/(L_I1*a1*pow(mu, 2));
 }
@@ -280,7 +365,14 @@ double asymslip_hertz_half_width_growth(double P1, double dP, double R, double E
 }
 
 /* First-order Hertz slip-zone width a1 - b, common to the three methods. See asymslip_gen.h. */
-double asymslip_hertz_slip_zone_width_first_order(double P1, double dP, double lam, double eta, double mu, double R, double E_star)
+double asymslip_hertz_slip_zone_width_first_order(
+    double P1,
+    double dP,
+    double lam,
+    double eta,
+    double mu,
+    double R,
+    double E_star)
 {
     const double tmp0 = sqrt(asymslip_pi);
     const double tmp1 = sqrt(P1);
@@ -328,21 +420,37 @@ double asymslip_power_law_half_width(double P, double n, double A, double E_star
 }
 
 /* Growth a(P1 + dP) - a(P1) of the power-law contact, without cancellation. See asymslip_gen.h. */
-double asymslip_power_law_half_width_growth(double P1, double dP, double n, double A, double E_star, double K)
+double asymslip_power_law_half_width_growth(
+    double P1,
+    double dP,
+    double n,
+    double A,
+    double E_star,
+    double K)
 {
     const double tmp0 = 1.0/n;
     return pow(P1/(A*E_star*K), tmp0)*expm1(tmp0*log1p(dP/P1));
 }
 
 /* Normal edge multiplier L_I = sqrt(2) n P/(pi a^(3/2)) of the power law at load P. See asymslip_gen.h. */
-double asymslip_power_law_normal_edge_multiplier(double P, double n, double A, double E_star, double K)
+double asymslip_power_law_normal_edge_multiplier(
+    double P,
+    double n,
+    double A,
+    double E_star,
+    double K)
 {
     const double tmp0 = 1.0/n;
     return sqrt(2)*pow(P, 1 - 3.0/2.0*tmp0)*n*pow(sqrt(A)*sqrt(E_star)*sqrt(K), 3*tmp0)/asymslip_pi;
 }
 
 /* Slope dL_I/dP = (1 - 3/(2n)) L_I/P of the power-law edge multiplier. See asymslip_gen.h. */
-double asymslip_power_law_normal_edge_multiplier_slope(double P, double n, double A, double E_star, double K)
+double asymslip_power_law_normal_edge_multiplier_slope(
+    double P,
+    double n,
+    double A,
+    double E_star,
+    double K)
 {
     return sqrt(2)*pow(pow(A, 3.0/2.0)*pow(E_star, 3.0/2.0)*pow(K, 3.0/2.0)/pow(P, 3.0/2.0), 1.0/n)*(n - 3.0/2.0)/asymslip_pi;
 }
@@ -355,7 +463,14 @@ double asymslip_power_law_hypergeometric_argument(double x, double a)
 }
 
 /* Contact pressure under the power-law punch, given its hypergeometric factor. See asymslip_gen.h. */
-double asymslip_power_law_pressure(double x, double a, double n, double A, double E_star, double K, double hypergeometric)
+double asymslip_power_law_pressure(
+    double x,
+    double a,
+    double n,
+    double A,
+    double E_star,
+    double K,
+    double hypergeometric)
 {
     const double tmp0 = fabs(x);
     return A*E_star*K*pow(a, n - 2)*hypergeometric*n*sqrt(fmax(0, (a - tmp0)*(a + tmp0)))/asymslip_pi;
@@ -370,7 +485,16 @@ double asymslip_wedge_pressure(double x, double a, double A, double E_star)
 }
 
 /* Slip displacement accumulated on loading 1 -> 2, integrated from (15). See asymslip_gen.h. */
-double asymslip_slip_on_loading(double x, double b, double a1, double mu, double L_I1, double L_I2, double L_II1, double L_II2, double E_star)
+double asymslip_slip_on_loading(
+    double x,
+    double b,
+    double a1,
+    double mu,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2,
+    double E_star)
 {
     const double tmp0 = -x;
     const double tmp1 = L_I1*mu + L_II1;
@@ -391,7 +515,14 @@ double asymslip_hertz_pressure(double x, double P, double R, double E_star)
 }
 
 /* Exact q_diff = q2 - q1 of the Hertzian contact (Jaeger-Ciavarella). See asymslip_gen.h. */
-double asymslip_hertz_shear_traction_difference(double x, double P1, double dP, double P_K, double mu, double R, double E_star)
+double asymslip_hertz_shear_traction_difference(
+    double x,
+    double P1,
+    double dP,
+    double P_K,
+    double mu,
+    double R,
+    double E_star)
 {
     const double tmp0 = pow(x, 2);
     const double tmp1 = 1.0/asymslip_pi;
@@ -408,7 +539,16 @@ double asymslip_jaeger_ciavarella_traction_difference(double p2, double p1, doub
 }
 
 /* Asymptotic q_diff = q2 - q1 at the right-hand edge (corrective slip). See asymslip_gen.h. */
-double asymslip_shear_traction_difference(double x, double b, double a1, double a2, double mu, double L_I1, double L_I2, double L_II1, double L_II2)
+double asymslip_shear_traction_difference(
+    double x,
+    double b,
+    double a1,
+    double a2,
+    double mu,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2)
 {
     const double tmp0 = -x;
     const double tmp1 = sqrt(a2 + tmp0);
@@ -427,7 +567,14 @@ double asymslip_contact_growth_measure(double dP, double da_dP, double a1)
 }
 
 /* Exact measure (25) of the slip-zone size, |b - a1| / a1. See asymslip_gen.h. */
-double asymslip_relative_slip_zone_measure(double mu, double lam, double eta, double a1, double da, double L_I1, double L_I2)
+double asymslip_relative_slip_zone_measure(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double da,
+    double L_I1,
+    double L_I2)
 {
     const double tmp0 = 4*mu;
     const double tmp1 = asymslip_pi*eta;
@@ -444,13 +591,25 @@ double asymslip_multiplier_growth_measure(double dP, double dL_I_dP, double L_I1
 }
 
 /* Necessary-condition measure (27), twice the first-order |b - a1| / a1. See asymslip_gen.h. */
-double asymslip_slip_zone_growth_measure(double mu, double lam, double eta, double a1, double dP, double da_dP)
+double asymslip_slip_zone_growth_measure(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double dP,
+    double da_dP)
 {
     return (1.0/4.0)*dP*da_dP*fabs(asymslip_pi*a1*eta + 4*lam - 4*mu)/(a1*mu);
 }
 
 /* First-order stick-boundary ratio b / a1 in the load change dP. See asymslip_gen.h. */
-double asymslip_stick_ratio_first_order(double mu, double lam, double eta, double a1, double dP, double da_dP)
+double asymslip_stick_ratio_first_order(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double dP,
+    double da_dP)
 {
     const double tmp0 = 1.0/a1;
     const double tmp1 = 1.0/mu;
@@ -459,7 +618,13 @@ double asymslip_stick_ratio_first_order(double mu, double lam, double eta, doubl
 }
 
 /* First-order slip-zone width a1 - b, without forming 1 - b/a1. See asymslip_gen.h. */
-double asymslip_slip_zone_width_first_order(double mu, double lam, double eta, double a1, double dP, double da_dP)
+double asymslip_slip_zone_width_first_order(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double dP,
+    double da_dP)
 {
     return (1.0/8.0)*dP*da_dP*(asymslip_pi*a1*eta + 4*lam - 4*mu)/mu;
 }

@@ -58,7 +58,14 @@ extern "C" {
  * Returns:
  *   Stick boundary b, same units as a1.
  */
-double asymslip_stick_boundary_proportional(double mu, double lam, double eta, double a1, double a2, double L_I1, double L_I2);
+double asymslip_stick_boundary_proportional(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double a2,
+    double L_I1,
+    double L_I2);
 
 /**
  * Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) on a proportional path.
@@ -81,7 +88,14 @@ double asymslip_stick_boundary_proportional(double mu, double lam, double eta, d
  * Returns:
  *   C1 + C2 [force/length^(5/2)].
  */
-double asymslip_stick_boundary_denominator(double mu, double lam, double eta, double a1, double a2, double L_I1, double L_I2);
+double asymslip_stick_boundary_denominator(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double a2,
+    double L_I1,
+    double L_I2);
 
 /**
  * Width a1 - b of the slip zone inside the load-state-1 contact.
@@ -106,7 +120,14 @@ double asymslip_stick_boundary_denominator(double mu, double lam, double eta, do
  * Returns:
  *   a1 - b, same units as a1.
  */
-double asymslip_slip_zone_width(double mu, double lam, double eta, double a1, double da, double L_I1, double L_I2);
+double asymslip_slip_zone_width(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double da,
+    double L_I1,
+    double L_I2);
 
 /**
  * Stick-slip boundary b of the steady-state cycle from the edge multipliers.
@@ -132,7 +153,14 @@ double asymslip_slip_zone_width(double mu, double lam, double eta, double a1, do
  * Returns:
  *   Stick boundary b, same units as a1.
  */
-double asymslip_stick_boundary(double mu, double a1, double a2, double L_I1, double L_I2, double L_II1, double L_II2);
+double asymslip_stick_boundary(
+    double mu,
+    double a1,
+    double a2,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2);
 
 /**
  * Glide-dislocation density B^{1->2}(a2 - x) inserted on loading.
@@ -161,7 +189,16 @@ double asymslip_stick_boundary(double mu, double a1, double a2, double L_I1, dou
  * Returns:
  *   Dislocation density B^{1->2}, dimensionless (slip per unit length).
  */
-double asymslip_dislocation_density(double x, double b, double a1, double mu, double L_I1, double L_I2, double L_II1, double L_II2, double E_star);
+double asymslip_dislocation_density(
+    double x,
+    double b,
+    double a1,
+    double mu,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2,
+    double E_star);
 
 /* --------------------------------------------------------------------------------------------
  * corrective_stick: Section 3.2 of the paper: the corrective-stick (full-sliding)
@@ -211,7 +248,14 @@ double asymslip_shear_intensity_rate(double lam, double eta, double a);
  * Returns:
  *   a1 - b, same units as a1.
  */
-double asymslip_corrective_stick_slip_zone_width(double mu, double lam, double eta, double a1, double da, double L_I1, double dP);
+double asymslip_corrective_stick_slip_zone_width(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double da,
+    double L_I1,
+    double dP);
 
 /**
  * Corrective-stick stick boundary b of (41) for the Hertzian contact.
@@ -234,7 +278,14 @@ double asymslip_corrective_stick_slip_zone_width(double mu, double lam, double e
  * Returns:
  *   b [length].
  */
-double asymslip_hertz_stick_boundary_corrective_stick(double P1, double dP, double lam, double eta, double mu, double R, double E_star);
+double asymslip_hertz_stick_boundary_corrective_stick(
+    double P1,
+    double dP,
+    double lam,
+    double eta,
+    double mu,
+    double R,
+    double E_star);
 
 /**
  * Corrective-stick slip-zone width a1 - b of (41) for Hertz, without cancellation.
@@ -258,7 +309,14 @@ double asymslip_hertz_stick_boundary_corrective_stick(double P1, double dP, doub
  * Returns:
  *   a1 - b [length].
  */
-double asymslip_hertz_slip_zone_width_corrective_stick(double P1, double dP, double lam, double eta, double mu, double R, double E_star);
+double asymslip_hertz_slip_zone_width_corrective_stick(
+    double P1,
+    double dP,
+    double lam,
+    double eta,
+    double mu,
+    double R,
+    double E_star);
 
 /* --------------------------------------------------------------------------------------------
  * edge_multipliers: Section 2.1 of the paper: calibrations of the contact-edge multipliers
@@ -368,7 +426,13 @@ double asymslip_permanent_stick_load(double P1, double dP, double lam, double mu
  * Returns:
  *   b [length].
  */
-double asymslip_hertz_stick_boundary_exact(double P1, double dP, double lam, double mu, double R, double E_star);
+double asymslip_hertz_stick_boundary_exact(
+    double P1,
+    double dP,
+    double lam,
+    double mu,
+    double R,
+    double E_star);
 
 /**
  * Exact slip-zone width a1 - a(P_K) of the Hertzian contact, without cancellation.
@@ -395,7 +459,13 @@ double asymslip_hertz_stick_boundary_exact(double P1, double dP, double lam, dou
  * Returns:
  *   a1 - b [length].
  */
-double asymslip_hertz_slip_zone_width_exact(double P1, double dP, double lam, double mu, double R, double E_star);
+double asymslip_hertz_slip_zone_width_exact(
+    double P1,
+    double dP,
+    double lam,
+    double mu,
+    double R,
+    double E_star);
 
 /* --------------------------------------------------------------------------------------------
  * flat_rounded: Flat punch with rounded corners (flat half-width c, corner radius R),
@@ -477,7 +547,11 @@ double asymslip_flat_rounded_normal_edge_multiplier(double a, double c, double R
  * Returns:
  *   dL_I/dP [1/length^(3/2)].
  */
-double asymslip_flat_rounded_normal_edge_multiplier_slope(double a, double c, double R, double E_star);
+double asymslip_flat_rounded_normal_edge_multiplier_slope(
+    double a,
+    double c,
+    double R,
+    double E_star);
 
 /**
  * Chord D = sqrt(a^2 - c^2) of the rounded flat at half-width a (0 for a <= c).
@@ -651,7 +725,12 @@ double asymslip_flat_rounded_pressure(double x, double a, double c, double R, do
  * Returns:
  *   C [length^3/force^2].
  */
-double asymslip_second_order_stick_boundary_gap(double mu, double lam, double a1, double da_dP, double d2a_dP2);
+double asymslip_second_order_stick_boundary_gap(
+    double mu,
+    double lam,
+    double a1,
+    double da_dP,
+    double d2a_dP2);
 
 /**
  * The coefficient C of b(22) - a(P_K) = C dP^2 + O(dP^3), from L_I'(P1).
@@ -673,7 +752,13 @@ double asymslip_second_order_stick_boundary_gap(double mu, double lam, double a1
  * Returns:
  *   C [length^3/force^2].
  */
-double asymslip_second_order_stick_boundary_gap_from_multiplier(double mu, double lam, double a1, double da_dP, double L_I1, double dL_I_dP);
+double asymslip_second_order_stick_boundary_gap_from_multiplier(
+    double mu,
+    double lam,
+    double a1,
+    double da_dP,
+    double L_I1,
+    double dL_I_dP);
 
 /* --------------------------------------------------------------------------------------------
  * hertz: Section 3 of the paper: the Hertzian (cylinder) contact law and its edge
@@ -812,7 +897,14 @@ double asymslip_hertz_half_width_growth(double P1, double dP, double R, double E
  * Returns:
  *   a1 - b [length].
  */
-double asymslip_hertz_slip_zone_width_first_order(double P1, double dP, double lam, double eta, double mu, double R, double E_star);
+double asymslip_hertz_slip_zone_width_first_order(
+    double P1,
+    double dP,
+    double lam,
+    double eta,
+    double mu,
+    double R,
+    double E_star);
 
 /**
  * eps^3 coefficient of (b22 - b_exact)/a1 for Hertz, eps = dP/P1, eta = 0.
@@ -958,7 +1050,13 @@ double asymslip_power_law_half_width(double P, double n, double A, double E_star
  * Returns:
  *   a2 - a1 [length].
  */
-double asymslip_power_law_half_width_growth(double P1, double dP, double n, double A, double E_star, double K);
+double asymslip_power_law_half_width_growth(
+    double P1,
+    double dP,
+    double n,
+    double A,
+    double E_star,
+    double K);
 
 /**
  * Normal edge multiplier L_I = sqrt(2) n P/(pi a^(3/2)) of the power law at load P.
@@ -979,7 +1077,12 @@ double asymslip_power_law_half_width_growth(double P1, double dP, double n, doub
  * Returns:
  *   L_I [force/length^(5/2)].
  */
-double asymslip_power_law_normal_edge_multiplier(double P, double n, double A, double E_star, double K);
+double asymslip_power_law_normal_edge_multiplier(
+    double P,
+    double n,
+    double A,
+    double E_star,
+    double K);
 
 /**
  * Slope dL_I/dP = (1 - 3/(2n)) L_I/P of the power-law edge multiplier.
@@ -1000,7 +1103,12 @@ double asymslip_power_law_normal_edge_multiplier(double P, double n, double A, d
  * Returns:
  *   dL_I/dP [1/length^(3/2)].
  */
-double asymslip_power_law_normal_edge_multiplier_slope(double P, double n, double A, double E_star, double K);
+double asymslip_power_law_normal_edge_multiplier_slope(
+    double P,
+    double n,
+    double A,
+    double E_star,
+    double K);
 
 /**
  * Argument z = 1 - x^2/a^2 of the hypergeometric factor of the power-law pressure.
@@ -1043,7 +1151,14 @@ double asymslip_power_law_hypergeometric_argument(double x, double a);
  * Returns:
  *   p [force/length^2].
  */
-double asymslip_power_law_pressure(double x, double a, double n, double A, double E_star, double K, double hypergeometric);
+double asymslip_power_law_pressure(
+    double x,
+    double a,
+    double n,
+    double A,
+    double E_star,
+    double K,
+    double hypergeometric);
 
 /**
  * Contact pressure (E* A/pi) arccosh(a/|x|) under a wedge (power law with n = 1).
@@ -1100,7 +1215,16 @@ double asymslip_wedge_pressure(double x, double a, double A, double E_star);
  * Returns:
  *   Slip displacement h [length].
  */
-double asymslip_slip_on_loading(double x, double b, double a1, double mu, double L_I1, double L_I2, double L_II1, double L_II2, double E_star);
+double asymslip_slip_on_loading(
+    double x,
+    double b,
+    double a1,
+    double mu,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2,
+    double E_star);
 
 /* --------------------------------------------------------------------------------------------
  * table_law: Beyond the paper: the edge multiplier's slope of a contact law tabulated
@@ -1176,7 +1300,14 @@ double asymslip_hertz_pressure(double x, double P, double R, double E_star);
  * Returns:
  *   q2 - q1 [force/length^2].
  */
-double asymslip_hertz_shear_traction_difference(double x, double P1, double dP, double P_K, double mu, double R, double E_star);
+double asymslip_hertz_shear_traction_difference(
+    double x,
+    double P1,
+    double dP,
+    double P_K,
+    double mu,
+    double R,
+    double E_star);
 
 /**
  * Exact q_diff = q2 - q1 of any symmetric contact without bulk tension.
@@ -1231,7 +1362,16 @@ double asymslip_jaeger_ciavarella_traction_difference(double p2, double p1, doub
  * Returns:
  *   q2 - q1 [force/length^2].
  */
-double asymslip_shear_traction_difference(double x, double b, double a1, double a2, double mu, double L_I1, double L_I2, double L_II1, double L_II2);
+double asymslip_shear_traction_difference(
+    double x,
+    double b,
+    double a1,
+    double a2,
+    double mu,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2);
 
 /* --------------------------------------------------------------------------------------------
  * validity: Section 2.2 of the paper: measures that must be small for the asymptotic
@@ -1277,7 +1417,14 @@ double asymslip_contact_growth_measure(double dP, double da_dP, double a1);
  * Returns:
  *   Dimensionless measure.
  */
-double asymslip_relative_slip_zone_measure(double mu, double lam, double eta, double a1, double da, double L_I1, double L_I2);
+double asymslip_relative_slip_zone_measure(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double da,
+    double L_I1,
+    double L_I2);
 
 /**
  * Measure (26) of the growth of L_I over the cycle, dP |L_I'(P)| / L_I1.
@@ -1316,7 +1463,13 @@ double asymslip_multiplier_growth_measure(double dP, double dL_I_dP, double L_I1
  * Returns:
  *   Dimensionless measure.
  */
-double asymslip_slip_zone_growth_measure(double mu, double lam, double eta, double a1, double dP, double da_dP);
+double asymslip_slip_zone_growth_measure(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double dP,
+    double da_dP);
 
 /**
  * First-order stick-boundary ratio b / a1 in the load change dP.
@@ -1337,7 +1490,13 @@ double asymslip_slip_zone_growth_measure(double mu, double lam, double eta, doub
  * Returns:
  *   b / a1, dimensionless.
  */
-double asymslip_stick_ratio_first_order(double mu, double lam, double eta, double a1, double dP, double da_dP);
+double asymslip_stick_ratio_first_order(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double dP,
+    double da_dP);
 
 /**
  * First-order slip-zone width a1 - b, without forming 1 - b/a1.
@@ -1358,7 +1517,13 @@ double asymslip_stick_ratio_first_order(double mu, double lam, double eta, doubl
  * Returns:
  *   a1 - b, same units as a1.
  */
-double asymslip_slip_zone_width_first_order(double mu, double lam, double eta, double a1, double dP, double da_dP);
+double asymslip_slip_zone_width_first_order(
+    double mu,
+    double lam,
+    double eta,
+    double a1,
+    double dP,
+    double da_dP);
 
 #ifdef __cplusplus
 }

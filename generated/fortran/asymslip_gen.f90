@@ -183,7 +183,8 @@ contains
     !!
     !! Returns:
     !!   Stick boundary b, same units as a1.
-    elemental function asymslip_stick_boundary_proportional(mu, lam, eta, a1, a2, L_I1, L_I2) result(asymslip_result)
+    elemental function asymslip_stick_boundary_proportional(mu, lam, eta, a1, a2, L_I1, L_I2) &
+            result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, eta, a1, a2, L_I1, L_I2
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4
@@ -196,7 +197,8 @@ contains
     end function asymslip_stick_boundary_proportional
 
     !> C binding of asymslip_stick_boundary_proportional (scalar arguments by value).
-    function asymslip_stick_boundary_proportional_c(mu, lam, eta, a1, a2, L_I1, L_I2) result(asymslip_result) &
+    function asymslip_stick_boundary_proportional_c(mu, lam, eta, a1, a2, L_I1, L_I2) &
+            result(asymslip_result) &
             bind(C, name="asymslip_stick_boundary_proportional")
         real(c_double), value, intent(in) :: mu, lam, eta, a1, a2, L_I1, L_I2
         real(c_double) :: asymslip_result
@@ -222,7 +224,8 @@ contains
     !!
     !! Returns:
     !!   C1 + C2 [force/length^(5/2)].
-    elemental function asymslip_stick_boundary_denominator(mu, lam, eta, a1, a2, L_I1, L_I2) result(asymslip_result)
+    elemental function asymslip_stick_boundary_denominator(mu, lam, eta, a1, a2, L_I1, L_I2) &
+            result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, eta, a1, a2, L_I1, L_I2
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0, tmp1, tmp2
@@ -234,7 +237,8 @@ contains
     end function asymslip_stick_boundary_denominator
 
     !> C binding of asymslip_stick_boundary_denominator (scalar arguments by value).
-    function asymslip_stick_boundary_denominator_c(mu, lam, eta, a1, a2, L_I1, L_I2) result(asymslip_result) &
+    function asymslip_stick_boundary_denominator_c(mu, lam, eta, a1, a2, L_I1, L_I2) &
+            result(asymslip_result) &
             bind(C, name="asymslip_stick_boundary_denominator")
         real(c_double), value, intent(in) :: mu, lam, eta, a1, a2, L_I1, L_I2
         real(c_double) :: asymslip_result
@@ -262,7 +266,8 @@ contains
     !!
     !! Returns:
     !!   a1 - b, same units as a1.
-    elemental function asymslip_slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2) result(asymslip_result)
+    elemental function asymslip_slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2) &
+            result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, eta, a1, da, L_I1, L_I2
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0, tmp1, tmp2, tmp3
@@ -303,7 +308,8 @@ contains
     !!
     !! Returns:
     !!   Stick boundary b, same units as a1.
-    elemental function asymslip_stick_boundary(mu, a1, a2, L_I1, L_I2, L_II1, L_II2) result(asymslip_result)
+    elemental function asymslip_stick_boundary(mu, a1, a2, L_I1, L_I2, L_II1, L_II2) &
+            result(asymslip_result)
         real(c_double), intent(in) :: mu, a1, a2, L_I1, L_I2, L_II1, L_II2
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0, tmp1
@@ -313,7 +319,8 @@ contains
     end function asymslip_stick_boundary
 
     !> C binding of asymslip_stick_boundary (scalar arguments by value).
-    function asymslip_stick_boundary_c(mu, a1, a2, L_I1, L_I2, L_II1, L_II2) result(asymslip_result) &
+    function asymslip_stick_boundary_c(mu, a1, a2, L_I1, L_I2, L_II1, L_II2) &
+            result(asymslip_result) &
             bind(C, name="asymslip_stick_boundary")
         real(c_double), value, intent(in) :: mu, a1, a2, L_I1, L_I2, L_II1, L_II2
         real(c_double) :: asymslip_result
@@ -359,7 +366,8 @@ contains
     end function asymslip_dislocation_density
 
     !> C binding of asymslip_dislocation_density (scalar arguments by value).
-    function asymslip_dislocation_density_c(x, b, a1, mu, L_I1, L_I2, L_II1, L_II2, E_star) result(asymslip_result) &
+    function asymslip_dislocation_density_c(x, b, a1, mu, L_I1, L_I2, L_II1, L_II2, E_star) &
+            result(asymslip_result) &
             bind(C, name="asymslip_dislocation_density")
         real(c_double), value, intent(in) :: x, b, a1, mu, L_I1, L_I2, L_II1, L_II2
         real(c_double), value, intent(in) :: E_star
@@ -427,7 +435,8 @@ contains
     !!
     !! Returns:
     !!   a1 - b, same units as a1.
-    elemental function asymslip_corrective_stick_slip_zone_width(mu, lam, eta, a1, da, L_I1, dP) result(asymslip_result)
+    elemental function asymslip_corrective_stick_slip_zone_width(mu, lam, eta, a1, da, L_I1, dP) &
+            result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, eta, a1, da, L_I1, dP
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0, tmp1
@@ -438,7 +447,8 @@ contains
     end function asymslip_corrective_stick_slip_zone_width
 
     !> C binding of asymslip_corrective_stick_slip_zone_width (scalar arguments by value).
-    function asymslip_corrective_stick_slip_zone_width_c(mu, lam, eta, a1, da, L_I1, dP) result(asymslip_result) &
+    function asymslip_corrective_stick_slip_zone_width_c(mu, lam, eta, a1, da, L_I1, dP) &
+            result(asymslip_result) &
             bind(C, name="asymslip_corrective_stick_slip_zone_width")
         real(c_double), value, intent(in) :: mu, lam, eta, a1, da, L_I1, dP
         real(c_double) :: asymslip_result
@@ -485,7 +495,8 @@ contains
     end function asymslip_hertz_stick_boundary_corrective_stick
 
     !> C binding of asymslip_hertz_stick_boundary_corrective_stick (scalar arguments by value).
-    function asymslip_hertz_stick_boundary_corrective_stick_c(P1, dP, lam, eta, mu, R, E_star) result(asymslip_result) &
+    function asymslip_hertz_stick_boundary_corrective_stick_c(P1, dP, lam, eta, mu, R, E_star) &
+            result(asymslip_result) &
             bind(C, name="asymslip_hertz_stick_boundary_corrective_stick")
         real(c_double), value, intent(in) :: P1, dP, lam, eta, mu, R, E_star
         real(c_double) :: asymslip_result
@@ -530,8 +541,10 @@ contains
               4*R*tmp4*tmp7/(asymslip_pi*E_star))/(mu*tmp0)
     end function asymslip_hertz_slip_zone_width_corrective_stick
 
-    !> C binding of asymslip_hertz_slip_zone_width_corrective_stick (scalar arguments by value).
-    function asymslip_hertz_slip_zone_width_corrective_stick_c(P1, dP, lam, eta, mu, R, E_star) result(asymslip_result) &
+    !> C binding of asymslip_hertz_slip_zone_width_corrective_stick (scalar arguments by
+    !! value).
+    function asymslip_hertz_slip_zone_width_corrective_stick_c(P1, dP, lam, eta, mu, R, E_star) &
+            result(asymslip_result) &
             bind(C, name="asymslip_hertz_slip_zone_width_corrective_stick")
         real(c_double), value, intent(in) :: P1, dP, lam, eta, mu, R, E_star
         real(c_double) :: asymslip_result
@@ -615,14 +628,16 @@ contains
     !!
     !! Returns:
     !!   L_II [force/length^(5/2)].
-    elemental function asymslip_shear_edge_multiplier_proportional(lam, eta, a, L_I) result(asymslip_result)
+    elemental function asymslip_shear_edge_multiplier_proportional(lam, eta, a, L_I) &
+            result(asymslip_result)
         real(c_double), intent(in) :: lam, eta, a, L_I
         real(c_double) :: asymslip_result
         asymslip_result = L_I*((1.0d0/4.0d0)*asymslip_pi*a*eta + lam)
     end function asymslip_shear_edge_multiplier_proportional
 
     !> C binding of asymslip_shear_edge_multiplier_proportional (scalar arguments by value).
-    function asymslip_shear_edge_multiplier_proportional_c(lam, eta, a, L_I) result(asymslip_result) &
+    function asymslip_shear_edge_multiplier_proportional_c(lam, eta, a, L_I) &
+            result(asymslip_result) &
             bind(C, name="asymslip_shear_edge_multiplier_proportional")
         real(c_double), value, intent(in) :: lam, eta, a, L_I
         real(c_double) :: asymslip_result
@@ -684,7 +699,8 @@ contains
     !!
     !! Returns:
     !!   b [length].
-    elemental function asymslip_hertz_stick_boundary_exact(P1, dP, lam, mu, R, E_star) result(asymslip_result)
+    elemental function asymslip_hertz_stick_boundary_exact(P1, dP, lam, mu, R, E_star) &
+            result(asymslip_result)
         real(c_double), intent(in) :: P1, dP, lam, mu, R, E_star
         real(c_double) :: asymslip_result
         asymslip_result = 2*sqrt(R)*sqrt(P1 - 1.0d0/2.0d0*dP*(lam - mu)/mu)/( &
@@ -692,7 +708,8 @@ contains
     end function asymslip_hertz_stick_boundary_exact
 
     !> C binding of asymslip_hertz_stick_boundary_exact (scalar arguments by value).
-    function asymslip_hertz_stick_boundary_exact_c(P1, dP, lam, mu, R, E_star) result(asymslip_result) &
+    function asymslip_hertz_stick_boundary_exact_c(P1, dP, lam, mu, R, E_star) &
+            result(asymslip_result) &
             bind(C, name="asymslip_hertz_stick_boundary_exact")
         real(c_double), value, intent(in) :: P1, dP, lam, mu, R, E_star
         real(c_double) :: asymslip_result
@@ -722,7 +739,8 @@ contains
     !!
     !! Returns:
     !!   a1 - b [length].
-    elemental function asymslip_hertz_slip_zone_width_exact(P1, dP, lam, mu, R, E_star) result(asymslip_result)
+    elemental function asymslip_hertz_slip_zone_width_exact(P1, dP, lam, mu, R, E_star) &
+            result(asymslip_result)
         real(c_double), intent(in) :: P1, dP, lam, mu, R, E_star
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0, tmp1
@@ -733,7 +751,8 @@ contains
     end function asymslip_hertz_slip_zone_width_exact
 
     !> C binding of asymslip_hertz_slip_zone_width_exact (scalar arguments by value).
-    function asymslip_hertz_slip_zone_width_exact_c(P1, dP, lam, mu, R, E_star) result(asymslip_result) &
+    function asymslip_hertz_slip_zone_width_exact_c(P1, dP, lam, mu, R, E_star) &
+            result(asymslip_result) &
             bind(C, name="asymslip_hertz_slip_zone_width_exact")
         real(c_double), value, intent(in) :: P1, dP, lam, mu, R, E_star
         real(c_double) :: asymslip_result
@@ -820,7 +839,8 @@ contains
     !!
     !! Returns:
     !!   L_I [force/length^(5/2)].
-    elemental function asymslip_flat_rounded_normal_edge_multiplier(a, c, R, E_star) result(asymslip_result)
+    elemental function asymslip_flat_rounded_normal_edge_multiplier(a, c, R, E_star) &
+            result(asymslip_result)
         real(c_double), intent(in) :: a, c, R, E_star
         real(c_double) :: asymslip_result
         asymslip_result = sqrt(2.0d0)*E_star*sqrt(a)*atan2(sqrt(max(0.0d0, (a - &
@@ -828,7 +848,8 @@ contains
     end function asymslip_flat_rounded_normal_edge_multiplier
 
     !> C binding of asymslip_flat_rounded_normal_edge_multiplier (scalar arguments by value).
-    function asymslip_flat_rounded_normal_edge_multiplier_c(a, c, R, E_star) result(asymslip_result) &
+    function asymslip_flat_rounded_normal_edge_multiplier_c(a, c, R, E_star) &
+            result(asymslip_result) &
             bind(C, name="asymslip_flat_rounded_normal_edge_multiplier")
         real(c_double), value, intent(in) :: a, c, R, E_star
         real(c_double) :: asymslip_result
@@ -850,7 +871,8 @@ contains
     !!
     !! Returns:
     !!   dL_I/dP [1/length^(3/2)].
-    elemental function asymslip_flat_rounded_normal_edge_multiplier_slope(a, c, R, E_star) result(asymslip_result)
+    elemental function asymslip_flat_rounded_normal_edge_multiplier_slope(a, c, R, E_star) &
+            result(asymslip_result)
         real(c_double), intent(in) :: a, c, R, E_star
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0, tmp1
@@ -860,8 +882,10 @@ contains
               *a**(3.0d0/2.0d0)*tmp0*tmp1)
     end function asymslip_flat_rounded_normal_edge_multiplier_slope
 
-    !> C binding of asymslip_flat_rounded_normal_edge_multiplier_slope (scalar arguments by value).
-    function asymslip_flat_rounded_normal_edge_multiplier_slope_c(a, c, R, E_star) result(asymslip_result) &
+    !> C binding of asymslip_flat_rounded_normal_edge_multiplier_slope (scalar arguments by
+    !! value).
+    function asymslip_flat_rounded_normal_edge_multiplier_slope_c(a, c, R, E_star) &
+            result(asymslip_result) &
             bind(C, name="asymslip_flat_rounded_normal_edge_multiplier_slope")
         real(c_double), value, intent(in) :: a, c, R, E_star
         real(c_double) :: asymslip_result
@@ -1124,7 +1148,8 @@ contains
     !!
     !! Returns:
     !!   C [length^3/force^2].
-    elemental function asymslip_second_order_stick_boundary_gap(mu, lam, a1, da_dP, d2a_dP2) result(asymslip_result)
+    elemental function asymslip_second_order_stick_boundary_gap(mu, lam, a1, da_dP, d2a_dP2) &
+            result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, a1, da_dP, d2a_dP2
         real(c_double) :: asymslip_result
         asymslip_result = (1.0d0/8.0d0)*(lam - mu)*(lam + mu)*(a1*d2a_dP2 + &
@@ -1132,7 +1157,8 @@ contains
     end function asymslip_second_order_stick_boundary_gap
 
     !> C binding of asymslip_second_order_stick_boundary_gap (scalar arguments by value).
-    function asymslip_second_order_stick_boundary_gap_c(mu, lam, a1, da_dP, d2a_dP2) result(asymslip_result) &
+    function asymslip_second_order_stick_boundary_gap_c(mu, lam, a1, da_dP, d2a_dP2) &
+            result(asymslip_result) &
             bind(C, name="asymslip_second_order_stick_boundary_gap")
         real(c_double), value, intent(in) :: mu, lam, a1, da_dP, d2a_dP2
         real(c_double) :: asymslip_result
@@ -1165,7 +1191,8 @@ contains
               + 2*a1*dL_I_dP)/(L_I1*a1*mu**2)
     end function asymslip_second_order_stick_boundary_gap_from_multiplier
 
-    !> C binding of asymslip_second_order_stick_boundary_gap_from_multiplier (scalar arguments by value).
+    !> C binding of asymslip_second_order_stick_boundary_gap_from_multiplier (scalar arguments
+    !! by value).
     function asymslip_second_order_stick_boundary_gap_from_multiplier_c(mu, lam, a1, da_dP, &
             L_I1, dL_I_dP) result(asymslip_result) &
             bind(C, name="asymslip_second_order_stick_boundary_gap_from_multiplier")
@@ -1301,7 +1328,8 @@ contains
     !!
     !! Returns:
     !!   dL_I/dP.
-    elemental function asymslip_hertz_normal_edge_multiplier_slope(P, R, E_star) result(asymslip_result)
+    elemental function asymslip_hertz_normal_edge_multiplier_slope(P, R, E_star) &
+            result(asymslip_result)
         real(c_double), intent(in) :: P, R, E_star
         real(c_double) :: asymslip_result
         asymslip_result = (1.0d0/4.0d0)*E_star**(3.0d0/4.0d0)/(asymslip_pi**( &
@@ -1387,7 +1415,8 @@ contains
     end function asymslip_hertz_slip_zone_width_first_order
 
     !> C binding of asymslip_hertz_slip_zone_width_first_order (scalar arguments by value).
-    function asymslip_hertz_slip_zone_width_first_order_c(P1, dP, lam, eta, mu, R, E_star) result(asymslip_result) &
+    function asymslip_hertz_slip_zone_width_first_order_c(P1, dP, lam, eta, mu, R, E_star) &
+            result(asymslip_result) &
             bind(C, name="asymslip_hertz_slip_zone_width_first_order")
         real(c_double), value, intent(in) :: P1, dP, lam, eta, mu, R, E_star
         real(c_double) :: asymslip_result
@@ -1410,13 +1439,15 @@ contains
     !!
     !! Returns:
     !!   Dimensionless coefficient.
-    elemental function asymslip_corrective_slip_discrepancy_third_order(lam, mu) result(asymslip_result)
+    elemental function asymslip_corrective_slip_discrepancy_third_order(lam, mu) &
+            result(asymslip_result)
         real(c_double), intent(in) :: lam, mu
         real(c_double) :: asymslip_result
         asymslip_result = (1.0d0/256.0d0)*lam*(lam - mu)*(lam + mu)/mu**3
     end function asymslip_corrective_slip_discrepancy_third_order
 
-    !> C binding of asymslip_corrective_slip_discrepancy_third_order (scalar arguments by value).
+    !> C binding of asymslip_corrective_slip_discrepancy_third_order (scalar arguments by
+    !! value).
     function asymslip_corrective_slip_discrepancy_third_order_c(lam, mu) result(asymslip_result) &
             bind(C, name="asymslip_corrective_slip_discrepancy_third_order")
         real(c_double), value, intent(in) :: lam, mu
@@ -1438,7 +1469,8 @@ contains
     !!
     !! Returns:
     !!   Dimensionless coefficient.
-    elemental function asymslip_corrective_stick_discrepancy_second_order(lam, mu) result(asymslip_result)
+    elemental function asymslip_corrective_stick_discrepancy_second_order(lam, mu) &
+            result(asymslip_result)
         real(c_double), intent(in) :: lam, mu
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0
@@ -1446,7 +1478,8 @@ contains
         asymslip_result = (1.0d0/32.0d0)*(lam**2 - 2*lam*mu - tmp0)/tmp0
     end function asymslip_corrective_stick_discrepancy_second_order
 
-    !> C binding of asymslip_corrective_stick_discrepancy_second_order (scalar arguments by value).
+    !> C binding of asymslip_corrective_stick_discrepancy_second_order (scalar arguments by
+    !! value).
     function asymslip_corrective_stick_discrepancy_second_order_c(lam, mu) result(asymslip_result) &
             bind(C, name="asymslip_corrective_stick_discrepancy_second_order")
         real(c_double), value, intent(in) :: lam, mu
@@ -1467,7 +1500,8 @@ contains
     !!
     !! Returns:
     !!   Dimensionless coefficient.
-    elemental function asymslip_corrective_stick_discrepancy_third_order(lam, mu) result(asymslip_result)
+    elemental function asymslip_corrective_stick_discrepancy_third_order(lam, mu) &
+            result(asymslip_result)
         real(c_double), intent(in) :: lam, mu
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0
@@ -1476,7 +1510,8 @@ contains
               3*tmp0)/tmp0
     end function asymslip_corrective_stick_discrepancy_third_order
 
-    !> C binding of asymslip_corrective_stick_discrepancy_third_order (scalar arguments by value).
+    !> C binding of asymslip_corrective_stick_discrepancy_third_order (scalar arguments by
+    !! value).
     function asymslip_corrective_stick_discrepancy_third_order_c(lam, mu) result(asymslip_result) &
             bind(C, name="asymslip_corrective_stick_discrepancy_third_order")
         real(c_double), value, intent(in) :: lam, mu
@@ -1601,7 +1636,8 @@ contains
     !!
     !! Returns:
     !!   a2 - a1 [length].
-    elemental function asymslip_power_law_half_width_growth(P1, dP, n, A, E_star, K) result(asymslip_result)
+    elemental function asymslip_power_law_half_width_growth(P1, dP, n, A, E_star, K) &
+            result(asymslip_result)
         real(c_double), intent(in) :: P1, dP, n, A, E_star, K
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0
@@ -1610,7 +1646,8 @@ contains
     end function asymslip_power_law_half_width_growth
 
     !> C binding of asymslip_power_law_half_width_growth (scalar arguments by value).
-    function asymslip_power_law_half_width_growth_c(P1, dP, n, A, E_star, K) result(asymslip_result) &
+    function asymslip_power_law_half_width_growth_c(P1, dP, n, A, E_star, K) &
+            result(asymslip_result) &
             bind(C, name="asymslip_power_law_half_width_growth")
         real(c_double), value, intent(in) :: P1, dP, n, A, E_star, K
         real(c_double) :: asymslip_result
@@ -1634,7 +1671,8 @@ contains
     !!
     !! Returns:
     !!   L_I [force/length^(5/2)].
-    elemental function asymslip_power_law_normal_edge_multiplier(P, n, A, E_star, K) result(asymslip_result)
+    elemental function asymslip_power_law_normal_edge_multiplier(P, n, A, E_star, K) &
+            result(asymslip_result)
         real(c_double), intent(in) :: P, n, A, E_star, K
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0
@@ -1644,7 +1682,8 @@ contains
     end function asymslip_power_law_normal_edge_multiplier
 
     !> C binding of asymslip_power_law_normal_edge_multiplier (scalar arguments by value).
-    function asymslip_power_law_normal_edge_multiplier_c(P, n, A, E_star, K) result(asymslip_result) &
+    function asymslip_power_law_normal_edge_multiplier_c(P, n, A, E_star, K) &
+            result(asymslip_result) &
             bind(C, name="asymslip_power_law_normal_edge_multiplier")
         real(c_double), value, intent(in) :: P, n, A, E_star, K
         real(c_double) :: asymslip_result
@@ -1668,7 +1707,8 @@ contains
     !!
     !! Returns:
     !!   dL_I/dP [1/length^(3/2)].
-    elemental function asymslip_power_law_normal_edge_multiplier_slope(P, n, A, E_star, K) result(asymslip_result)
+    elemental function asymslip_power_law_normal_edge_multiplier_slope(P, n, A, E_star, K) &
+            result(asymslip_result)
         real(c_double), intent(in) :: P, n, A, E_star, K
         real(c_double) :: asymslip_result
         asymslip_result = sqrt(2.0d0)*(A**(3.0d0/2.0d0)*E_star**(3.0d0/2.0d0)*K &
@@ -1676,8 +1716,10 @@ contains
               asymslip_pi
     end function asymslip_power_law_normal_edge_multiplier_slope
 
-    !> C binding of asymslip_power_law_normal_edge_multiplier_slope (scalar arguments by value).
-    function asymslip_power_law_normal_edge_multiplier_slope_c(P, n, A, E_star, K) result(asymslip_result) &
+    !> C binding of asymslip_power_law_normal_edge_multiplier_slope (scalar arguments by
+    !! value).
+    function asymslip_power_law_normal_edge_multiplier_slope_c(P, n, A, E_star, K) &
+            result(asymslip_result) &
             bind(C, name="asymslip_power_law_normal_edge_multiplier_slope")
         real(c_double), value, intent(in) :: P, n, A, E_star, K
         real(c_double) :: asymslip_result
@@ -1735,7 +1777,8 @@ contains
     !!
     !! Returns:
     !!   p [force/length^2].
-    elemental function asymslip_power_law_pressure(x, a, n, A_, E_star, K, hypergeometric) result(asymslip_result)
+    elemental function asymslip_power_law_pressure(x, a, n, A_, E_star, K, hypergeometric) &
+            result(asymslip_result)
         real(c_double), intent(in) :: x, a, n, A_, E_star, K, hypergeometric
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0
@@ -1745,7 +1788,8 @@ contains
     end function asymslip_power_law_pressure
 
     !> C binding of asymslip_power_law_pressure (scalar arguments by value).
-    function asymslip_power_law_pressure_c(x, a, n, A_, E_star, K, hypergeometric) result(asymslip_result) &
+    function asymslip_power_law_pressure_c(x, a, n, A_, E_star, K, hypergeometric) &
+            result(asymslip_result) &
             bind(C, name="asymslip_power_law_pressure")
         real(c_double), value, intent(in) :: x, a, n, A_, E_star, K, hypergeometric
         real(c_double) :: asymslip_result
@@ -1818,7 +1862,8 @@ contains
     !!
     !! Returns:
     !!   Slip displacement h [length].
-    elemental function asymslip_slip_on_loading(x, b, a1, mu, L_I1, L_I2, L_II1, L_II2, E_star) result(asymslip_result)
+    elemental function asymslip_slip_on_loading(x, b, a1, mu, L_I1, L_I2, L_II1, L_II2, E_star) &
+            result(asymslip_result)
         real(c_double), intent(in) :: x, b, a1, mu, L_I1, L_I2, L_II1, L_II2
         real(c_double), intent(in) :: E_star
         real(c_double) :: asymslip_result
@@ -1831,7 +1876,8 @@ contains
     end function asymslip_slip_on_loading
 
     !> C binding of asymslip_slip_on_loading (scalar arguments by value).
-    function asymslip_slip_on_loading_c(x, b, a1, mu, L_I1, L_I2, L_II1, L_II2, E_star) result(asymslip_result) &
+    function asymslip_slip_on_loading_c(x, b, a1, mu, L_I1, L_I2, L_II1, L_II2, E_star) &
+            result(asymslip_result) &
             bind(C, name="asymslip_slip_on_loading")
         real(c_double), value, intent(in) :: x, b, a1, mu, L_I1, L_I2, L_II1, L_II2
         real(c_double), value, intent(in) :: E_star
@@ -1931,7 +1977,8 @@ contains
     !!
     !! Returns:
     !!   q2 - q1 [force/length^2].
-    elemental function asymslip_hertz_shear_traction_difference(x, P1, dP, P_K, mu, R, E_star) result(asymslip_result)
+    elemental function asymslip_hertz_shear_traction_difference(x, P1, dP, P_K, mu, R, E_star) &
+            result(asymslip_result)
         real(c_double), intent(in) :: x, P1, dP, P_K, mu, R, E_star
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4
@@ -1946,7 +1993,8 @@ contains
     end function asymslip_hertz_shear_traction_difference
 
     !> C binding of asymslip_hertz_shear_traction_difference (scalar arguments by value).
-    function asymslip_hertz_shear_traction_difference_c(x, P1, dP, P_K, mu, R, E_star) result(asymslip_result) &
+    function asymslip_hertz_shear_traction_difference_c(x, P1, dP, P_K, mu, R, E_star) &
+            result(asymslip_result) &
             bind(C, name="asymslip_hertz_shear_traction_difference")
         real(c_double), value, intent(in) :: x, P1, dP, P_K, mu, R, E_star
         real(c_double) :: asymslip_result
@@ -2033,7 +2081,8 @@ contains
     end function asymslip_shear_traction_difference
 
     !> C binding of asymslip_shear_traction_difference (scalar arguments by value).
-    function asymslip_shear_traction_difference_c(x, b, a1, a2, mu, L_I1, L_I2, L_II1, L_II2) result(asymslip_result) &
+    function asymslip_shear_traction_difference_c(x, b, a1, a2, mu, L_I1, L_I2, L_II1, L_II2) &
+            result(asymslip_result) &
             bind(C, name="asymslip_shear_traction_difference")
         real(c_double), value, intent(in) :: x, b, a1, a2, mu, L_I1, L_I2, L_II1
         real(c_double), value, intent(in) :: L_II2
@@ -2093,7 +2142,8 @@ contains
     !!
     !! Returns:
     !!   Dimensionless measure.
-    elemental function asymslip_relative_slip_zone_measure(mu, lam, eta, a1, da, L_I1, L_I2) result(asymslip_result)
+    elemental function asymslip_relative_slip_zone_measure(mu, lam, eta, a1, da, L_I1, L_I2) &
+            result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, eta, a1, da, L_I1, L_I2
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4
@@ -2107,7 +2157,8 @@ contains
     end function asymslip_relative_slip_zone_measure
 
     !> C binding of asymslip_relative_slip_zone_measure (scalar arguments by value).
-    function asymslip_relative_slip_zone_measure_c(mu, lam, eta, a1, da, L_I1, L_I2) result(asymslip_result) &
+    function asymslip_relative_slip_zone_measure_c(mu, lam, eta, a1, da, L_I1, L_I2) &
+            result(asymslip_result) &
             bind(C, name="asymslip_relative_slip_zone_measure")
         real(c_double), value, intent(in) :: mu, lam, eta, a1, da, L_I1, L_I2
         real(c_double) :: asymslip_result
@@ -2159,7 +2210,8 @@ contains
     !!
     !! Returns:
     !!   Dimensionless measure.
-    elemental function asymslip_slip_zone_growth_measure(mu, lam, eta, a1, dP, da_dP) result(asymslip_result)
+    elemental function asymslip_slip_zone_growth_measure(mu, lam, eta, a1, dP, da_dP) &
+            result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, eta, a1, dP, da_dP
         real(c_double) :: asymslip_result
         asymslip_result = (1.0d0/4.0d0)*dP*da_dP*abs(3.1415926535897932d0*a1*eta &
@@ -2167,7 +2219,8 @@ contains
     end function asymslip_slip_zone_growth_measure
 
     !> C binding of asymslip_slip_zone_growth_measure (scalar arguments by value).
-    function asymslip_slip_zone_growth_measure_c(mu, lam, eta, a1, dP, da_dP) result(asymslip_result) &
+    function asymslip_slip_zone_growth_measure_c(mu, lam, eta, a1, dP, da_dP) &
+            result(asymslip_result) &
             bind(C, name="asymslip_slip_zone_growth_measure")
         real(c_double), value, intent(in) :: mu, lam, eta, a1, dP, da_dP
         real(c_double) :: asymslip_result
@@ -2191,7 +2244,8 @@ contains
     !!
     !! Returns:
     !!   b / a1, dimensionless.
-    elemental function asymslip_stick_ratio_first_order(mu, lam, eta, a1, dP, da_dP) result(asymslip_result)
+    elemental function asymslip_stick_ratio_first_order(mu, lam, eta, a1, dP, da_dP) &
+            result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, eta, a1, dP, da_dP
         real(c_double) :: asymslip_result
         real(c_double) :: tmp0, tmp1, tmp2
@@ -2203,7 +2257,8 @@ contains
     end function asymslip_stick_ratio_first_order
 
     !> C binding of asymslip_stick_ratio_first_order (scalar arguments by value).
-    function asymslip_stick_ratio_first_order_c(mu, lam, eta, a1, dP, da_dP) result(asymslip_result) &
+    function asymslip_stick_ratio_first_order_c(mu, lam, eta, a1, dP, da_dP) &
+            result(asymslip_result) &
             bind(C, name="asymslip_stick_ratio_first_order")
         real(c_double), value, intent(in) :: mu, lam, eta, a1, dP, da_dP
         real(c_double) :: asymslip_result
@@ -2227,7 +2282,8 @@ contains
     !!
     !! Returns:
     !!   a1 - b, same units as a1.
-    elemental function asymslip_slip_zone_width_first_order(mu, lam, eta, a1, dP, da_dP) result(asymslip_result)
+    elemental function asymslip_slip_zone_width_first_order(mu, lam, eta, a1, dP, da_dP) &
+            result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, eta, a1, dP, da_dP
         real(c_double) :: asymslip_result
         asymslip_result = (1.0d0/8.0d0)*dP*da_dP*(asymslip_pi*a1*eta + 4*lam - 4 &
@@ -2235,7 +2291,8 @@ contains
     end function asymslip_slip_zone_width_first_order
 
     !> C binding of asymslip_slip_zone_width_first_order (scalar arguments by value).
-    function asymslip_slip_zone_width_first_order_c(mu, lam, eta, a1, dP, da_dP) result(asymslip_result) &
+    function asymslip_slip_zone_width_first_order_c(mu, lam, eta, a1, dP, da_dP) &
+            result(asymslip_result) &
             bind(C, name="asymslip_slip_zone_width_first_order")
         real(c_double), value, intent(in) :: mu, lam, eta, a1, dP, da_dP
         real(c_double) :: asymslip_result

@@ -58,8 +58,12 @@ def _c_name(formula_name: str) -> str:
 
 def _signature(reduced: Reduced, printer: CGeneratedPrinter) -> tuple[str, dict[str, str]]:
     names = {arg.name: printer.doprint(arg.symbol) for arg in reduced.formula.args}
-    params = ", ".join(f"double {names[arg.name]}" for arg in reduced.formula.args) or "void"
-    return f"double {_c_name(reduced.formula.name)}({params})", names
+    params = [f"double {names[arg.name]}" for arg in reduced.formula.args] or ["void"]
+    head = f"double {_c_name(reduced.formula.name)}("
+    if len(head) + len(", ".join(params)) + 2 <= 100:
+        return head + ", ".join(params) + ")", names
+    # One parameter per line when the prototype would not fit in 100 columns.
+    return head + "\n" + ",\n".join(f"    {param}" for param in params) + ")", names
 
 
 def _definition(reduced: Reduced, printer: CGeneratedPrinter) -> str:

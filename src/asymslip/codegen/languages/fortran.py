@@ -92,6 +92,11 @@ def _continued(head: str, items: Sequence[str], tail: str, indent: str) -> list[
             lines.append(current.rstrip() + " &")
             current = indent + INDENT * 2
         current += piece
+    if tail.strip() and len(current) + 1 + len(tail) > 100:
+        # The result clause goes on a continuation line of its own.
+        lines.append(current + ") &")
+        current, tail = indent + INDENT * 2 + tail.strip(), ""
+        return [*lines, current]
     lines.append(current + ")" + tail)
     return lines
 
@@ -132,7 +137,8 @@ def _function(item: Reduced) -> tuple[str, list[str]]:
     lines += [inner + line for line in body]
     lines.append(f"{INDENT}end function {name}")
     lines.append("")
-    lines.append(f"{INDENT}!> C binding of {name} (scalar arguments by value).")
+    binding_doc = wrap(f"C binding of {name} (scalar arguments by value).")
+    lines += [f"{INDENT}!> {binding_doc[0]}", *commented(binding_doc[1:], "!!", INDENT).splitlines()]
     lines += _continued(
         f"function {name}_c", args, f" result({RESULT}) &", INDENT
     )
