@@ -18,14 +18,11 @@ from __future__ import annotations
 import re
 from collections import defaultdict
 from collections.abc import Iterable, Mapping, Sequence
-from typing import TYPE_CHECKING
 
 import sympy
 
+from .derivation_run import DerivationRun
 from .formula import EquationCheck, Formula, Status
-
-if TYPE_CHECKING:  # runner imports the engine; the report only reads a finished run
-    from .runner import DerivationRun
 
 PAPER = "Moore, Hills et al., Theoretical and Applied Fracture Mechanics 2022, 103457"
 NUMBERED_EQUATIONS = tuple(str(number) for number in range(1, 52))

@@ -17,15 +17,16 @@ import tempfile
 import time
 from collections import defaultdict
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 from asymslip.files.atomic import atomic_write
 
 from .cse import Reduced, reduce_formula
 from .derivation import Derivation
+from .derivation_run import DerivationRun
 from .emit import format_sources, render_module, render_package_init
-from .formula import EquationCheck, Formula
+from .formula import Formula
 from .languages import LANGUAGES
 from .loader import load_derivations_package
 from .records import FILE as RECORDS_FILE
@@ -33,19 +34,6 @@ from .records import render_records
 from .report import render_report
 
 PACKAGE = "asymslip_gen"
-
-
-@dataclass
-class DerivationRun:
-    """Everything the derivation scripts produced, in a fixed order."""
-
-    formulas: list[Formula] = field(default_factory=list)
-    checks: list[EquationCheck] = field(default_factory=list)
-    module_docs: dict[str, str] = field(default_factory=dict)
-    seconds: dict[str, float] = field(default_factory=dict)
-    #: The paper's printed equations (number -> LaTeX), display only: the derivations
-    #: package's ``PAPER_EQUATIONS``, shown by the report where a check recorded none.
-    paper_equations: dict[str, str] = field(default_factory=dict)
 
 
 def derivation_scripts(directory: Path) -> list[Path]:

@@ -138,7 +138,8 @@ def _function(item: Reduced) -> tuple[str, list[str]]:
     lines.append(f"{INDENT}end function {name}")
     lines.append("")
     binding_doc = wrap(f"C binding of {name} (scalar arguments by value).")
-    lines += [f"{INDENT}!> {binding_doc[0]}", *commented(binding_doc[1:], "!!", INDENT).splitlines()]
+    lines.append(f"{INDENT}!> {binding_doc[0]}")
+    lines += commented(binding_doc[1:], "!!", INDENT).splitlines()
     lines += _continued(
         f"function {name}_c", args, f" result({RESULT}) &", INDENT
     )
