@@ -1905,14 +1905,16 @@ contains
     !!
     !! Returns:
     !!   dL_I/dP [1/length^(3/2)].
-    elemental function asymslip_normal_edge_multiplier_slope_loglog(P, L_I, ds, d2s) result(asymslip_result)
+    elemental function asymslip_normal_edge_multiplier_slope_loglog(P, L_I, ds, d2s) &
+            result(asymslip_result)
         real(c_double), intent(in) :: P, L_I, ds, d2s
         real(c_double) :: asymslip_result
         asymslip_result = L_I*(-d2s/ds - 3.0d0/2.0d0*ds + 1)/P
     end function asymslip_normal_edge_multiplier_slope_loglog
 
     !> C binding of asymslip_normal_edge_multiplier_slope_loglog (scalar arguments by value).
-    function asymslip_normal_edge_multiplier_slope_loglog_c(P, L_I, ds, d2s) result(asymslip_result) &
+    function asymslip_normal_edge_multiplier_slope_loglog_c(P, L_I, ds, d2s) &
+            result(asymslip_result) &
             bind(C, name="asymslip_normal_edge_multiplier_slope_loglog")
         real(c_double), value, intent(in) :: P, L_I, ds, d2s
         real(c_double) :: asymslip_result
@@ -2021,14 +2023,16 @@ contains
     !!
     !! Returns:
     !!   q2 - q1 [force/length^2].
-    elemental function asymslip_jaeger_ciavarella_traction_difference(p2, p1, p_K, mu) result(asymslip_result)
+    elemental function asymslip_jaeger_ciavarella_traction_difference(p2, p1, p_K, mu) &
+            result(asymslip_result)
         real(c_double), intent(in) :: p2, p1, p_K, mu
         real(c_double) :: asymslip_result
         asymslip_result = mu*(p1 + p2 - 2*p_K)
     end function asymslip_jaeger_ciavarella_traction_difference
 
     !> C binding of asymslip_jaeger_ciavarella_traction_difference (scalar arguments by value).
-    function asymslip_jaeger_ciavarella_traction_difference_c(p2, p1, p_K, mu) result(asymslip_result) &
+    function asymslip_jaeger_ciavarella_traction_difference_c(p2, p1, p_K, mu) &
+            result(asymslip_result) &
             bind(C, name="asymslip_jaeger_ciavarella_traction_difference")
         real(c_double), value, intent(in) :: p2, p1, p_K, mu
         real(c_double) :: asymslip_result

@@ -164,6 +164,26 @@ def _hertz_pressure(draw: Draw) -> Points:
     return points
 
 
+def _pressures(draw: Draw) -> Points:
+    """Hertz pressures at P2, P1 and P_K of a forward-slip cycle (each 0 outside its contact)."""
+    points = draw.no_tension_cycle()
+    x = points["a2"] * draw.uniform(-1.2, 1.2)
+    R, E_star = points["R"], points["E_star"]
+    for key, load in (("p2", points["P1"] + points["dP"]), ("p1", points["P1"]),
+                      ("p_K", points["P_K"])):  # fmt: skip
+        a = np.sqrt(4 * R * load / (np.pi * E_star))  # (29)
+        points[key] = E_star / (2 * R) * np.sqrt(np.maximum(0.0, a**2 - x**2))  # (48)
+    return points
+
+
+def _fitted_law(draw: Draw) -> Points:
+    """A law fitted as log a(log P): s' > 0 (where the fit increases), any curvature."""
+    points = draw.law()
+    points["ds"] = draw.uniform(0.1, 2.0)
+    points["d2s"] = draw.uniform(-1.0, 1.0)
+    return points
+
+
 def _power_law(draw: Draw) -> Points:
     return draw.power_law()
 
@@ -232,6 +252,9 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "hertz_pressure": _hertz_pressure,
     "hertz_shear_traction_difference": _hertz_traction,
     "shear_traction_difference": _traction_asymptote,
+    "jaeger_ciavarella_traction_difference": _pressures,
+    # table_law
+    "normal_edge_multiplier_slope_loglog": _fitted_law,
     # flat_rounded
     "flat_rounded_load": _flat_rounded,
     "flat_rounded_load_slope": _flat_rounded,
