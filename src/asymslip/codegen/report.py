@@ -26,7 +26,6 @@ from .formula import EquationCheck, Formula, Status
 
 PAPER = "Moore, Hills et al., Theoretical and Applied Fracture Mechanics 2022, 103457"
 NUMBERED_EQUATIONS = tuple(str(number) for number in range(1, 52))
-REPORT_PATH = "generated/report/derivation.md"
 
 # How symbol names print in LaTeX.  Cosmetic only; unknown names keep SymPy's own rendering.
 SYMBOL_LATEX: dict[str, str] = {

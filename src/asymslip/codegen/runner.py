@@ -1,4 +1,8 @@
-"""Run the derivation scripts, then write, verify or freshness-check the generated package.
+"""Run the derivation scripts, then write, verify or freshness-check everything generated.
+
+One run of the derivations feeds every output: the NumPy package (with ``formulas.json``),
+the C, Fortran and MATLAB/Octave trees (:mod:`asymslip.codegen.languages`) and the derivation
+report, each formula CSE'd once (:mod:`asymslip.codegen.cse`).
 
 The scripts in ``derivations/`` are imported as one package (:mod:`asymslip.codegen.loader`),
 never through ``sys.path``: a script imports its neighbours relatively
