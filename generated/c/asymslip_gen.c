@@ -264,27 +264,49 @@ double asymslip_flat_rounded_corner_angle(double D, double c)
 }
 
 /* flat_rounded_load from the corner angle (and chord) at half-width a. See asymslip_gen.h. */
-double asymslip_flat_rounded_load_at_angle(double a, double c, double R, double E_star, double psi, double D)
+double asymslip_flat_rounded_load_at_angle(
+    double a,
+    double c,
+    double R,
+    double E_star,
+    double psi,
+    double D)
 {
     return (1.0/2.0)*E_star*(-D*c + pow(a, 2)*psi)/R;
 }
 
 /* flat_rounded_load_slope from the corner angle (and chord) at half-width a. See asymslip_gen.h. */
-double asymslip_flat_rounded_load_slope_at_angle(double a, double c, double R, double E_star, double psi)
+double asymslip_flat_rounded_load_slope_at_angle(
+    double a,
+    double c,
+    double R,
+    double E_star,
+    double psi)
 {
     (void)c;
     return E_star*a*psi/R;
 }
 
 /* flat_rounded_normal_edge_multiplier from the corner angle (and chord) at half-width a. See asymslip_gen.h. */
-double asymslip_flat_rounded_normal_edge_multiplier_at_angle(double a, double c, double R, double E_star, double psi)
+double asymslip_flat_rounded_normal_edge_multiplier_at_angle(
+    double a,
+    double c,
+    double R,
+    double E_star,
+    double psi)
 {
     (void)c;
     return sqrt(2)*E_star*sqrt(a)*psi/(asymslip_pi*R);
 }
 
 /* flat_rounded_normal_edge_multiplier_slope from the corner angle (and chord) at half-width a. See asymslip_gen.h. */
-double asymslip_flat_rounded_normal_edge_multiplier_slope_at_angle(double a, double c, double R, double E_star, double psi, double D)
+double asymslip_flat_rounded_normal_edge_multiplier_slope_at_angle(
+    double a,
+    double c,
+    double R,
+    double E_star,
+    double psi,
+    double D)
 {
     (void)R;
     (void)E_star;

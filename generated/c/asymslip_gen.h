@@ -607,7 +607,13 @@ double asymslip_flat_rounded_corner_angle(double D, double c);
  * Returns:
  *   As flat_rounded_load.
  */
-double asymslip_flat_rounded_load_at_angle(double a, double c, double R, double E_star, double psi, double D);
+double asymslip_flat_rounded_load_at_angle(
+    double a,
+    double c,
+    double R,
+    double E_star,
+    double psi,
+    double D);
 
 /**
  * flat_rounded_load_slope from the corner angle (and chord) at half-width a.
@@ -628,7 +634,12 @@ double asymslip_flat_rounded_load_at_angle(double a, double c, double R, double 
  * Returns:
  *   As flat_rounded_load_slope.
  */
-double asymslip_flat_rounded_load_slope_at_angle(double a, double c, double R, double E_star, double psi);
+double asymslip_flat_rounded_load_slope_at_angle(
+    double a,
+    double c,
+    double R,
+    double E_star,
+    double psi);
 
 /**
  * flat_rounded_normal_edge_multiplier from the corner angle (and chord) at half-width a.
@@ -649,7 +660,12 @@ double asymslip_flat_rounded_load_slope_at_angle(double a, double c, double R, d
  * Returns:
  *   As flat_rounded_normal_edge_multiplier.
  */
-double asymslip_flat_rounded_normal_edge_multiplier_at_angle(double a, double c, double R, double E_star, double psi);
+double asymslip_flat_rounded_normal_edge_multiplier_at_angle(
+    double a,
+    double c,
+    double R,
+    double E_star,
+    double psi);
 
 /**
  * flat_rounded_normal_edge_multiplier_slope from the corner angle (and chord) at
@@ -673,7 +689,13 @@ double asymslip_flat_rounded_normal_edge_multiplier_at_angle(double a, double c,
  * Returns:
  *   As flat_rounded_normal_edge_multiplier_slope.
  */
-double asymslip_flat_rounded_normal_edge_multiplier_slope_at_angle(double a, double c, double R, double E_star, double psi, double D);
+double asymslip_flat_rounded_normal_edge_multiplier_slope_at_angle(
+    double a,
+    double c,
+    double R,
+    double E_star,
+    double psi,
+    double D);
 
 /**
  * Contact pressure p(x) under the flat punch with rounded corners; 0 for |x| >= a.

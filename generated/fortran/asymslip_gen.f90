@@ -964,14 +964,16 @@ contains
     !!
     !! Returns:
     !!   As flat_rounded_load.
-    elemental function asymslip_flat_rounded_load_at_angle(a, c, R, E_star, psi, D) result(asymslip_result)
+    elemental function asymslip_flat_rounded_load_at_angle(a, c, R, E_star, psi, D) &
+            result(asymslip_result)
         real(c_double), intent(in) :: a, c, R, E_star, psi, D
         real(c_double) :: asymslip_result
         asymslip_result = (1.0d0/2.0d0)*E_star*(-D*c + a**2*psi)/R
     end function asymslip_flat_rounded_load_at_angle
 
     !> C binding of asymslip_flat_rounded_load_at_angle (scalar arguments by value).
-    function asymslip_flat_rounded_load_at_angle_c(a, c, R, E_star, psi, D) result(asymslip_result) &
+    function asymslip_flat_rounded_load_at_angle_c(a, c, R, E_star, psi, D) &
+            result(asymslip_result) &
             bind(C, name="asymslip_flat_rounded_load_at_angle")
         real(c_double), value, intent(in) :: a, c, R, E_star, psi, D
         real(c_double) :: asymslip_result
@@ -995,14 +997,16 @@ contains
     !!
     !! Returns:
     !!   As flat_rounded_load_slope.
-    elemental function asymslip_flat_rounded_load_slope_at_angle(a, c, R, E_star, psi) result(asymslip_result)
+    elemental function asymslip_flat_rounded_load_slope_at_angle(a, c, R, E_star, psi) &
+            result(asymslip_result)
         real(c_double), intent(in) :: a, c, R, E_star, psi
         real(c_double) :: asymslip_result
         asymslip_result = E_star*a*psi/R
     end function asymslip_flat_rounded_load_slope_at_angle
 
     !> C binding of asymslip_flat_rounded_load_slope_at_angle (scalar arguments by value).
-    function asymslip_flat_rounded_load_slope_at_angle_c(a, c, R, E_star, psi) result(asymslip_result) &
+    function asymslip_flat_rounded_load_slope_at_angle_c(a, c, R, E_star, psi) &
+            result(asymslip_result) &
             bind(C, name="asymslip_flat_rounded_load_slope_at_angle")
         real(c_double), value, intent(in) :: a, c, R, E_star, psi
         real(c_double) :: asymslip_result
@@ -1033,8 +1037,10 @@ contains
         asymslip_result = sqrt(2.0d0)*E_star*sqrt(a)*psi/(asymslip_pi*R)
     end function asymslip_flat_rounded_normal_edge_multiplier_at_angle
 
-    !> C binding of asymslip_flat_rounded_normal_edge_multiplier_at_angle (scalar arguments by value).
-    function asymslip_flat_rounded_normal_edge_multiplier_at_angle_c(a, c, R, E_star, psi) result(asymslip_result) &
+    !> C binding of asymslip_flat_rounded_normal_edge_multiplier_at_angle (scalar arguments by
+    !! value).
+    function asymslip_flat_rounded_normal_edge_multiplier_at_angle_c(a, c, R, E_star, psi) &
+            result(asymslip_result) &
             bind(C, name="asymslip_flat_rounded_normal_edge_multiplier_at_angle")
         real(c_double), value, intent(in) :: a, c, R, E_star, psi
         real(c_double) :: asymslip_result
@@ -1070,7 +1076,8 @@ contains
               **(3.0d0/2.0d0)*psi)
     end function asymslip_flat_rounded_normal_edge_multiplier_slope_at_angle
 
-    !> C binding of asymslip_flat_rounded_normal_edge_multiplier_slope_at_angle (scalar arguments by value).
+    !> C binding of asymslip_flat_rounded_normal_edge_multiplier_slope_at_angle (scalar
+    !! arguments by value).
     function asymslip_flat_rounded_normal_edge_multiplier_slope_at_angle_c(a, c, R, E_star, &
             psi, D) result(asymslip_result) &
             bind(C, name="asymslip_flat_rounded_normal_edge_multiplier_slope_at_angle")

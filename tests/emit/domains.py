@@ -102,9 +102,11 @@ class Draw:
         """A flat punch with rounded corners: a > c >= 0 (c/a up to 0.95, see its doc)."""
         a = self.log_uniform(0.01, 100.0)
         c = a * self.uniform(0.0, 0.95)
+        chord = np.sqrt((a - c) * (a + c))  # D = sqrt(a^2 - c^2)
         return {
             "a": a, "c": c, "R": self.log_uniform(0.1, 10.0),
             "E_star": self.log_uniform(1.0, 1e3), "x": a * self.uniform(-1.2, 1.2),
+            "D": chord, "psi": np.arctan2(chord, c),  # psi = arccos(c/a)
         }  # fmt: skip
 
     def away_from(self, points: np.ndarray, scale: np.ndarray, gap: float) -> np.ndarray:
@@ -261,6 +263,12 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "flat_rounded_normal_edge_multiplier": _flat_rounded,
     "flat_rounded_normal_edge_multiplier_slope": _flat_rounded,
     "flat_rounded_pressure": _flat_rounded,
+    "flat_rounded_chord": _flat_rounded,
+    "flat_rounded_corner_angle": _flat_rounded,
+    "flat_rounded_load_at_angle": _flat_rounded,
+    "flat_rounded_load_slope_at_angle": _flat_rounded,
+    "flat_rounded_normal_edge_multiplier_at_angle": _flat_rounded,
+    "flat_rounded_normal_edge_multiplier_slope_at_angle": _flat_rounded,
     # power_law
     "power_law_load": _power_law,
     "power_law_load_slope": _power_law,
