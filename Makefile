@@ -8,7 +8,8 @@ STAMP  := $(VENV)/.installed-stamp
 EXTRAS := derive,dev,plot,bench,dask,special,parquet
 
 .DEFAULT_GOAL := all
-.PHONY: all env demo generate check-generated verify test bench figures report accuracy clean help
+.PHONY: all env demo generate check-generated verify test test-languages toolchains bench figures report \
+        accuracy clean help
 
 all: generate demo ## set up the environment, regenerate the formulas, print the demo
 
@@ -24,10 +25,10 @@ $(STAMP): pyproject.toml
 
 env: $(STAMP) ## create .venv and install asymslip with its extras
 
-generate: $(STAMP) ## run the derivations, write generated/asymslip_gen and the report
-	$(PY) -m asymslip.codegen generate --report generated/report/derivation.md
+generate: $(STAMP) ## run the derivations once; write generated/{asymslip_gen,c,fortran,matlab,report}
+	$(PY) -m asymslip.codegen generate
 
-check-generated: $(STAMP) ## regenerate (two hash seeds) and diff against the committed package
+check-generated: $(STAMP) ## regenerate every tree under two hash seeds and diff against the committed
 	$(PY) -m asymslip.codegen check
 
 verify: $(STAMP) ## run every derivation, one line per paper equation
@@ -44,6 +45,12 @@ figures: $(STAMP) ## write generated/figures/fig5.png and fig5.csv (the paper's 
 
 report: $(STAMP) ## write generated/report/derivation.md from the derivation records
 	$(PY) -m asymslip.codegen report
+
+toolchains: ## install gfortran and Octave where missing (Debian, as root; quiet, idempotent)
+	@.ci/install-toolchains
+
+test-languages: $(STAMP) toolchains ## compile the C and Fortran, run the MATLAB files, compare with NumPy
+	$(PY) -m pytest tests/emit
 
 bench: $(STAMP) ## benchmark ratios measured in one process (needs the bench extra)
 	$(PY) tests/benchmarks/run_benchmarks.py

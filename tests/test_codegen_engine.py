@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import json
+import os
+import subprocess
 import sys
 import textwrap
 from pathlib import Path
@@ -14,6 +17,7 @@ from asymslip.codegen import Argument, Formula
 from asymslip.codegen.emit import format_source, render_module
 from asymslip.codegen.loader import DERIVATIONS_PACKAGE, import_derivation
 from asymslip.codegen.printer import GeneratedCodePrinter
+from asymslip.codegen.records import RecordError, expression_from_srepr, packaged_formulas
 from asymslip.codegen.runner import run_derivations
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -69,11 +73,37 @@ def test_common_subexpressions_become_numbered_temporaries():
     assert source.count("a - x") == 1
 
 
-def test_rendering_is_byte_identical_on_repetition():
-    expr = sympy.sqrt(sympy.Max(0, a - x)) / (a + x) + sympy.pi * a**2
-    first = format_source(render_module("demo", "Demo.", [_formula(expr)]))
-    second = format_source(render_module("demo", "Demo.", [_formula(expr)]))
-    assert first == second
+RENDER_EVERYTHING = """
+import hashlib
+from asymslip.codegen.cse import reduce_formula
+from asymslip.codegen.emit import format_source, render_module
+from asymslip.codegen.languages import LANGUAGES
+from asymslip.codegen.records import render_records
+from tests.emit.synthetic import FORMULAS, SPECIAL
+
+docs = {"synthetic": "Synthetic."}
+texts = [format_source(render_module("synthetic", docs["synthetic"], FORMULAS)),
+         render_records([*FORMULAS, SPECIAL])]
+reduced = [reduce_formula(formula) for formula in (*FORMULAS, SPECIAL)]
+for language in LANGUAGES:
+    files = language.render(reduced, docs).files
+    texts += [name + "\\n" + files[name] for name in sorted(files)]
+print(hashlib.sha256("\\0".join(texts).encode()).hexdigest())
+"""
+
+
+def test_every_language_renders_the_same_bytes_under_different_hash_seeds():
+    # Separate interpreters: string hashing (set and dict order of symbols) is fixed per
+    # process, so only fresh processes with different PYTHONHASHSEED can expose a dependence.
+    digests = set()
+    for seed in ("0", "1", "4242"):
+        completed = subprocess.run(
+            [sys.executable, "-c", RENDER_EVERYTHING], cwd=ROOT, capture_output=True, text=True,
+            env={**os.environ, "PYTHONHASHSEED": seed}, timeout=300,
+        )  # fmt: skip
+        assert completed.returncode == 0, completed.stderr
+        digests.add(completed.stdout.strip())
+    assert len(digests) == 1
 
 
 def _write_tiny_derivations(folder):
@@ -132,3 +162,36 @@ def test_the_repository_derivations_import_each_other_relatively():
     glossary = import_derivation(ROOT / "derivations", "_glossary")
     assert glossary.__name__ == f"{DERIVATIONS_PACKAGE}._glossary"
     assert str(ROOT / "derivations") not in sys.path
+
+
+def test_every_packaged_formula_record_reads_back_to_the_same_expression():
+    records = json.loads((ROOT / "generated" / "asymslip_gen" / "formulas.json").read_text())
+    formulas = packaged_formulas()
+    assert len(formulas) == len(records["formulas"]) > 0
+    for record in records["formulas"]:
+        formula = formulas[record["name"]]
+        assert sympy.srepr(formula.expr) == record["expr"]
+        assert [arg.name for arg in formula.args] == [arg["name"] for arg in record["args"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "__import__('os').system('true')",
+        "sympify('x')",
+        "Symbol('x').__class__",
+        "Symbol('x', evaluate=exec)",
+        "Symbol('x', foo=True)",
+        "lambda: 0",
+        "[Symbol('x') for _ in ()]",
+    ],
+)
+def test_a_record_holding_anything_but_sympy_expression_data_is_refused(text):
+    with pytest.raises(RecordError):
+        expression_from_srepr(text)
+
+
+def test_records_rebuild_assumptions_and_singletons():
+    expr = expression_from_srepr(sympy.srepr(sympy.pi * sympy.sqrt(a) / x + sympy.Rational(1, 3)))
+    assert expr == sympy.pi * sympy.sqrt(a) / x + sympy.Rational(1, 3)
+    assert next(s for s in expr.free_symbols if s.name == "a").is_positive

@@ -5,15 +5,17 @@ from __future__ import annotations
 import subprocess
 import sys
 import textwrap
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import asymslip_gen as gen
 from asymslip import HertzLaw, InputError, LoadCycle, slip_zone
+from asymslip.codegen.law_module import derive_law_module, write_law_module
 from asymslip.laws.module_law import ModuleLaw
-from asymslip.user_law import derive_law_module
 
+ROOT = Path(__file__).resolve().parents[1]
 HERTZ = "pi*E_star*a**2/(4*R)"  # (29) as P(a)
 
 
@@ -170,3 +172,175 @@ def test_missing_and_unknown_parameter_values_are_refused(hertz_module):
         ModuleLaw.from_file(hertz_module, R=1.0, E_star=1.0, G=3.0)
     with pytest.raises(InputError, match=r"^R: must be finite"):
         ModuleLaw.from_file(hertz_module, R=float("nan"), E_star=1.0)
+
+
+# --- What SymPy establishes at derive time (issue 9) ------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "formula, params, message",
+    [
+        ("1/a", [], r"decreases with a: dP/da = -1/a\*\*2 is <= 0 for every a > 0"),
+        ("k - a", ["k"], r"decreases with a: dP/da = -1 is <= 0 for every a > 0"),
+        ("-exp(-a)", [], r"is not positive where it increases: P\(a\) <= 0 for a in \(0, oo\)"),
+        ("a*(a - 1)*(a - 2)", [], r"is not monotonic: dP/da = 3\*a\*\*2 - 6\*a \+ 2 is > 0 on "
+         r"separate intervals"),
+    ],
+)
+def test_a_law_that_is_provably_not_an_incomplete_contact_law_is_refused_with_its_reason(
+    formula, params, message, tmp_path
+):
+    out = tmp_path / "bad.py"
+    out.write_text("# kept\n")
+    with pytest.raises(InputError, match=r"^P_of_a: " + message):
+        derive_law_module(formula, params, "bad", out)
+    assert out.read_text() == "# kept\n"  # an existing file is never half-replaced
+
+
+def _range(path, **params):
+    law = ModuleLaw.from_file(path, **params)
+    values = list(law.params.values())
+    module = law.module
+    bounds = [float(getattr(module, name)(*values)) for name in
+              ("half_width_minimum", "half_width_maximum", "load_minimum", "load_maximum")]
+    return module, bounds
+
+
+def test_a_cubic_law_records_where_it_increases_and_its_largest_load(tmp_path):
+    # P = E a^2 - k a^3: dP/da = 2 E a - 3 k a^2 > 0 for a < 2E/(3k), where P = 4 E^3/(27 k^2).
+    written = write_law_module("E_star*a**2 - k*a**3", ["E_star", "k"], "cubic",
+                               tmp_path / "cubic.py")  # fmt: skip
+    module, (a_min, a_max, P_min, P_max) = _range(written.path, E_star=3.0, k=2.0)
+    assert (a_min, P_min) == (0.0, 0.0)
+    assert a_max == pytest.approx(2 * 3.0 / (3 * 2.0), rel=1e-15)
+    assert P_max == pytest.approx(4 * 3.0**3 / (27 * 2.0**2), rel=1e-15)
+    assert module.__asymslip_law__["range"]["established"] is True
+    assert "for 0 < a < 2*E_star/(3*k)" in written.range_summary
+    assert "up to 4*E_star**3/(27*k**2)" in written.range_summary
+
+
+def test_a_bounded_law_records_its_supremum(tmp_path):
+    written = write_law_module("k*tanh(a)", ["k"], "bounded", tmp_path / "bounded.py")
+    _, bounds = _range(written.path, k=7.0)
+    assert bounds == [0.0, np.inf, 0.0, 7.0]
+    assert "for every a > 0" in written.range_summary and "up to k" in written.range_summary
+
+
+def test_a_law_negative_at_small_half_widths_starts_where_it_turns_positive(tmp_path):
+    # P = a^2 - c a < 0 for a < c, decreasing for a < c/2: valid from a = c, load 0.
+    written = write_law_module("a**2 - c*a", ["c"], "offset", tmp_path / "offset.py")
+    _, bounds = _range(written.path, c=4.0)
+    assert bounds == [4.0, np.inf, 0.0, np.inf]
+
+
+def test_the_hertz_law_is_valid_for_every_half_width_and_load(hertz_module):
+    _, bounds = _range(hertz_module, R=1.0, E_star=1.0)
+    assert bounds == [0.0, np.inf, 0.0, np.inf]
+
+
+def test_what_sympy_cannot_settle_is_recorded_as_not_established(tmp_path):
+    # dP/da = cos(a) + 2 > 0, which SymPy cannot prove: the law is kept, flagged, not refused.
+    written = write_law_module("sin(a) + 2*a", [], "wavy", tmp_path / "wavy.py")
+    module = ModuleLaw.from_file(written.path).module
+    assert module.__asymslip_law__["range"]["established"] is False
+    assert written.range_summary.startswith("Where P(a) is positive and increasing was not "
+                                            "established symbolically")  # fmt: skip
+
+
+def test_check_values_must_be_positive_as_the_parameters_are(tmp_path):
+    with pytest.raises(InputError, match=r"^check: k must be > 0 \(parameters are positive"):
+        derive_law_module("k*a**2", ["k"], "law", tmp_path / "law.py", check={"k": -1.0},
+                          check_half_widths=[1.0])  # fmt: skip
+    with pytest.raises(InputError, match=r"^check_a: half-widths must be > 0"):
+        derive_law_module("k*a**2", ["k"], "law", tmp_path / "law.py", check={"k": 1.0},
+                          check_half_widths=[0.0])  # fmt: skip
+
+
+def test_an_unwritable_out_is_one_error_naming_out(tmp_path):
+    with pytest.raises(InputError, match=r"^out: cannot write .*missing/law\.py"):
+        derive_law_module("a**2", [], "law", tmp_path / "missing" / "law.py")
+
+
+def test_the_calibration_comes_from_the_packaged_records_and_equals_the_derivation():
+    from asymslip.codegen.law_module import calibration
+    from asymslip.codegen.loader import import_derivation
+
+    expr, a, dP_da = calibration()
+    derived = import_derivation(ROOT / "derivations", "section2_calibrations").normal_multiplier()
+    assert expr == derived
+    assert (a.name, a.is_positive, dP_da.name) == ("a", True, "dP_da")
+
+
+def test_derive_imports_neither_the_derivations_nor_anything_through_sys_path(tmp_path):
+    script = textwrap.dedent(f"""
+        import sys
+        path = list(sys.path)
+        from asymslip.codegen.law_module import derive_law_module
+        derive_law_module("pi*E_star*a**2/(4*R)", ["R", "E_star"], "h", {str(tmp_path / 'h.py')!r})
+        assert sys.path == path, "sys.path changed"
+        print(sorted(m for m in sys.modules if "derivations" in m or m in ("_glossary",)))
+    """)
+    completed = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                               cwd=tmp_path)  # fmt: skip
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout.strip() == "[]"
+
+
+def _cli(*args, cwd, capsys, monkeypatch):
+    """The command line in this process (main() as the console script calls it)."""
+    from asymslip.cli import main
+
+    monkeypatch.chdir(cwd)
+    status = main(list(args))
+    captured = capsys.readouterr()
+    return subprocess.CompletedProcess(args, status, captured.out, captured.err)
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["--P-of-a", "1/a"], "--P-of-a: decreases with a: dP/da = -1/a**2 is <= 0"),
+        (["--P-of-a", "k - a", "--params", "k"], "--P-of-a: decreases with a: dP/da = -1 is"),
+        (["--P-of-a", "a**2", "--out", "missing/law.py"], "--out: cannot write missing/law.py"),
+        (["--P-of-a", "k*a", "--params", "k", "--check", "k=-2", "--check-a", "1"],
+         "--check: k must be > 0"),
+        (["--P-of-a", "a**2", "--check-a", "-1"], "--check-a: half-widths must be > 0"),
+        (["--P-of-a", "foo(a)"], "--P-of-a: unknown name foo"),
+    ],
+)
+def test_every_derive_failure_is_one_line_naming_the_option_with_exit_status_2(
+    args, message, tmp_path, capsys, monkeypatch
+):
+    if "--out" not in args:
+        args = [*args, "--out", "law.py"]
+    completed = _cli("derive", "--name", "law", *args, cwd=tmp_path, capsys=capsys,
+                     monkeypatch=monkeypatch)  # fmt: skip
+    assert completed.returncode == 2
+    assert completed.stdout == ""
+    lines = completed.stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"asymslip: error: {message}"), lines
+    assert not (tmp_path / "law.py").exists()
+
+
+def test_derive_says_where_the_law_is_valid(tmp_path, capsys, monkeypatch):
+    completed = _cli("derive", "--P-of-a", "E_star*a**2 - k*a**3", "--params", "E_star k",
+                     "--name", "cubic", "--out", "cubic.py", cwd=tmp_path, capsys=capsys,
+                     monkeypatch=monkeypatch)  # fmt: skip
+    assert completed.returncode == 0, completed.stderr
+    assert ("P(a) is positive and increasing for 0 < a < 2*E_star/(3*k) (SymPy, positive "
+            "parameters); loads from 0 up to 4*E_star**3/(27*k**2)") in completed.stdout
+
+
+def test_derive_without_sympy_is_one_line_naming_the_extra(tmp_path):
+    script = (
+        "import sys; sys.modules['sympy'] = None; sys.modules['mpmath'] = None\n"
+        "from asymslip.cli import main\n"
+        "sys.exit(main(['derive', '--P-of-a', 'a**2', '--name', 'law', '--out', 'law.py']))\n"
+    )
+    completed = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                               cwd=tmp_path)  # fmt: skip
+    assert completed.returncode == 2
+    assert completed.stderr.splitlines() == [
+        "asymslip: error: derive: needs SymPy: install asymslip with the derive extra "
+        "(pip install 'asymslip[derive]')"
+    ]

@@ -320,7 +320,7 @@ def bench_generate(runs: int) -> list[Row]:
     for _ in range(runs):
         with tempfile.TemporaryDirectory() as scratch:
             command = [sys.executable, "-m", "asymslip.codegen", "generate",
-                       "--out", str(Path(scratch) / "asymslip_gen"), "--quiet"]  # fmt: skip
+                       "--root", scratch, "--quiet"]  # fmt: skip
             start = time.perf_counter()
             completed = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
             times.append(time.perf_counter() - start)

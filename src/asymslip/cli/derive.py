@@ -14,8 +14,13 @@ def register(commands: argparse._SubParsersAction) -> None:
         "derive",
         help="derive a contact law P(a) given as a formula into a law module",
         description="Parse P(a), differentiate it, apply the calibration (19) and write a "
-        "NumPy module (use it with --law module --module FILE --param NAME=VALUE).  Needs "
-        "SymPy (the derive extra).",
+        "NumPy module (use it with --law module --module FILE --param NAME=VALUE).  The "
+        "half-width a and every parameter are taken to be positive real numbers (moduli, "
+        "radii, coefficients): write a negative coefficient with its minus sign.  A law that "
+        "provably decreases, or is nowhere positive where it increases, is refused; otherwise "
+        "the range of a and of the load where it is positive and increasing is established "
+        "symbolically where SymPy can and recorded in the module.  Needs SymPy (the derive "
+        "extra).",
     )
     derive.add_argument("--P-of-a", dest="P_of_a", required=True, metavar="EXPR",
                         help='the normal load as a formula in a, e.g. "pi*E_star*a**2/(4*R)"')
@@ -32,13 +37,15 @@ def register(commands: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..user_law import derive_law_module
+    from ..codegen.law_module import write_law_module
 
     params = [name for name in args.params.replace(",", " ").split() if name]
-    out = derive_law_module(args.P_of_a, params, args.name, args.out,
-                            check=parse_assignments("check", args.check),
-                            check_half_widths=args.check_a)  # fmt: skip
+    written = write_law_module(args.P_of_a, params, args.name, args.out,
+                               check=parse_assignments("check", args.check),
+                               check_half_widths=args.check_a)  # fmt: skip
+    out = written.path
     settings = " ".join(f"--param {name}=VALUE" for name in params)
     print(f"wrote {out}: load, load_slope, normal_edge_multiplier, normal_edge_multiplier_slope")
+    print(written.range_summary)
     print(f"use it with: --law module --module {out} {settings}".rstrip())
     return 0

@@ -57,7 +57,7 @@ OPTION_OF = {
     "edge": "--edge", "x": "--x", "b": "--b", "c": "--flat-half-width", "A": "--A", "n": "--n",
     "table": "--table", "module": "--module", "param": "--param", "P_of_a": "--P-of-a",
     "params": "--params", "name": "--name", "out": "--out", "check": "--check",
-    "cases": "CASES", "chunk_rows": "--chunk-rows", "workers": "--workers",
+    "check_a": "--check-a", "cases": "CASES", "chunk_rows": "--chunk-rows", "workers": "--workers",
     "cycle": "the load cycle (--P1 --Q1 --P2 --Q2 --sigma1 --sigma2 --mu)",
     "figure": "figure", "derive": "derive", "P": "--P1/--P2",
 }  # fmt: skip

@@ -1,4 +1,11 @@
-"""``python -m asymslip.codegen {generate,verify,check,report}``: the Makefile's entry points."""
+"""``python -m asymslip.codegen {generate,verify,check,report}``: the Makefile's entry points.
+
+``generate`` runs every derivation once and writes, from that one run's records, the NumPy
+package (``asymslip_gen/``, with ``formulas.json``), the C, Fortran and MATLAB/Octave trees
+(``c/``, ``fortran/``, ``matlab/``) and the derivation report (``report/derivation.md``) under
+the generated root.  ``check`` does the same under two hash seeds into a temporary folder and
+diffs every tree against the committed one.
+"""
 
 from __future__ import annotations
 
@@ -7,15 +14,13 @@ import sys
 import time
 from pathlib import Path
 
-from .report import REPORT_PATH, render_report
 from .runner import (
-    check_figure_data,
+    REPORT_FOLDER,
     check_fresh,
     print_verification,
-    render_package,
+    render_all,
     run_derivations,
-    write_package,
-    write_report,
+    write_generated,
 )
 
 ROOT = Path.cwd()
@@ -25,52 +30,43 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
         prog="python -m asymslip.codegen",
         description="Run the SymPy derivations and write, verify or freshness-check the "
-        "generated asymslip_gen package.",
+        "generated code (NumPy, C, Fortran, MATLAB/Octave) and the derivation report.",
     )
     commands = parser.add_subparsers(dest="command", required=True)
     for name, help_text in [
-        ("generate", "run every derivation and write generated/asymslip_gen"),
+        ("generate", "run every derivation and write every generated tree and the report"),
         ("verify", "run every derivation and print one line per paper equation"),
-        ("check", "regenerate into a temporary folder and diff against the committed package "
-         "and report"),
-        ("report", "run every derivation and write the derivation report (Markdown)"),
+        ("check", "regenerate under two hash seeds into a temporary folder and diff every "
+         "generated tree and the report against the committed ones"),
+        ("report", "run every derivation and write the derivation report only"),
     ]:
         sub = commands.add_parser(name, help=help_text, description=help_text)
         sub.add_argument("--derivations", type=Path, default=ROOT / "derivations",
                          help="folder of derivation scripts (default: ./derivations)")
-        sub.add_argument("--out", type=Path, default=ROOT / "generated" / "asymslip_gen",
-                         help="generated package folder (default: ./generated/asymslip_gen)")
+        sub.add_argument("--root", type=Path, default=ROOT / "generated",
+                         help="the generated root holding asymslip_gen/, c/, fortran/, "
+                         "matlab/ and report/ (default: ./generated)")
         sub.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
-        if name != "verify":
-            # generate writes the report only when asked (so `generate --out tmp` touches
-            # nothing else); report and check default to the committed report.
-            default = None if name == "generate" else ROOT / REPORT_PATH
-            sub.add_argument("--report", type=Path, default=default,
-                             help=f"derivation report (report/check default: ./{REPORT_PATH})")
     args = parser.parse_args(argv)
 
     if args.command == "check":
-        status = check_fresh(args.derivations, args.out, report=args.report)
-        # The figure data come from the committed package: compare them only once it is fresh.
-        return status or check_figure_data(ROOT / "generated" / "figures")
+        return check_fresh(args.derivations, args.root)
     start = time.perf_counter()
     run = run_derivations(args.derivations, progress=not args.quiet)
-    if args.command != "verify" and args.report is not None:
-        write_report(render_report(run), args.report)
-        if not args.quiet:
-            print(f"wrote {args.report}", file=sys.stderr)
-    if args.command == "generate":
-        files = render_package(run)
-        write_package(files, args.out)
-        if not args.quiet:
-            print(
-                f"wrote {len(files)} files, {len(run.formulas)} functions to {args.out} "
-                f"in {time.perf_counter() - start:.1f} s",
-                file=sys.stderr,
-            )
-    elif args.command == "verify":
+    if args.command == "verify":
         print_verification(run)
         print(f"total {time.perf_counter() - start:.1f} s")
+        return 0
+    generated = render_all(run)
+    folders = [REPORT_FOLDER] if args.command == "report" else None
+    count = write_generated(generated, args.root, folders)
+    if not args.quiet:
+        written = ", ".join(f"{folder}/" for folder in folders or generated.trees)
+        print(
+            f"wrote {count} files ({len(run.formulas)} functions) to {args.root}/{{{written}}} "
+            f"in {time.perf_counter() - start:.1f} s",
+            file=sys.stderr,
+        )
     return 0
 
 

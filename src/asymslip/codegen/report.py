@@ -18,18 +18,14 @@ from __future__ import annotations
 import re
 from collections import defaultdict
 from collections.abc import Iterable, Mapping, Sequence
-from typing import TYPE_CHECKING
 
 import sympy
 
+from .derivation_run import DerivationRun
 from .formula import EquationCheck, Formula, Status
-
-if TYPE_CHECKING:  # runner imports the engine; the report only reads a finished run
-    from .runner import DerivationRun
 
 PAPER = "Moore, Hills et al., Theoretical and Applied Fracture Mechanics 2022, 103457"
 NUMBERED_EQUATIONS = tuple(str(number) for number in range(1, 52))
-REPORT_PATH = "generated/report/derivation.md"
 
 # How symbol names print in LaTeX.  Cosmetic only; unknown names keep SymPy's own rendering.
 SYMBOL_LATEX: dict[str, str] = {
@@ -168,12 +164,19 @@ def _labelled_section(
     return lines
 
 
-def render_report(run: DerivationRun, paper_equations: Mapping[str, str] | None = None) -> str:
+def render_report(
+    run: DerivationRun,
+    paper_equations: Mapping[str, str] | None = None,
+    *,
+    languages: Mapping[str, Sequence[str]] | None = None,
+) -> str:
     """Markdown text of ``generated/report/derivation.md`` for a :class:`DerivationRun`.
 
     Reads ``run.checks`` (EquationCheck records) and ``run.formulas`` (Formula records);
     ``paper_equations`` maps equation numbers to the paper's printed LaTeX (default: the run's
-    own ``paper_equations`` record), used where a check recorded no ``printed`` form.
+    own ``paper_equations`` record), used where a check recorded no ``printed`` form;
+    ``languages`` maps each function to the languages it is emitted in (a column of the table
+    of generated functions).
     """
     checks: list[EquationCheck] = list(run.checks)
     formulas: list[Formula] = list(run.formulas)
@@ -275,13 +278,28 @@ def render_report(run: DerivationRun, paper_equations: Mapping[str, str] | None 
     )
 
     lines += ["## Generated functions", ""]
-    lines += ["| Function | Module | Equations | Derivation |", "| --- | --- | --- | --- |"]
+    if languages is not None:
+        lines += [
+            "Every function is emitted as NumPy (`generated/asymslip_gen/`) and, unless the "
+            "language lacks a function it needs, as C (`generated/c/`), Fortran "
+            "(`generated/fortran/`) and MATLAB/Octave (`generated/matlab/`), from the same "
+            "records.",
+            "",
+        ]
+    header = "| Function | Module | Equations | Derivation |"
+    rule = "| --- | --- | --- | --- |"
+    if languages is not None:
+        header, rule = header + " Languages |", rule + " --- |"
+    lines += [header, rule]
     for formula in sorted(formulas, key=lambda f: (f.module, f.name)):
         equations = ", ".join(f"({label})" for label in formula.equations)
-        lines.append(
+        row = (
             f"| `{formula.name}` | `asymslip_gen.{formula.module}` | {equations} | "
             f"{_source_link(formula.source)} |"
         )
+        if languages is not None:
+            row += f" {', '.join(languages.get(formula.name, ()))} |"
+        lines.append(row)
     lines.append("")
     text = "\n".join(lines)
     # One blank line between blocks, a single trailing newline: stable bytes for the diff.

@@ -1,4 +1,8 @@
-"""Run the derivation scripts, then write, verify or freshness-check the generated package.
+"""Run the derivation scripts, then write, verify or freshness-check everything generated.
+
+One run of the derivations feeds every output: the NumPy package (with ``formulas.json``),
+the C, Fortran and MATLAB/Octave trees (:mod:`asymslip.codegen.languages`) and the derivation
+report, each formula CSE'd once (:mod:`asymslip.codegen.cse`).
 
 The scripts in ``derivations/`` are imported as one package (:mod:`asymslip.codegen.loader`),
 never through ``sys.path``: a script imports its neighbours relatively
@@ -16,28 +20,24 @@ import sys
 import tempfile
 import time
 from collections import defaultdict
-from dataclasses import dataclass, field
+from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
 
+from asymslip.files.atomic import atomic_write
+
+from .cse import Reduced, reduce_formula
 from .derivation import Derivation
-from .emit import format_source, render_module, render_package_init
-from .formula import EquationCheck, Formula
+from .derivation_run import DerivationRun
+from .emit import format_sources, render_module, render_package_init
+from .formula import Formula
+from .languages import LANGUAGES
 from .loader import load_derivations_package
+from .records import FILE as RECORDS_FILE
+from .records import render_records
+from .report import render_report
 
 PACKAGE = "asymslip_gen"
-
-
-@dataclass
-class DerivationRun:
-    """Everything the derivation scripts produced, in a fixed order."""
-
-    formulas: list[Formula] = field(default_factory=list)
-    checks: list[EquationCheck] = field(default_factory=list)
-    module_docs: dict[str, str] = field(default_factory=dict)
-    seconds: dict[str, float] = field(default_factory=dict)
-    #: The paper's printed equations (number -> LaTeX), display only: the derivations
-    #: package's ``PAPER_EQUATIONS``, shown by the report where a check recorded none.
-    paper_equations: dict[str, str] = field(default_factory=dict)
 
 
 def derivation_scripts(directory: Path) -> list[Path]:
@@ -77,9 +77,38 @@ def run_derivations(directory: Path, *, progress: bool = True) -> DerivationRun:
     return run
 
 
-def render_package(run: DerivationRun) -> dict[str, str]:
-    """File name -> formatted source for the whole generated package."""
-    modules: dict[str, list[Formula]] = defaultdict(list)
+#: Where each part of the output goes under the generated root, and which files in that
+#: folder the code generator owns (stale ones are removed; anything else is left alone).
+PYTHON_FOLDER = PACKAGE
+REPORT_FOLDER = "report"
+REPORT_FILE = "derivation.md"
+PYTHON_LANGUAGE = "Python"
+
+
+@dataclass(frozen=True)
+class Tree:
+    """The files of one folder under ``generated/`` and the extensions the generator owns."""
+
+    files: dict[str, str]
+    extensions: tuple[str, ...]
+    #: Files the generator owns whatever their extension (the report).
+    owned: tuple[str, ...] = ()
+
+    def owns(self, name: str) -> bool:
+        return name in self.owned or any(name.endswith(ext) for ext in self.extensions)
+
+
+@dataclass(frozen=True)
+class Generated:
+    """Everything ``make generate`` writes, folder -> :class:`Tree`, from one derivation run."""
+
+    trees: dict[str, Tree]
+    #: Function name -> the languages that have it (Python always; others unless left out).
+    languages: dict[str, tuple[str, ...]]
+
+
+def _module_order(run: DerivationRun) -> list[Formula]:
+    """The formulas grouped by module (modules by name, functions in the scripts' order)."""
     seen: dict[str, str] = {}
     for formula in run.formulas:
         if formula.name in seen:
@@ -87,35 +116,76 @@ def render_package(run: DerivationRun) -> dict[str, str]:
                 f"{formula.name} emitted twice ({seen[formula.name]}, {formula.module})"
             )
         seen[formula.name] = formula.module
-        modules[formula.module].append(formula)
-    files: dict[str, str] = {}
-    for module, formulas in sorted(modules.items()):
-        if module not in run.module_docs:
-            raise ValueError(f"generated module {module!r} has no description (describe_module)")
-        files[f"{module}.py"] = format_source(
-            render_module(module, run.module_docs[module], formulas)
-        )
-    files["__init__.py"] = format_source(render_package_init(modules))
-    return files
+        if formula.module not in run.module_docs:
+            raise ValueError(
+                f"generated module {formula.module!r} has no description (describe_module)"
+            )
+    return sorted(run.formulas, key=lambda formula: formula.module)
 
 
-def write_package(files: dict[str, str], target: Path) -> None:
-    """Write the package, removing generated modules that no derivation emits any more."""
+def render_package(run: DerivationRun, reduced: Sequence[Reduced] | None = None) -> dict[str, str]:
+    """File name -> formatted source of the NumPy package ``asymslip_gen``."""
+    if reduced is None:
+        reduced = [reduce_formula(formula) for formula in _module_order(run)]
+    modules: dict[str, list[Reduced]] = defaultdict(list)
+    for item in reduced:
+        modules[item.formula.module].append(item)
+    sources = {
+        f"{module}.py": render_module(module, run.module_docs[module], items)
+        for module, items in sorted(modules.items())
+    }
+    sources["__init__.py"] = render_package_init(
+        {module: [item.formula for item in items] for module, items in modules.items()}
+    )
+    return format_sources(sources)
+
+
+def render_all(run: DerivationRun) -> Generated:
+    """Every generated file, in every language, from one run's records (each CSE'd once)."""
+    reduced = [reduce_formula(formula) for formula in _module_order(run)]
+    names = [item.formula.name for item in reduced]
+    languages: dict[str, list[str]] = {name: [PYTHON_LANGUAGE] for name in names}
+    trees: dict[str, Tree] = {}
+    python_files = render_package(run, reduced)
+    for language in LANGUAGES:
+        rendered = language.render(reduced, run.module_docs)
+        for name in rendered.functions:
+            languages[name].append(language.name)
+        trees[language.folder] = Tree(rendered.files, language.extensions)
+    available = {name: tuple(found) for name, found in languages.items()}
+    python_files[RECORDS_FILE] = render_records(
+        [item.formula for item in reduced], dict(available)
+    )
+    trees[PYTHON_FOLDER] = Tree(python_files, (".py", ".json"))
+    report = render_report(run, languages=available)
+    trees[REPORT_FOLDER] = Tree({REPORT_FILE: report}, (), owned=(REPORT_FILE,))
+    return Generated(dict(sorted(trees.items())), available)
+
+
+def _write_if_changed(path: Path, text: str) -> None:
+    if not path.exists() or path.read_text(encoding="utf-8") != text:
+        with atomic_write(path, "generated", mode="w") as handle:
+            handle.write(text)
+
+
+def write_tree(tree: Tree, target: Path) -> None:
+    """Write one folder, removing files it owns that nothing generates any more."""
     target.mkdir(parents=True, exist_ok=True)
-    for stale in target.glob("*.py"):
-        if stale.name not in files:
+    for stale in sorted(target.iterdir()):
+        if stale.is_file() and tree.owns(stale.name) and stale.name not in tree.files:
             stale.unlink()
-    for name, text in files.items():
-        path = target / name
-        if not path.exists() or path.read_text() != text:
-            path.write_text(text)
+    for name, text in tree.files.items():
+        _write_if_changed(target / name, text)
 
 
-def write_report(text: str, path: Path) -> None:
-    """Write the derivation report, leaving the file untouched when nothing changed."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    if not path.exists() or path.read_text() != text:
-        path.write_text(text)
+def write_generated(generated: Generated, root: Path, folders: Sequence[str] | None = None) -> int:
+    """Write the trees (all, or only ``folders``) under ``root``; return the number of files."""
+    count = 0
+    for folder, tree in generated.trees.items():
+        if folders is None or folder in folders:
+            write_tree(tree, root / folder)
+            count += len(tree.files)
+    return count
 
 
 def _equation_key(number: str) -> tuple[int, str]:
@@ -139,28 +209,39 @@ def print_verification(run: DerivationRun) -> None:
     print(f"{len(run.checks)} equations: {summary}")
 
 
-def diff_trees(expected: dict[str, str], committed: Path) -> list[str]:
-    """Unified diff between freshly generated files and the committed package."""
+def _lines(path: Path) -> list[str]:
+    return path.read_text(encoding="utf-8").splitlines(True) if path.exists() else []
+
+
+def diff_tree(tree: Tree, fresh: Path, committed: Path, label: str) -> list[str]:
+    """Unified diff of the files ``tree`` owns, freshly generated vs committed."""
+    def owned(folder: Path) -> set[str]:
+        if not folder.is_dir():
+            return set()
+        return {p.name for p in folder.iterdir() if p.is_file() and tree.owns(p.name)}
+
     lines: list[str] = []
-    names = sorted(set(expected) | {p.name for p in committed.glob("*.py")})
-    for name in names:
-        path = committed / name
-        old = path.read_text().splitlines(keepends=True) if path.exists() else []
-        new = expected.get(name, "").splitlines(keepends=True)
-        lines.extend(difflib.unified_diff(old, new, f"committed/{name}", f"regenerated/{name}"))
+    for name in sorted(owned(fresh) | owned(committed)):
+        old_path, new_path = committed / name, fresh / name
+        old = _lines(old_path)
+        new = _lines(new_path)
+        lines.extend(
+            difflib.unified_diff(
+                old, new, f"committed/{label}/{name}", f"regenerated/{label}/{name}"
+            )
+        )
     return lines
 
 
 def check_fresh(
     derivations: Path,
-    committed: Path,
+    root: Path,
     seeds: tuple[str, ...] = ("0", "4242"),
-    *,
-    report: Path | None = None,
 ) -> int:
-    """Regenerate under each PYTHONHASHSEED in parallel and diff against the committed tree.
+    """Regenerate every tree under each PYTHONHASHSEED (in parallel) and diff against ``root``.
 
-    With ``report``, the derivation report is regenerated in the same runs and diffed too.
+    Each seed runs the derivations once, in its own process, and renders every language and
+    the report from that one run.
     """
     with tempfile.TemporaryDirectory() as scratch:
         jobs = []
@@ -168,18 +249,9 @@ def check_fresh(
             out = Path(scratch) / f"seed{seed}"
             env = {**os.environ, "PYTHONHASHSEED": seed}
             command = [
-                sys.executable,
-                "-m",
-                "asymslip.codegen",
-                "generate",
-                "--derivations",
-                str(derivations),
-                "--out",
-                str(out / "asymslip_gen"),
-                "--quiet",
-            ]
-            if report is not None:
-                command += ["--report", str(out / report.name)]
+                sys.executable, "-m", "asymslip.codegen", "generate",
+                "--derivations", str(derivations), "--root", str(out), "--quiet",
+            ]  # fmt: skip
             jobs.append((seed, out, subprocess.Popen(command, env=env)))
         failed = False
         for seed, out, process in jobs:
@@ -187,48 +259,25 @@ def check_fresh(
                 print(f"regeneration with PYTHONHASHSEED={seed} failed", file=sys.stderr)
                 failed = True
                 continue
-            files = {p.name: p.read_text() for p in (out / "asymslip_gen").glob("*.py")}
-            diff = diff_trees(files, committed)
-            if report is not None:
-                old = report.read_text().splitlines(keepends=True) if report.exists() else []
-                new = (out / report.name).read_text().splitlines(keepends=True)
-                diff += difflib.unified_diff(
-                    old, new, f"committed/{report.name}", f"regenerated/{report.name}"
-                )
+            diff: list[str] = []
+            for folder, tree in _owned_trees().items():
+                diff += diff_tree(tree, out / folder, root / folder, folder)
             if diff:
                 sys.stdout.writelines(diff)
                 print(
-                    f"\n{committed} or its report is stale (PYTHONHASHSEED={seed}): "
-                    "run `make generate`",
+                    f"\n{root} is stale (PYTHONHASHSEED={seed}): run `make generate`",
                     file=sys.stderr,
                 )
                 failed = True
         if not failed:
-            print(f"{committed}: fresh under PYTHONHASHSEED in {list(seeds)}")
+            folders = ", ".join(f"{folder}/" for folder in _owned_trees())
+            print(f"{root}/{{{folders}}}: fresh under PYTHONHASHSEED in {list(seeds)}")
         return 1 if failed else 0
 
 
-def check_figure_data(folder: Path) -> int:
-    """The committed figure data (fig5.csv) equals what `make figures` writes now.
-
-    The PNG is not compared: its bytes depend on the matplotlib version.
-    """
-    from asymslip.figures import fig5_csv_text, fig5_curves
-
-    committed = folder / "fig5.csv"
-    fresh = fig5_csv_text(fig5_curves())
-    old = committed.read_text().splitlines(keepends=True) if committed.exists() else []
-    diff = list(
-        difflib.unified_diff(
-            old,
-            fresh.splitlines(keepends=True),
-            f"committed/{committed.name}",
-            "regenerated/fig5.csv",
-        )
-    )
-    if diff:
-        sys.stdout.writelines(diff)
-        print(f"\n{committed} is stale: run `make figures`", file=sys.stderr)
-        return 1
-    print(f"{committed}: fresh")
-    return 0
+def _owned_trees() -> dict[str, Tree]:
+    """Which files of which folders the freshness check compares (contents not needed)."""
+    trees = {language.folder: Tree({}, language.extensions) for language in LANGUAGES}
+    trees[PYTHON_FOLDER] = Tree({}, (".py", ".json"))
+    trees[REPORT_FOLDER] = Tree({}, (), owned=(REPORT_FILE,))
+    return dict(sorted(trees.items()))

@@ -1,0 +1,1 @@
+"""The generated C, Fortran and MATLAB/Octave code, compiled or run and compared with NumPy."""

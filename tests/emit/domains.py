@@ -1,0 +1,300 @@
+"""Points inside each generated function's documented domain, for comparing languages.
+
+Every emitted function has an entry in :data:`DOMAINS`, written from its documentation
+(``formulas.json``: each argument's rule and the function's stated domain): a function with no
+entry makes the comparison fail (:func:`sample` raises), and so does an entry for a function
+that no longer exists, so a new function cannot be skipped silently.
+
+Most quantities belong to one load cycle, so the points are drawn as physically consistent
+steady partial-slip cycles of a Hertzian contact (the laws and multipliers computed here in
+plain NumPy from the paper's (29) and (19), not from the code under test): forward slip
+(lam > mu, so that the slip zone lies inside a1 and (17)'s denominator stays away from 0), a
+small bulk tension, load changes dP/P1 from 1e-9 to 0.1.  Arguments that stand alone (a
+modulus, a slope) get their own ranges.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+
+import numpy as np
+
+Points = dict[str, np.ndarray]
+
+
+class Draw:
+    """Random draws of ``n`` points, shared by the domain rules."""
+
+    def __init__(self, n: int, seed: int) -> None:
+        self.n = n
+        self.rng = np.random.default_rng(seed)
+
+    def uniform(self, low: float, high: float) -> np.ndarray:
+        return self.rng.uniform(low, high, self.n)
+
+    def log_uniform(self, low: float, high: float) -> np.ndarray:
+        return np.exp(self.rng.uniform(math.log(low), math.log(high), self.n))
+
+    def cycle(self) -> Points:
+        """A steady partial-slip cycle of a Hertzian contact: loads, half-widths, multipliers."""
+        R = self.log_uniform(0.1, 10.0)
+        E_star = self.log_uniform(1.0, 1e3)
+        P1 = self.log_uniform(1.0, 1e3)
+        dP = P1 * self.log_uniform(1e-9, 0.1)
+        mu = self.uniform(0.1, 1.0)
+        lam = mu * self.uniform(1.05, 3.0)
+        a1 = np.sqrt(4 * R * P1 / (np.pi * E_star))  # (29)
+        a2 = np.sqrt(4 * R * (P1 + dP) / (np.pi * E_star))
+        da = 4 * R * dP / (np.pi * E_star * (a1 + a2))  # a2 - a1 without cancellation
+        # Bulk tension small enough that lam + pi eta a/4 - mu stays >= 0.02 mu at both states.
+        eta = mu * self.uniform(-0.02, 0.02) / a2
+        slope1 = np.pi * E_star * a1 / (2 * R)  # dP/da of (29)
+        slope2 = np.pi * E_star * a2 / (2 * R)
+        L_I1 = np.sqrt(2 / a1) * slope1 / np.pi  # (19)
+        L_I2 = np.sqrt(2 / a2) * slope2 / np.pi
+        L_II1 = (lam + np.pi * eta * a1 / 4) * L_I1  # (21)
+        L_II2 = (lam + np.pi * eta * a2 / 4) * L_I2
+        # b from (17) (the root of the consistency condition), written here from the paper.
+        b = (a2 * (L_II2 - mu * L_I2) + a1 * (L_II1 + mu * L_I1)) / (
+            mu * (L_I1 + L_I2) + L_II1 - L_II2
+        )
+        return {
+            "R": R, "E_star": E_star, "P1": P1, "dP": dP, "mu": mu, "lam": lam, "eta": eta,
+            "a1": a1, "a2": a2, "da": da, "L_I1": L_I1, "L_I2": L_I2, "L_II1": L_II1,
+            "L_II2": L_II2, "b": b, "da_dP": a1 / (2 * P1), "P_K": P1 + dP * (mu - lam) / (2 * mu),
+        }  # fmt: skip
+
+    def no_tension_cycle(self) -> Points:
+        points = self.cycle()
+        points["eta"] = np.zeros(self.n)
+        return points
+
+    def law(self) -> Points:
+        """Standalone law quantities: a half-width, a load, a modulus, a radius, slopes."""
+        return {
+            "a": self.log_uniform(0.01, 100.0),
+            "P": self.log_uniform(0.01, 1e4),
+            "R": self.log_uniform(0.1, 10.0),
+            "E_star": self.log_uniform(1.0, 1e3),
+            "dP_da": self.log_uniform(1e-3, 1e3),
+            "dQ_da": self.uniform(-1e3, 1e3),
+            "dsigma_da": self.uniform(-1e3, 1e3),
+            "L_I": self.log_uniform(1e-2, 1e3),
+            "lam": self.uniform(-3.0, 3.0),
+            "eta": self.uniform(-1.0, 1.0),
+        }
+
+    def power_law(self) -> Points:
+        """A power-law punch h = A |x|^n, n >= 1, with its shape factor K(n)."""
+        n = self.uniform(1.0, 4.0)
+        gamma = np.vectorize(math.gamma)
+        K = n * math.sqrt(math.pi) / 2 * gamma((n + 1) / 2) / gamma(n / 2 + 1)
+        a = self.log_uniform(0.01, 100.0)
+        x = a * self.uniform(-1.2, 1.2)
+        return {
+            "n": n, "K": K, "A": self.log_uniform(0.01, 10.0), "E_star": self.log_uniform(1.0, 1e3),
+            "a": a, "x": x, "P": self.log_uniform(0.01, 1e4), "P1": self.log_uniform(1.0, 1e3),
+            "hypergeometric": self.uniform(0.5, 2.0),
+        }  # fmt: skip
+
+    def flat_rounded(self) -> Points:
+        """A flat punch with rounded corners: a > c >= 0 (c/a up to 0.95, see its doc)."""
+        a = self.log_uniform(0.01, 100.0)
+        c = a * self.uniform(0.0, 0.95)
+        chord = np.sqrt((a - c) * (a + c))  # D = sqrt(a^2 - c^2)
+        return {
+            "a": a, "c": c, "R": self.log_uniform(0.1, 10.0),
+            "E_star": self.log_uniform(1.0, 1e3), "x": a * self.uniform(-1.2, 1.2),
+            "D": chord, "psi": np.arctan2(chord, c),  # psi = arccos(c/a)
+        }  # fmt: skip
+
+    def away_from(self, points: np.ndarray, scale: np.ndarray, gap: float) -> np.ndarray:
+        """``points`` with those closer than ``gap * scale`` to 0 moved out to that distance."""
+        near = np.abs(points) < gap * scale
+        return np.where(near, np.copysign(gap * scale, points), points)
+
+
+def _cycle(draw: Draw) -> Points:
+    return draw.cycle()
+
+
+def _no_tension(draw: Draw) -> Points:
+    return draw.no_tension_cycle()
+
+
+def _law(draw: Draw) -> Points:
+    return draw.law()
+
+
+def _generic_slopes(draw: Draw) -> Points:
+    """A cycle plus an arbitrary second derivative and L_I' (the generic-law coefficient)."""
+    points = draw.no_tension_cycle()
+    points["d2a_dP2"] = points["da_dP"] / points["P1"] * draw.uniform(-2.0, 2.0)
+    points["dL_I_dP"] = points["L_I1"] / points["P1"] * draw.uniform(-2.0, 2.0)
+    return points
+
+
+def _in_slip_zone(draw: Draw) -> Points:
+    """A cycle and x from below b (stick zone, where the result is 0) to just inside a2."""
+    points = draw.cycle()
+    b, a2 = points["b"], points["a2"]
+    points["x"] = b + (a2 - b) * draw.uniform(-1.0, 1.0 - 1e-6)
+    return points
+
+
+def _traction_asymptote(draw: Draw) -> Points:
+    """(49): x < a2 anywhere in the contact, b <= a1 (consistent or not), per its doc."""
+    points = draw.cycle()
+    a1, a2, b = points["a1"], points["a2"], points["b"]
+    points["b"] = a1 - (a1 - b) * draw.uniform(0.0, 2.0)
+    points["x"] = a2 * draw.uniform(-1.0, 1.0 - 1e-6)
+    return points
+
+
+def _hertz_traction(draw: Draw) -> Points:
+    """Exact (47): any x, 0 < P_K < P1 from (33) of a forward-slip cycle."""
+    points = draw.no_tension_cycle()
+    points["x"] = points["a2"] * draw.uniform(-1.5, 1.5)
+    return points
+
+
+def _hertz_pressure(draw: Draw) -> Points:
+    points = draw.law()
+    a = np.sqrt(4 * points["R"] * points["P"] / (np.pi * points["E_star"]))
+    points["x"] = a * draw.uniform(-1.5, 1.5)
+    return points
+
+
+def _pressures(draw: Draw) -> Points:
+    """Hertz pressures at P2, P1 and P_K of a forward-slip cycle (each 0 outside its contact)."""
+    points = draw.no_tension_cycle()
+    x = points["a2"] * draw.uniform(-1.2, 1.2)
+    R, E_star = points["R"], points["E_star"]
+    for key, load in (("p2", points["P1"] + points["dP"]), ("p1", points["P1"]),
+                      ("p_K", points["P_K"])):  # fmt: skip
+        a = np.sqrt(4 * R * load / (np.pi * E_star))  # (29)
+        points[key] = E_star / (2 * R) * np.sqrt(np.maximum(0.0, a**2 - x**2))  # (48)
+    return points
+
+
+def _fitted_law(draw: Draw) -> Points:
+    """A law fitted as log a(log P): s' > 0 (where the fit increases), any curvature."""
+    points = draw.law()
+    points["ds"] = draw.uniform(0.1, 2.0)
+    points["d2s"] = draw.uniform(-1.0, 1.0)
+    return points
+
+
+def _power_law(draw: Draw) -> Points:
+    return draw.power_law()
+
+
+def _power_law_growth(draw: Draw) -> Points:
+    points = draw.power_law()
+    points["dP"] = points["P1"] * draw.log_uniform(1e-12, 1.0)
+    return points
+
+
+def _wedge(draw: Draw) -> Points:
+    """The wedge pressure: any x but the apex x = 0, a logarithmic singularity (its doc)."""
+    points = draw.power_law()
+    points["x"] = draw.away_from(points["x"], points["a"], 1e-6)
+    return points
+
+
+def _flat_rounded(draw: Draw) -> Points:
+    return draw.flat_rounded()
+
+
+#: Function name -> how to draw points inside its documented domain.
+DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
+    # corrective_slip, validity: one steady partial-slip cycle
+    "stick_boundary_proportional": _cycle,
+    "stick_boundary_denominator": _cycle,
+    "slip_zone_width": _cycle,
+    "stick_boundary": _cycle,
+    "dislocation_density": _in_slip_zone,
+    "slip_on_loading": _in_slip_zone,
+    "contact_growth_measure": _cycle,
+    "relative_slip_zone_measure": _cycle,
+    "multiplier_growth_measure": _generic_slopes,
+    "slip_zone_growth_measure": _cycle,
+    "stick_ratio_first_order": _cycle,
+    "slip_zone_width_first_order": _cycle,
+    # corrective_stick
+    "shear_intensity_rate": _law,
+    "corrective_stick_slip_zone_width": _cycle,
+    "hertz_stick_boundary_corrective_stick": _cycle,
+    "hertz_slip_zone_width_corrective_stick": _cycle,
+    # edge_multipliers
+    "normal_edge_multiplier": _law,
+    "shear_edge_multiplier": _law,
+    "shear_edge_multiplier_proportional": _law,
+    # exact_solution (eta = 0, P_K > 0)
+    "permanent_stick_load": _no_tension,
+    "hertz_stick_boundary_exact": _no_tension,
+    "hertz_slip_zone_width_exact": _no_tension,
+    # method_agreement
+    "hertz_slip_zone_width_first_order": _cycle,
+    "corrective_slip_discrepancy_third_order": _no_tension,
+    "corrective_stick_discrepancy_second_order": _no_tension,
+    "corrective_stick_discrepancy_third_order": _no_tension,
+    # generic_law
+    "second_order_stick_boundary_gap": _generic_slopes,
+    "second_order_stick_boundary_gap_from_multiplier": _generic_slopes,
+    # hertz
+    "hertz_load": _law,
+    "hertz_load_slope": _law,
+    "hertz_half_width": _law,
+    "hertz_normal_edge_multiplier": _law,
+    "hertz_normal_edge_multiplier_slope": _law,
+    "hertz_half_width_growth": _cycle,
+    # tractions
+    "hertz_pressure": _hertz_pressure,
+    "hertz_shear_traction_difference": _hertz_traction,
+    "shear_traction_difference": _traction_asymptote,
+    "jaeger_ciavarella_traction_difference": _pressures,
+    # table_law
+    "normal_edge_multiplier_slope_loglog": _fitted_law,
+    # flat_rounded
+    "flat_rounded_load": _flat_rounded,
+    "flat_rounded_load_slope": _flat_rounded,
+    "flat_rounded_normal_edge_multiplier": _flat_rounded,
+    "flat_rounded_normal_edge_multiplier_slope": _flat_rounded,
+    "flat_rounded_pressure": _flat_rounded,
+    "flat_rounded_chord": _flat_rounded,
+    "flat_rounded_corner_angle": _flat_rounded,
+    "flat_rounded_load_at_angle": _flat_rounded,
+    "flat_rounded_load_slope_at_angle": _flat_rounded,
+    "flat_rounded_normal_edge_multiplier_at_angle": _flat_rounded,
+    "flat_rounded_normal_edge_multiplier_slope_at_angle": _flat_rounded,
+    # power_law
+    "power_law_load": _power_law,
+    "power_law_load_slope": _power_law,
+    "power_law_half_width": _power_law,
+    "power_law_half_width_growth": _power_law_growth,
+    "power_law_normal_edge_multiplier": _power_law,
+    "power_law_normal_edge_multiplier_slope": _power_law,
+    "power_law_hypergeometric_argument": _power_law,
+    "power_law_pressure": _power_law,
+    "wedge_pressure": _wedge,
+}
+
+
+class NoDomainError(LookupError):
+    """A function has no domain rule: the comparison must not skip it."""
+
+
+def sample(name: str, arguments: list[str], n: int, seed: int = 13) -> Points:
+    """``n`` points inside ``name``'s domain, one array per argument, in argument order."""
+    if name not in DOMAINS:
+        raise NoDomainError(
+            f"no domain for the generated function {name!r}: add it to tests/emit/domains.py "
+            "from its documented argument rules"
+        )
+    points = DOMAINS[name](Draw(n, seed))
+    missing = [arg for arg in arguments if arg not in points]
+    if missing:
+        raise NoDomainError(f"the domain of {name!r} draws no {', '.join(missing)}")
+    return {arg: np.ascontiguousarray(points[arg], dtype=np.float64) for arg in arguments}
