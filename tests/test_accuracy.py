@@ -31,6 +31,11 @@ WELL_CONDITIONED = 100.0  # kappa below which the 1e-12 target must hold outrigh
 # Why each exception's error can exceed 1e-12: the quantity vanishes where the named terms
 # cancel, so its relative condition number is unbounded there.
 CONDITIONING_EXCEPTIONS = {
+    "slip_zone_width_second_order": "its dP term is proportional to lam/mu + pi eta a1/(4 mu) - 1",
+    "slip_zone_width_second_order_from_multiplier": "as slip_zone_width_second_order",
+    "slip_zone_width_second_coefficient": "a sum of terms of both signs (r - 1 and Phi)",
+    "paper_stick_boundary_error": "W2 minus the dP^2 term of (22): terms of both signs cancel",
+    "paper_stick_boundary_error_from_multiplier": "as paper_stick_boundary_error",
     "slip_zone_width": "a1 - b is proportional to lam + pi eta a2/4 - mu",
     "relative_slip_zone_measure": "|a1 - b|/a1, proportional to lam + pi eta a2/4 - mu",
     "hertz slip_zone_width, end to end from (P1, dP)": "a1 - b, as slip_zone_width",

@@ -136,6 +136,8 @@ def draw_problem(
     problem.update(load_cycle(rng, problem))
     problem["relative_load_change"] = dP / P1
     problem["near_cancellation"] = float(near_cancellation)
+    # the other edge's relative slip direction (second_order), +-1 without a further draw
+    problem["other_edge"] = 1.0 if lam >= 0 else -1.0
     return problem
 
 

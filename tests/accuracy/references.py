@@ -971,6 +971,80 @@ register_quantity(Quantity(
 
 
 # ---------------------------------------------------------------------------------------------
+# Beyond the paper: the second-order width (derivations/second_order_slip_zone.py states it,
+# X-b2): a1 - b = a'(r - 1) dP/2 + [-a''(1 - r)^2/8 + a'^2 Phi/(32 a1)] dP^2, transcribed
+# here by hand; E = W2 minus the dP^2 coefficient of the width of (22), by a second difference
+# of (22) on the local law (as for the generic-law gap above).
+# ---------------------------------------------------------------------------------------------
+
+
+def _second_coefficient(mu, lam, eta, a1, da_dP, d2a_dP2, other_edge):
+    r = (lam + pi * eta * a1 / 4) / mu
+    rho, tau = lam / mu, pi * eta * a1 / (4 * mu)
+    same = 4 * tau * (2 - 2 * rho - tau)
+    opposite = 2 + 8 * tau - 2 * rho**2 - 4 * rho * tau - 6 * tau**2
+    phi = same if other_edge > 0 else opposite
+    return -d2a_dP2 * (1 - r) ** 2 / 8 + da_dP**2 * phi / (32 * a1)
+
+
+def _width_second_order(mu, lam, eta, a1, da_dP, d2a_dP2, dP, other_edge):
+    first = da_dP * ((lam + pi * eta * a1 / 4) / mu - 1) / 2
+    return first * dP + _second_coefficient(mu, lam, eta, a1, da_dP, d2a_dP2, other_edge) * dP**2
+
+
+def _curvature_19(a1, da_dP, L_I1, dL_I_dP):
+    return -da_dP * (dL_I_dP / L_I1 + da_dP / (2 * a1))
+
+
+def _paper_error(mu, lam, eta, a1, da_dP, d2a_dP2, other_edge):
+    digits = mpmath.mp.dps
+    with mpmath.workdps(2 * digits + 20):
+        step = mpmath.mpf(10) ** -(digits // 2) * a1 / da_dP
+
+        def width_22(h):
+            a2 = a1 + da_dP * h + d2a_dP2 * h**2 / 2
+            b = stick_boundary_22(mu, lam, eta, a1, a2, normal_multiplier_19(a1, 1 / da_dP),
+                                  normal_multiplier_19(a2, 1 / (da_dP + d2a_dP2 * h)))  # fmt: skip
+            return a1 - b
+
+        paper = (width_22(step) + width_22(-step)) / (2 * step**2)
+        coefficient = _second_coefficient(mu, lam, eta, a1, da_dP, d2a_dP2, other_edge) - paper
+    return +coefficient
+
+
+_SECOND = ("mu", "lam", "eta", "a1", "da_dP", "d2a_dP2")
+register_quantity(Quantity(
+    "second_order.slip_zone_width_second_order", (*_SECOND, "dP", "other_edge"),
+    _width_second_order, ("22", "28"),
+))  # fmt: skip
+register_quantity(Quantity(
+    "second_order.stick_boundary_second_order", (*_SECOND, "dP", "other_edge"),
+    lambda a1, **k: a1 - _width_second_order(a1=a1, **k), ("22", "28"),
+))  # fmt: skip
+register_quantity(Quantity(
+    "second_order.slip_zone_width_second_coefficient", (*_SECOND, "other_edge"),
+    _second_coefficient, ("28",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "second_order.paper_stick_boundary_error", (*_SECOND, "other_edge"), _paper_error, ("22",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "second_order.slip_zone_width_second_order_from_multiplier",
+    ("mu", "lam", "eta", "a1", "da_dP", "L_I1", "dL_I_dP", "dP", "other_edge"),
+    lambda L_I1, dL_I_dP, a1, da_dP, **k: _width_second_order(
+        a1=a1, da_dP=da_dP, d2a_dP2=_curvature_19(a1, da_dP, L_I1, dL_I_dP), **k),
+    ("19", "22", "28"),
+))  # fmt: skip
+register_quantity(Quantity(
+    "second_order.paper_stick_boundary_error_from_multiplier",
+    ("mu", "lam", "eta", "a1", "da_dP", "L_I1", "dL_I_dP", "other_edge"),
+    lambda L_I1, dL_I_dP, a1, da_dP, **k: _paper_error(
+        a1=a1, da_dP=da_dP, d2a_dP2=_curvature_19(a1, da_dP, L_I1, dL_I_dP), **k),
+    ("19", "22"),
+))  # fmt: skip
+
+
+# ---------------------------------------------------------------------------------------------
 # End to end: asymslip.slip_zone(law, LoadCycle(...), mu) for each built-in law, as users call
 # it, against the same quantities built at 50 digits from the law's P(a) alone: a(P) by
 # mpmath's root finder, dP/da by mpmath.diff, L_I by (19), b by (22) and b_exact = a(P_K) by

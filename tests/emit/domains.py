@@ -135,6 +135,15 @@ def _generic_slopes(draw: Draw) -> Points:
     return points
 
 
+def _second_order(draw: Draw) -> Points:
+    """A cycle with tension, its slopes a'', L_I', and the other edge's slip (+1 or -1)."""
+    points = draw.cycle()
+    points["d2a_dP2"] = -points["da_dP"] / (2 * points["P1"])  # Hertz: a ~ P^(1/2)
+    points["dL_I_dP"] = points["L_I1"] / (4 * points["P1"])  # (31): L_I ~ P^(1/4)
+    points["other_edge"] = np.where(draw.uniform(0.0, 1.0) < 0.5, -1.0, 1.0)
+    return points
+
+
 def _in_slip_zone(draw: Draw) -> Points:
     """A cycle and x from below b (stick zone, where the result is 0) to just inside a2."""
     points = draw.cycle()
@@ -243,6 +252,13 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     # generic_law
     "second_order_stick_boundary_gap": _generic_slopes,
     "second_order_stick_boundary_gap_from_multiplier": _generic_slopes,
+    # second_order
+    "slip_zone_width_second_order_from_multiplier": _second_order,
+    "slip_zone_width_second_order": _second_order,
+    "stick_boundary_second_order": _second_order,
+    "slip_zone_width_second_coefficient": _second_order,
+    "paper_stick_boundary_error": _second_order,
+    "paper_stick_boundary_error_from_multiplier": _second_order,
     # hertz
     "hertz_load": _law,
     "hertz_load_slope": _law,
