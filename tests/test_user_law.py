@@ -344,3 +344,41 @@ def test_derive_without_sympy_is_one_line_naming_the_extra(tmp_path):
         "asymslip: error: derive: needs SymPy: install asymslip with the derive extra "
         "(pip install 'asymslip[derive]')"
     ]
+
+
+# --- a derived law used outside the range its derivation established ---------------------------
+@pytest.fixture(scope="module")
+def cubic_module(tmp_path_factory):
+    # P = E* a^2 - k a^3 increases only for a < 2E*/(3k), up to P = 4E*^3/(27 k^2).
+    return derive_law_module("E_star*a**2 - k*a**3", ["E_star", "k"], "cubic",
+                             tmp_path_factory.mktemp("law") / "cubic.py")  # fmt: skip
+
+
+def test_a_law_with_a_maximum_refuses_a_load_beyond_it_naming_the_range(cubic_module):
+    law = ModuleLaw.from_file(cubic_module, E_star=1.0, k=1.0)  # loads up to 4/27
+    with pytest.raises(InputError, match=r"^P2: no contact half-width of the cubic law carries "
+                       r"this load .* loads from 0 to 0\.148148 only"):  # fmt: skip
+        slip_zone(law, LoadCycle(0.10, 0.0, 0.16, 0.003), 0.1)
+
+
+def test_a_law_with_a_maximum_answers_inside_it_and_marks_only_the_cycles_beyond(cubic_module):
+    law = ModuleLaw.from_file(cubic_module, E_star=1.0, k=1.0)
+    cycles = LoadCycle([0.10, 0.10], 0.0, [0.12, 0.16], 0.003)
+    result = slip_zone(law, cycles, 0.1, invalid="mark")
+    assert result.errors[0] is None and result.errors[1].startswith("P2: no contact half-width")
+    # a1 inverts P(a) = 0.1 on the increasing branch: a^2 - a^3 = 0.1.
+    roots = np.roots([-1.0, 1.0, 0.0, -0.1]).real
+    branch = min(root for root in roots if 0 < root < 2 / 3)
+    assert result.a1[0] == pytest.approx(branch, rel=1e-13) and np.isnan(result.b[1])
+
+
+def test_a_bounded_law_refuses_a_load_at_or_above_its_bound(tmp_path):
+    module = derive_law_module("k*tanh(a)", ["k"], "bounded", tmp_path / "bounded.py")
+    law = ModuleLaw.from_file(module, k=2.0)
+    with pytest.raises(InputError, match=r"^P1: .*loads from 0 to 2 only"):
+        slip_zone(law, LoadCycle(2.0, 0.0, 2.5, 0.01), 0.1)
+
+
+def test_a_law_derived_for_positive_parameters_refuses_a_negative_one(hertz_module):
+    with pytest.raises(InputError, match=r"^param: R must be > 0"):
+        ModuleLaw.from_file(hertz_module, R=-1.0, E_star=1.0)

@@ -208,10 +208,11 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
     return EdgeValues(values, flags)
 
 
-def _check_law(verdict: Verdict, state: LawState, name: str) -> None:
+def _check_law(verdict: Verdict, state: LawState, law: ContactLaw) -> None:
     """The law at the cycle's loads: defined, finite, increasing."""
-    verdict.require("law_range_1", state.found1, state.P1, law=name)
-    verdict.require("law_range_2", state.found2, state.P2, law=name)
+    name = law.name
+    verdict.require("law_range_1", state.found1, state.P1, law=name, range=law.range_note)
+    verdict.require("law_range_2", state.found2, state.P2, law=name, range=law.range_note)
     for number, quantities in (("1", (state.a1, state.L_I1, state.load_slope1)),
                                ("2", (state.a2, state.da, state.L_I2, state.load_slope2))):
         verdict.require(f"law_finite_{number}", finite(sum(quantities)),
@@ -270,7 +271,7 @@ def _evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike,
         if shape == ():  # NumPy scalars from here on, not 0-d arrays
             state = LawState(*(scalar(value) for value in astuple(state)[:11]),
                              bool(state.found1), bool(state.found2))  # fmt: skip
-        _check_law(verdict, state, edge_law.name)
+        _check_law(verdict, state, edge_law)
         states[side] = state
     if law.symmetric:
         states["left"] = states["right"]

@@ -200,6 +200,9 @@ class ContactLaw(abc.ABC):
         )  # fmt: skip
 
     # --- the rest ------------------------------------------------------------------------------
+    #: Appended to the message for a load the law cannot carry (a user law's known range).
+    range_note: str = ""
+
     def for_edge(self, side: Side) -> ContactLaw:
         """The law of one edge: a symmetric contact has the same law at both."""
         return self

@@ -18,7 +18,8 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ..errors import InputError, as_float_array
-from .base import ContactLaw, FloatArray
+from .base import BoolArray, ContactLaw, FloatArray
+from .roots import invert_increasing_where_possible
 
 REQUIRED_FUNCTIONS = ("load", "load_slope", "normal_edge_multiplier")
 
@@ -76,7 +77,14 @@ class ModuleLaw(ContactLaw):
                              f"{self.name} in {source} (its parameters: {listed})")  # fmt: skip
         self.params = {name: float(as_float_array(name, param_values[name]))
                        for name in self.param_names}  # fmt: skip
+        if description.get("parameters_are") == "positive real numbers":
+            for name, value in self.params.items():
+                if not value > 0:
+                    raise InputError("param", f"{name} must be > 0: the law {self.name} was "
+                                     "derived (and its range established) for positive "
+                                     "parameters", value)  # fmt: skip
         self._values = tuple(self.params.values())
+        self.valid_half_widths, self.valid_loads = self._range()
 
     @classmethod
     def from_file(cls, path: str | Path, **param_values: float) -> ModuleLaw:
@@ -86,6 +94,40 @@ class ModuleLaw(ContactLaw):
     def __repr__(self) -> str:
         values = ", ".join(f"{k}={v!r}" for k, v in self.params.items())
         return f"ModuleLaw({self.name} from {self.source}: {values})"
+
+    def _range(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        """The half-widths and loads where the module says the law is valid (positive and
+        increasing), from its range functions; all of (0, inf) for a module without them."""
+        names = ("half_width_minimum", "half_width_maximum", "load_minimum", "load_maximum")
+        functions = [getattr(self.module, name, None) for name in names]
+        if not all(callable(function) for function in functions):
+            return (0.0, np.inf), (0.0, np.inf)
+        with np.errstate(all="ignore"):
+            a_min, a_max, P_min, P_max = (float(function(*self._values))
+                                          for function in functions)  # fmt: skip
+        return (a_min, a_max), (P_min, P_max)
+
+    @property
+    def range_note(self) -> str:
+        low, high = self.valid_loads
+        if low <= 0 and high == np.inf:
+            return ""
+        return f"; it carries loads from {low:.6g} to {high:.6g} only"
+
+    def half_width_where_possible(self, P: ArrayLike) -> tuple[FloatArray, BoolArray]:
+        """a(P) by inverting P(a) inside the law's valid range; loads outside it have none."""
+        P = np.asarray(P, dtype=np.float64)
+        (a_min, a_max), (P_min, P_max) = self.valid_half_widths, self.valid_loads
+        inside = (P > P_min) & (P < P_max)
+        lower = np.full(P.shape, 1.0 if a_min <= 0 else a_min)
+        if np.isfinite(a_max):  # a root lies inside the valid half-widths
+            lower = np.where(a_min > 0, a_min, np.minimum(1.0, 0.5 * a_max))
+            upper = np.full(P.shape, a_max)
+        else:
+            upper = np.maximum(lower, 1.0)
+        a, found = invert_increasing_where_possible(
+            self.load, np.where(inside, P, np.nan), self.load_slope, lower=lower, upper=upper)
+        return a, np.asarray(found) & inside
 
     def _call(self, function: Callable[..., FloatArray], a: ArrayLike) -> FloatArray:
         return np.asarray(function(np.asarray(a, dtype=np.float64), *self._values),

@@ -29,7 +29,7 @@ class Encoded:
     categories: list[str]
 
     def texts(self) -> list[str]:
-        return [self.categories[code] for code in self.codes.tolist()]
+        return [self.categories[code] if code >= 0 else "" for code in self.codes.tolist()]
 
 
 @dataclass
@@ -43,11 +43,17 @@ class ChunkResult:
 
 def _warnings_column(flags: NDArray[np.int64], valid: NDArray[np.bool_],
                      law: ContactLaw) -> Encoded:  # fmt: skip
-    flags = np.where(valid, flags, -1)  # an invalid row has no warnings, only its error
+    """Code -1 (an empty field, a Parquet null) for no warnings and for invalid rows (which
+    have only their error); each distinct set of warnings in words once."""
+    flags = np.where(valid, flags, 0)
     distinct, codes = np.unique(flags, return_inverse=True)
-    categories = ["" if value < 0 else WARNING_SEPARATOR.join(warning_texts(int(value), law))
+    categories = [WARNING_SEPARATOR.join(warning_texts(int(value), law))
                   for value in distinct.tolist()]  # fmt: skip
-    return Encoded(codes.reshape(-1), categories)
+    codes = codes.reshape(-1)
+    if distinct.size and distinct[0] == 0:  # no warnings: no value
+        codes = codes - 1
+        categories = categories[1:]
+    return Encoded(codes, categories)
 
 
 def evaluate_chunk(law: ContactLaw, values: dict[str, FloatArray], mu: FloatArray,
