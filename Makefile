@@ -8,7 +8,8 @@ STAMP  := $(VENV)/.installed-stamp
 EXTRAS := derive,dev,plot,bench,dask,special,parquet
 
 .DEFAULT_GOAL := all
-.PHONY: all env demo generate check-generated verify test test-languages toolchains bench figures report \
+.PHONY: all env demo generate check-generated check-wheel verify test test-languages toolchains bench \
+        figures report \
         accuracy clean help
 
 all: generate demo ## set up the environment, regenerate the formulas, print the demo
@@ -46,6 +47,9 @@ figures: $(STAMP) ## write generated/figures/fig5.png and fig5.csv (the paper's 
 
 report: $(STAMP) ## write generated/report/derivation.md from the derivation records
 	$(PY) -m asymslip.codegen report
+
+check-wheel: ## build sdist and wheel, install the wheel with no extras, run the README example
+	.ci/check-wheel
 
 toolchains: ## install gfortran and Octave where missing (Debian, as root; quiet, idempotent)
 	@.ci/install-toolchains
