@@ -24,7 +24,7 @@ the mirrored cycle (lam -> -lam, eta kept); backward slip is forward slip with
 
 from __future__ import annotations
 
-from dataclasses import astuple, dataclass, field
+from dataclasses import dataclass, field, fields
 from typing import Literal
 
 import numpy as np
@@ -116,6 +116,10 @@ class Evaluation:
 
 #: (17)'s denominator counts as zero below this many units in the last place of its terms.
 _DENOMINATOR_TOLERANCE = 64 * float(np.finfo(float).eps)
+
+
+#: The numeric fields of a LawState, in order (the two found flags follow them).
+_STATE_NUMBERS = tuple(item.name for item in fields(LawState))[:11]
 
 
 def _where(condition: ArrayLike, yes: ArrayLike, no: ArrayLike) -> ArrayLike:
@@ -268,8 +272,8 @@ def _evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike,
     for side in SIDES if not law.symmetric else SIDES[:1]:
         edge_law = law.for_edge(side)
         state = edge_law.cycle_state(P1, dP)
-        if shape == ():  # NumPy scalars from here on, not 0-d arrays
-            state = LawState(*(scalar(value) for value in astuple(state)[:11]),
+        if shape == ():  # plain scalars from here (kernels return NumPy scalars or 0-d arrays)
+            state = LawState(*(scalar(getattr(state, name)) for name in _STATE_NUMBERS),
                              bool(state.found1), bool(state.found2))  # fmt: skip
         _check_law(verdict, state, edge_law)
         states[side] = state

@@ -34,7 +34,7 @@ BoolArray = NDArray[np.bool_]
 Side = Literal["right", "left"]
 
 
-@dataclass(frozen=True)
+@dataclass(slots=True)
 class LawState:
     """The contact-law quantities of a load cycle, computed once per cycle.
 

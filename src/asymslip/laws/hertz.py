@@ -67,24 +67,29 @@ class HertzLaw(ContactLaw):
             P1, dP = np.broadcast_arrays(np.asarray(P1, dtype=np.float64),
                                          np.asarray(dP, dtype=np.float64))  # fmt: skip
         R, E_star = self.R, self.E_star
-        with np.errstate(over="ignore"):  # overflow is marked by found1/found2, not warned
-            P2 = P1 + dP
-            a1 = hertz_half_width(P1, R, E_star)
-            da = hertz_half_width_growth(P1, dP, R, E_star)
-            a2 = a1 + da
-            L_I1 = hertz_normal_edge_multiplier(P1, R, E_star)
-            L_I2 = hertz_normal_edge_multiplier(P2, R, E_star)
-            # Every load P > 0 has a half-width; an overflow is caught by the finiteness rule.
-            found1 = True if scalar else np.ones(np.shape(a1), dtype=bool)
-            found2 = found1
-            return LawState(
-                P1=P1, P2=P2, a1=a1, a2=a2, da=da, L_I1=L_I1, L_I2=L_I2,
-                load_slope1=hertz_load_slope(a1, R, E_star),
-                load_slope2=hertz_load_slope(a2, R, E_star),
-                L_I_slope1=hertz_normal_edge_multiplier_slope(P1, R, E_star),
-                L_I_slope2=hertz_normal_edge_multiplier_slope(P2, R, E_star),
-                found1=found1, found2=found2,
-            )  # fmt: skip
+        if scalar:  # inside the core's errstate; one cycle skips the cost of its own
+            return self._closed_form_state(P1, dP, R, E_star, True)
+        with np.errstate(over="ignore"):  # overflow is marked by the rules, not warned
+            return self._closed_form_state(P1, dP, R, E_star, False)
+
+    @staticmethod
+    def _closed_form_state(P1: FloatArray, dP: FloatArray, R: float, E_star: float,
+                           scalar: bool) -> LawState:  # fmt: skip
+        P2 = P1 + dP
+        a1 = hertz_half_width(P1, R, E_star)
+        da = hertz_half_width_growth(P1, dP, R, E_star)
+        a2 = a1 + da
+        # Every load P > 0 has a half-width; an overflow is caught by the finiteness rule.
+        found = True if scalar else np.ones(np.shape(a1), dtype=bool)
+        return LawState(
+            P1, P2, a1, a2, da,
+            hertz_normal_edge_multiplier(P1, R, E_star),
+            hertz_normal_edge_multiplier(P2, R, E_star),
+            hertz_load_slope(a1, R, E_star), hertz_load_slope(a2, R, E_star),
+            hertz_normal_edge_multiplier_slope(P1, R, E_star),
+            hertz_normal_edge_multiplier_slope(P2, R, E_star),
+            found, found,
+        )  # fmt: skip
 
     def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
         return hertz_normal_edge_multiplier(self.load(a), self.R, self.E_star)
