@@ -34,6 +34,7 @@ from asymslip_gen.corrective_slip import slip_zone_width, stick_boundary_denomin
 from asymslip_gen.corrective_stick import corrective_stick_slip_zone_width
 from asymslip_gen.edge_multipliers import shear_edge_multiplier_proportional
 from asymslip_gen.exact_solution import permanent_stick_load
+from asymslip_gen.second_order import slip_zone_width_second_order_from_multiplier
 from asymslip_gen.validity import (
     contact_growth_measure,
     multiplier_growth_measure,
@@ -64,7 +65,7 @@ VALIDITY_MEANING = {
 #: The numeric fields of one edge's result, in JSON order (validity measures flattened).
 NUMBER_KEYS = (
     "a1", "a2", "lam", "eta", "L_I1", "L_I2", "L_II1", "L_II2", "b", "slip_zone_width",
-    "b_first_order", "b_exact", "b_corrective_stick", "slip_direction",
+    "b_first_order", "b_second_order", "b_exact", "b_corrective_stick", "slip_direction",
 )  # fmt: skip
 MEASURE_KEYS = tuple(VALIDITY_MEANING)
 
@@ -150,12 +151,20 @@ def _slip_direction(mu: FloatArray, L_I2: FloatArray, L_II2: FloatArray) -> Floa
     return 1.0 * (L_II2 > capacity) - 1.0 * (L_II2 < -capacity)
 
 
+def _shear_multipliers(state: LawState, mu: FloatArray, lam: FloatArray,
+                       eta: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:  # fmt: skip
+    """L_II1, L_II2 of (21) and the slip direction of one edge (in its own frame)."""
+    L_II1 = shear_edge_multiplier_proportional(lam, eta, state.a1, state.L_I1)
+    L_II2 = shear_edge_multiplier_proportional(lam, eta, state.a2, state.L_I2)
+    return L_II1, L_II2, _slip_direction(mu, state.L_I2, L_II2)
+
+
 def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta: FloatArray,
-          dP: FloatArray, verdict: Verdict, side: Side) -> EdgeValues:  # fmt: skip
+          dP: FloatArray, verdict: Verdict, side: Side,
+          shear: tuple[FloatArray, FloatArray, FloatArray],
+          other_direction: FloatArray) -> EdgeValues:  # fmt: skip
     a1, a2, da, L_I1, L_I2 = state.a1, state.a2, state.da, state.L_I1, state.L_I2
-    L_II1 = shear_edge_multiplier_proportional(lam, eta, a1, L_I1)
-    L_II2 = shear_edge_multiplier_proportional(lam, eta, a2, L_I2)
-    direction = _slip_direction(mu, L_I2, L_II2)
+    L_II1, L_II2, direction = shear
     slips = direction != 0
     orientation = _where(slips, direction, 1.0)
     lam_o, eta_o = orientation * lam, orientation * eta
@@ -165,6 +174,12 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
     worst_slope = _maximum(state.a_slope1, state.a_slope2)
     worst_multiplier_slope = _maximum(abs(state.L_I_slope1), abs(state.L_I_slope2))
     first_order = a1 * stick_ratio_first_order(mu, lam_o, eta_o, a1, dP, state.a_slope1)
+    # The other edge slips the same way in the global frame when the two own-frame directions
+    # differ in sign (the left edge's frame is mirrored); +1 too where it does not slip
+    # (derivations/second_order_slip_zone.py).
+    other_edge = _where(other_direction == 0, 1.0, -direction * other_direction)
+    second_width = slip_zone_width_second_order_from_multiplier(
+        mu, lam_o, eta_o, a1, state.a_slope1, L_I1, state.L_I_slope1, dP, other_edge)
     stick_width = corrective_stick_slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, dP)
     # Jaeger-Ciavarella: b = a(P_K) is exact for a symmetric law without bulk tension.
     exact = (eta == 0) & law.symmetric
@@ -178,6 +193,7 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
         "a1": a1, "a2": a2, "lam": lam, "eta": eta, "L_I1": L_I1, "L_I2": L_I2,
         "L_II1": L_II1, "L_II2": L_II2, "b": b, "slip_zone_width": width,
         "b_first_order": _where(slips, first_order, a1),
+        "b_second_order": _where(slips, a1 - second_width, a1),
         "b_exact": b_exact,
         "b_corrective_stick": _where(slips, a1 - stick_width, a1),
         "slip_direction": direction,
@@ -279,10 +295,12 @@ def _evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike,
         states[side] = state
     if law.symmetric:
         states["left"] = states["right"]
+    shear = {side: _shear_multipliers(states[side], mu, sign * lam, eta)
+             for side, sign in (("right", 1.0), ("left", -1.0))}  # fmt: skip
     edges: dict[str, EdgeValues] = {}
-    for side, sign in (("right", 1.0), ("left", -1.0)):
+    for side, sign, other in (("right", 1.0, "left"), ("left", -1.0, "right")):
         edges[side] = _edge(law.for_edge(side), states[side], mu, sign * lam, eta, dP,
-                            verdict, side)  # fmt: skip
+                            verdict, side, shear[side], shear[other][2])  # fmt: skip
     b_sum = edges["right"].values["b"] + edges["left"].values["b"]
     verdict.require("slip_zones_meet", b_sum > 0, None, b_sum=b_sum)
     return Evaluation(law, shape, verdict, edges)
@@ -312,6 +330,7 @@ class SlipZoneResult:
     b: FloatArray | float
     slip_zone_width: FloatArray | float
     b_first_order: FloatArray | float
+    b_second_order: FloatArray | float
     b_exact: FloatArray | float | None
     b_corrective_stick: FloatArray | float
     slip_direction: FloatArray | float
