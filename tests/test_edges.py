@@ -74,3 +74,30 @@ def test_bulk_tension_keeps_its_sign_at_the_left_edge_and_breaks_the_symmetry():
     tension_term = np.pi * right.eta * right.a1 / 4 * right.L_I1
     assert left.L_II1 + right.L_II1 == pytest.approx(2 * tension_term, rel=1e-12)
     assert left.b != pytest.approx(right.b, rel=1e-6)
+
+
+# --- the validity measures mean what their labels say, at both edges ---------------------------
+@pytest.mark.parametrize("lam", [0.0, 0.2, -0.25])
+def test_a_symmetric_cycle_without_slip_has_the_same_measures_at_both_edges(lam):
+    result = slip_zone(LAW, LoadCycle(P1, 0.0, P1 + DP, lam * DP), MU, edge="both")
+    assert result.slip_direction == result.left.slip_direction == 0
+    assert result.validity == result.left.validity
+    # No slip zone: |b - a1|/a1 = 0, and the necessary condition (27) on its size holds.
+    assert result.validity["eq25"] == 0.0 and result.validity["eq27"] == 0.0
+
+
+@pytest.mark.parametrize("lam", [0.5, -0.5, 1.2])
+def test_eq25_is_the_reported_slip_zone_size_at_each_edge(lam):
+    result = slip_zone(LAW, LoadCycle(P1, 0.0, P1 + DP, lam * DP), MU, edge="both")
+    for edge in (result, result.left):
+        # The measure uses the cancellation-free width; b - a1 from b itself loses digits.
+        assert edge.validity["eq25"] == pytest.approx(abs(edge.b - edge.a1) / edge.a1, rel=1e-9)
+        assert edge.validity["eq25"] > 0
+
+
+def test_the_contact_growth_measures_are_the_same_at_both_edges_of_a_symmetric_law():
+    result = slip_zone(LAW, LoadCycle(P1, 0.0, P1 + DP, 0.5 * DP, 0.0, 2e-3), MU, edge="both")
+    for key in ("eq24", "eq26"):  # (24), (26): the law's growth, the same at both edges
+        assert result.validity[key] == result.left.validity[key]
+    # dP a'(P)/a1 with a'(P) = a/(2P) for Hertz, the larger at P1: dP/(2 P1).
+    assert result.validity["eq24"] == pytest.approx(DP / (2 * P1), rel=1e-14)
