@@ -25,22 +25,14 @@ the mirrored cycle (lam -> -lam, eta kept); backward slip is forward slip with
 from __future__ import annotations
 
 from dataclasses import dataclass, field, fields
+from types import ModuleType
 from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from asymslip_gen.corrective_slip import slip_zone_width, stick_boundary_denominator
-from asymslip_gen.corrective_stick import corrective_stick_slip_zone_width
-from asymslip_gen.edge_multipliers import shear_edge_multiplier_proportional
-from asymslip_gen.exact_solution import permanent_stick_load
-from asymslip_gen.second_order import slip_zone_width_second_order_from_multiplier
-from asymslip_gen.validity import (
-    contact_growth_measure,
-    multiplier_growth_measure,
-    slip_zone_growth_measure,
-    stick_ratio_first_order,
-)
+import asymslip_gen
+from asymslip_gen import scalar as scalar_kernels
 
 from .cycle import LoadCycle
 from .errors import InputError, as_numbers
@@ -151,39 +143,40 @@ def _slip_direction(mu: FloatArray, L_I2: FloatArray, L_II2: FloatArray) -> Floa
     return 1.0 * (L_II2 > capacity) - 1.0 * (L_II2 < -capacity)
 
 
-def _shear_multipliers(state: LawState, mu: FloatArray, lam: FloatArray,
-                       eta: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:  # fmt: skip
+def _shear_multipliers(
+    state: LawState, mu: FloatArray, lam: FloatArray, eta: FloatArray, kernels: ModuleType
+) -> tuple[FloatArray, FloatArray, FloatArray]:
     """L_II1, L_II2 of (21) and the slip direction of one edge (in its own frame)."""
-    L_II1 = shear_edge_multiplier_proportional(lam, eta, state.a1, state.L_I1)
-    L_II2 = shear_edge_multiplier_proportional(lam, eta, state.a2, state.L_I2)
+    L_II1 = kernels.shear_edge_multiplier_proportional(lam, eta, state.a1, state.L_I1)
+    L_II2 = kernels.shear_edge_multiplier_proportional(lam, eta, state.a2, state.L_I2)
     return L_II1, L_II2, _slip_direction(mu, state.L_I2, L_II2)
 
 
 def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta: FloatArray,
           dP: FloatArray, verdict: Verdict, side: Side,
           shear: tuple[FloatArray, FloatArray, FloatArray],
-          other_direction: FloatArray) -> EdgeValues:  # fmt: skip
+          other_direction: FloatArray, kernels: ModuleType) -> EdgeValues:  # fmt: skip
     a1, a2, da, L_I1, L_I2 = state.a1, state.a2, state.da, state.L_I1, state.L_I2
     L_II1, L_II2, direction = shear
     slips = direction != 0
     orientation = _where(slips, direction, 1.0)
     lam_o, eta_o = orientation * lam, orientation * eta
-    width = _where(slips, slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, L_I2), 0.0)
+    width = _where(slips, kernels.slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, L_I2), 0.0)
     b = a1 - width
-    denominator = stick_boundary_denominator(mu, lam_o, eta_o, a1, a2, L_I1, L_I2)
+    denominator = kernels.stick_boundary_denominator(mu, lam_o, eta_o, a1, a2, L_I1, L_I2)
     worst_slope = _maximum(state.a_slope1, state.a_slope2)
     worst_multiplier_slope = _maximum(abs(state.L_I_slope1), abs(state.L_I_slope2))
-    first_order = a1 * stick_ratio_first_order(mu, lam_o, eta_o, a1, dP, state.a_slope1)
+    first_order = a1 * kernels.stick_ratio_first_order(mu, lam_o, eta_o, a1, dP, state.a_slope1)
     # The other edge slips the same way in the global frame when the two own-frame directions
     # differ in sign (the left edge's frame is mirrored); +1 too where it does not slip
     # (derivations/second_order_slip_zone.py).
     other_edge = _where(other_direction == 0, 1.0, -direction * other_direction)
-    second_width = slip_zone_width_second_order_from_multiplier(
+    second_width = kernels.slip_zone_width_second_order_from_multiplier(
         mu, lam_o, eta_o, a1, state.a_slope1, L_I1, state.L_I_slope1, dP, other_edge)
-    stick_width = corrective_stick_slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, dP)
+    stick_width = kernels.corrective_stick_slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, dP)
     # Jaeger-Ciavarella: b = a(P_K) is exact for a symmetric law without bulk tension.
     exact = (eta == 0) & law.symmetric
-    P_K = _where(slips, permanent_stick_load(state.P1, dP, lam_o, mu), state.P1)
+    P_K = _where(slips, kernels.permanent_stick_load(state.P1, dP, lam_o, mu), state.P1)
     if exact is True or (_is_array(exact) and exact.any()):
         b_exact = _where(exact, law.half_width_near(_where(exact, P_K, state.P1), state.P1, a1),
                          np.nan)  # fmt: skip
@@ -198,11 +191,11 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
         "b_corrective_stick": _where(slips, a1 - stick_width, a1),
         "slip_direction": direction,
         "P_K": P_K,
-        "eq24": contact_growth_measure(dP, worst_slope, a1),
+        "eq24": kernels.contact_growth_measure(dP, worst_slope, a1),
         "eq25": abs(width) / a1,
-        "eq26": multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),
-        "eq27": _where(slips, slip_zone_growth_measure(mu, lam_o, eta_o, a1, dP, worst_slope),
-                       0.0),
+        "eq26": kernels.multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),
+        "eq27": _where(slips, kernels.slip_zone_growth_measure(mu, lam_o, eta_o, a1, dP,
+                                                               worst_slope), 0.0),
     }  # fmt: skip
     # What the asymptotic solution can answer at this edge.
     scale = 2 * mu * (L_I1 + L_I2) + abs(L_II1) + abs(L_II2)
@@ -250,9 +243,10 @@ def evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> Evaluation:
     with np.errstate(all="ignore"):  # what overflows is marked in the verdict, never warned
         try:
             return _evaluate(law, cycle, mu, float)
-        except (ZeroDivisionError, OverflowError):
-            # A single cycle runs on Python floats (fast), which raise where NumPy gives inf;
-            # such a cycle is evaluated again on NumPy scalars, so the rules see the infs.
+        except (ZeroDivisionError, OverflowError, ValueError):
+            # A single cycle runs on Python floats and math (fast), which raise where NumPy
+            # gives inf or NaN; such a cycle is evaluated again on NumPy scalars and kernels,
+            # so that the rules see the infs and NaNs and name them.
             return _evaluate(law, cycle, mu, np.float64)
 
 
@@ -295,12 +289,14 @@ def _evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike,
         states[side] = state
     if law.symmetric:
         states["left"] = states["right"]
-    shear = {side: _shear_multipliers(states[side], mu, sign * lam, eta)
+    # One cycle on Python floats uses the math kernels (NumPy's per-call cost would dominate).
+    kernels = scalar_kernels if scalar is float and shape == () else asymslip_gen
+    shear = {side: _shear_multipliers(states[side], mu, sign * lam, eta, kernels)
              for side, sign in (("right", 1.0), ("left", -1.0))}  # fmt: skip
     edges: dict[str, EdgeValues] = {}
     for side, sign, other in (("right", 1.0, "left"), ("left", -1.0, "right")):
         edges[side] = _edge(law.for_edge(side), states[side], mu, sign * lam, eta, dP,
-                            verdict, side, shear[side], shear[other][2])  # fmt: skip
+                            verdict, side, shear[side], shear[other][2], kernels)  # fmt: skip
     b_sum = edges["right"].values["b"] + edges["left"].values["b"]
     verdict.require("slip_zones_meet", b_sum > 0, None, b_sum=b_sum)
     return Evaluation(law, shape, verdict, edges)

@@ -29,10 +29,12 @@ def _equation_refs(equations: Sequence[str]) -> str:
     return ", ".join(f"({number})" for number in equations)
 
 
-def _docstring(formula: Formula) -> str:
-    paragraph = textwrap.fill(formula.doc, width=92)
+def docstring(formula: Formula, kind: str = "array_like", returns_kind: str = "ndarray or "
+              "float64", note: str = "") -> str:  # fmt: skip
+    """The NumPy-style docstring of a generated function (``kind``: how arguments are typed)."""
+    paragraph = textwrap.fill(formula.doc + (f"  {note}" if note else ""), width=92)
     parameters = "\n".join(
-        f"{arg.name} : array_like\n{textwrap.indent(textwrap.fill(arg.meaning, 88), '    ')}"
+        f"{arg.name} : {kind}\n{textwrap.indent(textwrap.fill(arg.meaning, 88), '    ')}"
         for arg in formula.args
     )
     returns = textwrap.indent(textwrap.fill(formula.returns, 88), "    ")
@@ -47,7 +49,7 @@ def _docstring(formula: Formula) -> str:
     body = (
         f"{formula.summary}\n\n{paragraph}\n\n{provenance}\n\n"
         f"Parameters\n----------\n{parameters}\n\n"
-        f"Returns\n-------\nndarray or float64\n{returns}\n"
+        f"Returns\n-------\n{returns_kind}\n{returns}\n"
     )
     return '"""' + body + '"""'
 
@@ -58,7 +60,7 @@ def render_function(formula: Formula | Reduced, printer: GeneratedCodePrinter) -
     formula = reduced.formula
     signature = ", ".join(f"{arg.name}: ArrayLike" for arg in formula.args)
     lines = [f"def {formula.name}({signature}) -> FloatArray:"]
-    lines.append(textwrap.indent(_docstring(formula), "    "))
+    lines.append(textwrap.indent(docstring(formula), "    "))
     for temporary, value in reduced.temporaries:
         lines.append(f"    {temporary} = {printer.doprint(value)}")
     lines.append(f"    return {printer.doprint(reduced.result)}")

@@ -36,6 +36,8 @@ from .loader import load_derivations_package
 from .records import FILE as RECORDS_FILE
 from .records import render_records
 from .report import render_report
+from .scalar import MODULE as SCALAR_MODULE
+from .scalar import render_scalar_module
 
 PACKAGE = "asymslip_gen"
 
@@ -137,6 +139,7 @@ def render_package(run: DerivationRun, reduced: Sequence[Reduced] | None = None)
     sources["__init__.py"] = render_package_init(
         {module: [item.formula for item in items] for module, items in modules.items()}
     )
+    sources[f"{SCALAR_MODULE}.py"] = render_scalar_module(reduced, run.module_docs)
     return format_sources(sources)
 
 

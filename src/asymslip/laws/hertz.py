@@ -7,6 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
+import asymslip_gen.hertz
+from asymslip_gen import scalar as scalar_kernels
 from asymslip_gen.hertz import (
     hertz_half_width,
     hertz_half_width_growth,
@@ -62,7 +64,8 @@ class HertzLaw(ContactLaw):
 
     def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
         """Closed forms (29)-(31): no root solve, a2 - a1 without cancellation."""
-        scalar = isinstance(P1, float) and isinstance(dP, float)  # np.float64 included
+        # One cycle on Python floats: the math kernels (NumPy scalars take the NumPy ones).
+        scalar = type(P1) is float and type(dP) is float
         if not scalar:
             P1, dP = np.broadcast_arrays(np.asarray(P1, dtype=np.float64),
                                          np.asarray(dP, dtype=np.float64))  # fmt: skip
@@ -75,19 +78,20 @@ class HertzLaw(ContactLaw):
     @staticmethod
     def _closed_form_state(P1: FloatArray, dP: FloatArray, R: float, E_star: float,
                            scalar: bool) -> LawState:  # fmt: skip
+        kernels = scalar_kernels if scalar else asymslip_gen.hertz
         P2 = P1 + dP
-        a1 = hertz_half_width(P1, R, E_star)
-        da = hertz_half_width_growth(P1, dP, R, E_star)
+        a1 = kernels.hertz_half_width(P1, R, E_star)
+        da = kernels.hertz_half_width_growth(P1, dP, R, E_star)
         a2 = a1 + da
         # Every load P > 0 has a half-width; an overflow is caught by the finiteness rule.
         found = True if scalar else np.ones(np.shape(a1), dtype=bool)
         return LawState(
             P1, P2, a1, a2, da,
-            hertz_normal_edge_multiplier(P1, R, E_star),
-            hertz_normal_edge_multiplier(P2, R, E_star),
-            hertz_load_slope(a1, R, E_star), hertz_load_slope(a2, R, E_star),
-            hertz_normal_edge_multiplier_slope(P1, R, E_star),
-            hertz_normal_edge_multiplier_slope(P2, R, E_star),
+            kernels.hertz_normal_edge_multiplier(P1, R, E_star),
+            kernels.hertz_normal_edge_multiplier(P2, R, E_star),
+            kernels.hertz_load_slope(a1, R, E_star), kernels.hertz_load_slope(a2, R, E_star),
+            kernels.hertz_normal_edge_multiplier_slope(P1, R, E_star),
+            kernels.hertz_normal_edge_multiplier_slope(P2, R, E_star),
             found, found,
         )  # fmt: skip
 
