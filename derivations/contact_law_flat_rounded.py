@@ -59,6 +59,11 @@ def profile() -> sympy.Expr:
     )
 
 
+def profile_branch_free() -> sympy.Expr:
+    """The same profile without branches: Max(0, |x| - c)^2/(2R), c allowed to be 0."""
+    return sympy.Max(0, sympy.Abs(x) - c_emit) ** 2 / (2 * R)
+
+
 @functools.cache
 def flat_rounded_load() -> sympy.Expr:
     """P(a) for a > c, from the plane-contact relation."""
@@ -377,6 +382,26 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
     def emit(name, args, expr, equations, summary, doc, returns):
         d.emit(name=name, args=args, expr=expr, equations=equations, summary=summary, doc=doc,
                module="flat_rounded", returns=returns)  # fmt: skip
+
+    with d.equation("FR-h", "Profile of the flat punch with rounded corners") as eq:
+        eq.given("the gap h = 0 over the flat |x| < c and (|x| - c)^2/(2R) beyond: the "
+                 "starting point of the rounded-flat law", derived=profile())  # fmt: skip
+        inside, beyond_ = sympy.symbols("f e", positive=True)
+        (left, _), (flat, _), (right, _) = profile().args  # the pieces x < -c, |x| < c, x > c
+        for piece, point, how in (
+            (flat, {x: c * inside / (1 + inside)}, "on the flat 0 < x < c"),
+            (flat, {x: -c * inside / (1 + inside)}, "on the flat -c < x < 0"),
+            (right, {x: c + beyond_}, "beyond the right corner x > c"),
+            (left, {x: -c - beyond_}, "beyond the left corner x < -c"),
+        ):
+            eq.holds(profile_branch_free().subs(c_emit, c).subs(point) - piece.subs(point),
+                     how=f"the branch-free Max(0, |x| - c)^2/(2R) equals it {how}")  # fmt: skip
+    emit("flat_rounded_profile", (POSITION, FLAT, RADIUS), profile_branch_free(), ("29",),
+         "Gap profile h(x) = Max(0, |x| - c)^2/(2R) of the flat punch with rounded corners.",
+         "Flat (h = 0) over |x| < c, circular of radius R (in the parabolic, half-plane "
+         "approximation) beyond; c = 0 is the cylinder of (29).  The starting point of the law; "
+         "the reference solver's normal problem starts from it.",
+         "h [length].")  # fmt: skip
 
     emit("flat_rounded_load", LAW_ARGS, emitted(in_angle(load)), ("29",),
          "Normal load P(a) of the flat punch with rounded corners at half-width a.",

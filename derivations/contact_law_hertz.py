@@ -36,10 +36,15 @@ def load_from_profile(profile: sympy.Expr) -> sympy.Expr:
     return sympy.simplify(E_star / 2 * sympy.integrate(integrand, (x, -a, a)))
 
 
+def hertz_profile() -> sympy.Expr:
+    """The cylinder's gap profile h(x) = x^2/(2R), the starting point of (29)."""
+    return x**2 / (2 * R)
+
+
 @functools.cache
 def hertz_load() -> sympy.Expr:
     """(29) as P(a)."""
-    return load_from_profile(x**2 / (2 * R))
+    return load_from_profile(hertz_profile())
 
 
 @functools.cache
@@ -109,6 +114,18 @@ def derive() -> Derivation:
             how="(24) and (27) with a'(P) a-independent ratio 1/2 reduce to dP/P1 and "
             "dP/P1 |1 - lam/mu| (eta = 0)",
         )
+    d.emit(
+        name="hertz_profile",
+        args=(Argument(x, "Position along the interface from the contact centre [length]."),
+              RADIUS),
+        expr=hertz_profile(),
+        equations=("29",),
+        summary="Gap profile h(x) = x^2/(2R) of the cylinder, from which (29) is derived.",
+        doc="The initial gap between the cylinder and the half-plane (the parabolic, half-plane "
+        "approximation of the circle); the reference solver's normal problem starts from it.",
+        module="hertz",
+        returns="h [length].",
+    )
     d.emit(
         name="hertz_load",
         args=(Argument(a, "Contact half-width a > 0 [length]."), RADIUS, MODULUS),

@@ -89,11 +89,16 @@ def euler_form(expr: sympy.Expr, var: sympy.Symbol) -> tuple[sympy.Expr, dict[st
     return sympy.simplify(constant), exponents
 
 
+def power_profile() -> sympy.Expr:
+    """The gap profile h(x) = A |x|^n, the starting point of the law."""
+    return A * sympy.Abs(x) ** n
+
+
 @functools.cache
 def beta_integral() -> tuple[sympy.Expr, dict[str, sympy.Expr]]:
     """int_0^a x h'(x) / sqrt(a^2 - x^2) dx in t = x^2/a^2: the constant and exponents."""
     xp = sympy.Symbol("x", positive=True)
-    integrand = xp * sympy.diff(A * xp**n, xp) / sympy.sqrt(a**2 - xp**2)
+    integrand = xp * sympy.diff(power_profile().subs(x, xp), xp) / sympy.sqrt(a**2 - xp**2)
     in_t = integrand.subs(xp, a * sympy.sqrt(t)) * sympy.diff(a * sympy.sqrt(t), t)
     return euler_form(in_t, t)
 
@@ -402,6 +407,11 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
         d.emit(name=name, args=args, expr=expr, equations=equations, summary=summary, doc=doc,
                module="power_law", returns=returns)  # fmt: skip
 
+    emit("power_law_profile", (POSITION, EXPONENT, COEFFICIENT), power_profile(), ("29",),
+         "Gap profile h(x) = A |x|^n of the power-law punch.",
+         "The starting point of the power law (its slope n A x^(n-1), x > 0, is what the "
+         "plane-contact relation integrates); the reference solver's normal problem starts "
+         "from it.", "h [length].")  # fmt: skip
     emit("power_law_load", (HALF_WIDTH, *PARAMETERS), with_shape_factor(load), ("29",),
          "Normal load P(a) = K E* A a^n of the power-law punch h = A |x|^n.",
          "The counterpart of (29), from the plane-contact relation and Euler's Beta integral.",

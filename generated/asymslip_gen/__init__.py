@@ -5,7 +5,8 @@
 # derivations/section2_consistency.py, derivations/section2_dislocation_density.py,
 # derivations/section2_validity.py, derivations/section3_corrective_stick.py,
 # derivations/section3_exact_solution.py, derivations/section3_method_agreement.py,
-# derivations/section3_slip_displacement.py, derivations/section3_tractions.py.
+# derivations/section3_slip_displacement.py, derivations/section3_tractions.py,
+# derivations/solver_influence.py.
 # Do not edit: change the derivation and run `make generate`.
 """Generated NumPy kernels for asymptotic partial-slip contacts.
 
@@ -47,6 +48,7 @@ from asymslip_gen.flat_rounded import (
     flat_rounded_normal_edge_multiplier_slope,
     flat_rounded_normal_edge_multiplier_slope_at_angle,
     flat_rounded_pressure,
+    flat_rounded_profile,
 )
 from asymslip_gen.generic_law import (
     second_order_stick_boundary_gap,
@@ -59,6 +61,7 @@ from asymslip_gen.hertz import (
     hertz_load_slope,
     hertz_normal_edge_multiplier,
     hertz_normal_edge_multiplier_slope,
+    hertz_profile,
 )
 from asymslip_gen.method_agreement import (
     corrective_slip_discrepancy_third_order,
@@ -75,6 +78,7 @@ from asymslip_gen.power_law import (
     power_law_normal_edge_multiplier,
     power_law_normal_edge_multiplier_slope,
     power_law_pressure,
+    power_law_profile,
     wedge_pressure,
 )
 from asymslip_gen.second_order import (
@@ -86,6 +90,11 @@ from asymslip_gen.second_order import (
     stick_boundary_second_order,
 )
 from asymslip_gen.slip_displacement import slip_on_loading
+from asymslip_gen.solver_influence import (
+    gap_opening_influence,
+    relative_slip_influence,
+    tension_relative_displacement,
+)
 from asymslip_gen.table_law import normal_edge_multiplier_slope_loglog
 from asymslip_gen.tractions import (
     hertz_pressure,
@@ -120,6 +129,8 @@ __all__ = [
     "flat_rounded_normal_edge_multiplier_slope",
     "flat_rounded_normal_edge_multiplier_slope_at_angle",
     "flat_rounded_pressure",
+    "flat_rounded_profile",
+    "gap_opening_influence",
     "hertz_half_width",
     "hertz_half_width_growth",
     "hertz_load",
@@ -127,6 +138,7 @@ __all__ = [
     "hertz_normal_edge_multiplier",
     "hertz_normal_edge_multiplier_slope",
     "hertz_pressure",
+    "hertz_profile",
     "hertz_shear_traction_difference",
     "hertz_slip_zone_width_corrective_stick",
     "hertz_slip_zone_width_exact",
@@ -148,6 +160,8 @@ __all__ = [
     "power_law_normal_edge_multiplier",
     "power_law_normal_edge_multiplier_slope",
     "power_law_pressure",
+    "power_law_profile",
+    "relative_slip_influence",
     "relative_slip_zone_measure",
     "second_order_stick_boundary_gap",
     "second_order_stick_boundary_gap_from_multiplier",
@@ -167,5 +181,6 @@ __all__ = [
     "stick_boundary_proportional",
     "stick_boundary_second_order",
     "stick_ratio_first_order",
+    "tension_relative_displacement",
     "wedge_pressure",
 ]

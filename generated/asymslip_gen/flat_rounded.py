@@ -14,6 +14,7 @@ from numpy.typing import ArrayLike, NDArray
 FloatArray = NDArray[numpy.float64] | numpy.float64
 
 __all__ = [
+    "flat_rounded_profile",
     "flat_rounded_load",
     "flat_rounded_load_slope",
     "flat_rounded_normal_edge_multiplier",
@@ -26,6 +27,32 @@ __all__ = [
     "flat_rounded_normal_edge_multiplier_slope_at_angle",
     "flat_rounded_pressure",
 ]
+
+
+def flat_rounded_profile(x: ArrayLike, c: ArrayLike, R: ArrayLike) -> FloatArray:
+    """Gap profile h(x) = Max(0, |x| - c)^2/(2R) of the flat punch with rounded corners.
+
+    Flat (h = 0) over |x| < c, circular of radius R (in the parabolic, half-plane approximation)
+    beyond; c = 0 is the cylinder of (29).  The starting point of the law; the reference
+    solver's normal problem starts from it.
+
+    Implements Eq. (29) of the paper; derived in ``derivations/contact_law_flat_rounded.py``.
+
+    Parameters
+    ----------
+    x : array_like
+        Position along the interface from the contact centre [length].
+    c : array_like
+        Half-width c >= 0 of the flat face of the punch [length].
+    R : array_like
+        Radius R > 0 of the rounded corners [length].
+
+    Returns
+    -------
+    ndarray or float64
+        h [length].
+    """
+    return (1 / 2) * numpy.maximum(0, -c + abs(x)) ** 2 / R
 
 
 def flat_rounded_load(a: ArrayLike, c: ArrayLike, R: ArrayLike, E_star: ArrayLike) -> FloatArray:

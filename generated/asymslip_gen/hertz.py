@@ -13,6 +13,7 @@ from numpy.typing import ArrayLike, NDArray
 FloatArray = NDArray[numpy.float64] | numpy.float64
 
 __all__ = [
+    "hertz_profile",
     "hertz_load",
     "hertz_load_slope",
     "hertz_half_width",
@@ -20,6 +21,29 @@ __all__ = [
     "hertz_normal_edge_multiplier_slope",
     "hertz_half_width_growth",
 ]
+
+
+def hertz_profile(x: ArrayLike, R: ArrayLike) -> FloatArray:
+    """Gap profile h(x) = x^2/(2R) of the cylinder, from which (29) is derived.
+
+    The initial gap between the cylinder and the half-plane (the parabolic, half-plane
+    approximation of the circle); the reference solver's normal problem starts from it.
+
+    Implements Eq. (29) of the paper; derived in ``derivations/contact_law_hertz.py``.
+
+    Parameters
+    ----------
+    x : array_like
+        Position along the interface from the contact centre [length].
+    R : array_like
+        Radius of the cylinder, R > 0 [length].
+
+    Returns
+    -------
+    ndarray or float64
+        h [length].
+    """
+    return (1 / 2) * x**2 / R
 
 
 def hertz_load(a: ArrayLike, R: ArrayLike, E_star: ArrayLike) -> FloatArray:

@@ -14,6 +14,7 @@ from numpy.typing import ArrayLike, NDArray
 FloatArray = NDArray[numpy.float64] | numpy.float64
 
 __all__ = [
+    "power_law_profile",
     "power_law_load",
     "power_law_load_slope",
     "power_law_half_width",
@@ -24,6 +25,31 @@ __all__ = [
     "power_law_pressure",
     "wedge_pressure",
 ]
+
+
+def power_law_profile(x: ArrayLike, n: ArrayLike, A: ArrayLike) -> FloatArray:
+    """Gap profile h(x) = A |x|^n of the power-law punch.
+
+    The starting point of the power law (its slope n A x^(n-1), x > 0, is what the plane-contact
+    relation integrates); the reference solver's normal problem starts from it.
+
+    Implements Eq. (29) of the paper; derived in ``derivations/contact_law_power.py``.
+
+    Parameters
+    ----------
+    x : array_like
+        Position along the interface from the contact centre [length].
+    n : array_like
+        Exponent n >= 1 of the profile h = A |x|^n (n = 1: wedge).
+    A : array_like
+        Coefficient A > 0 of the profile h = A |x|^n [length^(1-n)].
+
+    Returns
+    -------
+    ndarray or float64
+        h [length].
+    """
+    return A * abs(x) ** n
 
 
 def power_law_load(

@@ -6,7 +6,8 @@
  * derivations/section2_consistency.py, derivations/section2_dislocation_density.py,
  * derivations/section2_validity.py, derivations/section3_corrective_stick.py,
  * derivations/section3_exact_solution.py, derivations/section3_method_agreement.py,
- * derivations/section3_slip_displacement.py, derivations/section3_tractions.py.
+ * derivations/section3_slip_displacement.py, derivations/section3_tractions.py,
+ * derivations/solver_influence.py.
  * Do not edit: change the derivation and run `make generate`.
  */
 
@@ -218,6 +219,12 @@ double asymslip_hertz_slip_zone_width_exact(
     return 2*R*tmp1/(asymslip_pi*E_star*(sqrt(P1)*tmp0 + tmp0*sqrt(P1 - 1.0/2.0*tmp1)));
 }
 
+/* Gap profile h(x) = Max(0, |x| - c)^2/(2R) of the flat punch with rounded corners. See asymslip_gen.h. */
+double asymslip_flat_rounded_profile(double x, double c, double R)
+{
+    return (1.0/2.0)*pow(fmax(0, -c + fabs(x)), 2)/R;
+}
+
 /* Normal load P(a) of the flat punch with rounded corners at half-width a. See asymslip_gen.h. */
 double asymslip_flat_rounded_load(double a, double c, double R, double E_star)
 {
@@ -349,6 +356,12 @@ double asymslip_second_order_stick_boundary_gap_from_multiplier(
     return -1.0/16.0*da_dP*(lam - mu)*(lam + mu)*(-L_I1*da_dP + 2*a1*dL_I_dP)/(L_I1*a1*pow(mu, 2));
 }
 
+/* Gap profile h(x) = x^2/(2R) of the cylinder, from which (29) is derived. See asymslip_gen.h. */
+double asymslip_hertz_profile(double x, double R)
+{
+    return (1.0/2.0)*pow(x, 2)/R;
+}
+
 /* Normal load P(a) of the Hertzian (cylinder) contact of half-width a. See asymslip_gen.h. */
 double asymslip_hertz_load(double a, double R, double E_star)
 {
@@ -421,6 +434,12 @@ double asymslip_corrective_stick_discrepancy_third_order(double lam, double mu)
 {
     const double tmp0 = pow(mu, 3);
     return (1.0/128.0)*(pow(lam, 3) - 3*pow(lam, 2)*mu + 3*lam*pow(mu, 2) + 3*tmp0)/tmp0;
+}
+
+/* Gap profile h(x) = A |x|^n of the power-law punch. See asymslip_gen.h. */
+double asymslip_power_law_profile(double x, double n, double A)
+{
+    return A*pow(fabs(x), n);
 }
 
 /* Normal load P(a) = K E* A a^n of the power-law punch h = A |x|^n. See asymslip_gen.h. */
@@ -698,6 +717,32 @@ double asymslip_slip_on_loading(
     const double tmp1 = L_I1*mu + L_II1;
     const double tmp2 = (4.0/3.0)/E_star;
     return tmp1*tmp2*pow(fmax(0, -a1 - tmp0), 3.0/2.0) - tmp2*(L_I2*mu - L_II2 + tmp1)*pow(fmax(0, -b - tmp0), 3.0/2.0);
+}
+
+/* Opening of the gap at element centre i per unit pressure on element j. See asymslip_gen.h. */
+double asymslip_gap_opening_influence(double k, double h, double ell, double E_star)
+{
+    const double tmp0 = log(fabs(k - 1.0/2.0));
+    const double tmp1 = (1.0/2.0)*h;
+    const double tmp2 = log(fabs(k + 1.0/2.0));
+    const double tmp3 = h*k;
+    return -2*(-h*log(ell) + h*log(h) - h + tmp0*tmp1 - tmp0*tmp3 + tmp1*tmp2 + tmp2*tmp3)/(asymslip_pi*E_star);
+}
+
+/* Relative tangential displacement at element centre i per unit shear traction on element j. See asymslip_gen.h. */
+double asymslip_relative_slip_influence(double k, double h, double ell, double E_star)
+{
+    const double tmp0 = log(fabs(k - 1.0/2.0));
+    const double tmp1 = (1.0/2.0)*h;
+    const double tmp2 = log(fabs(k + 1.0/2.0));
+    const double tmp3 = h*k;
+    return 2*(-h*log(ell) + h*log(h) - h + tmp0*tmp1 - tmp0*tmp3 + tmp1*tmp2 + tmp2*tmp3)/(asymslip_pi*E_star);
+}
+
+/* Relative tangential displacement s = u_x2 - u_x1 at x from a differential bulk tension. See asymslip_gen.h. */
+double asymslip_tension_relative_displacement(double x, double sigma, double E_star)
+{
+    return (1.0/2.0)*sigma*x/E_star;
 }
 
 /* Slope dL_I/dP of the normal edge multiplier of a law fitted as log a(log P). See asymslip_gen.h. */

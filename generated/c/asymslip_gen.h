@@ -6,7 +6,8 @@
  * derivations/section2_consistency.py, derivations/section2_dislocation_density.py,
  * derivations/section2_validity.py, derivations/section3_corrective_stick.py,
  * derivations/section3_exact_solution.py, derivations/section3_method_agreement.py,
- * derivations/section3_slip_displacement.py, derivations/section3_tractions.py.
+ * derivations/section3_slip_displacement.py, derivations/section3_tractions.py,
+ * derivations/solver_influence.py.
  * Do not edit: change the derivation and run `make generate`.
  */
 
@@ -473,6 +474,25 @@ double asymslip_hertz_slip_zone_width_exact(
  */
 
 /**
+ * Gap profile h(x) = Max(0, |x| - c)^2/(2R) of the flat punch with rounded corners.
+ *
+ * Flat (h = 0) over |x| < c, circular of radius R (in the parabolic, half-plane
+ * approximation) beyond; c = 0 is the cylinder of (29). The starting point of the law; the
+ * reference solver's normal problem starts from it.
+ *
+ * Implements Eq. (29) of the paper; derived in derivations/contact_law_flat_rounded.py.
+ *
+ * Arguments:
+ *   x  Position along the interface from the contact centre [length].
+ *   c  Half-width c >= 0 of the flat face of the punch [length].
+ *   R  Radius R > 0 of the rounded corners [length].
+ *
+ * Returns:
+ *   h [length].
+ */
+double asymslip_flat_rounded_profile(double x, double c, double R);
+
+/**
  * Normal load P(a) of the flat punch with rounded corners at half-width a.
  *
  * The counterpart of (29): P = E* (a^2 psi - c sqrt(a^2 - c^2))/(2R) with psi =
@@ -788,6 +808,23 @@ double asymslip_second_order_stick_boundary_gap_from_multiplier(
  */
 
 /**
+ * Gap profile h(x) = x^2/(2R) of the cylinder, from which (29) is derived.
+ *
+ * The initial gap between the cylinder and the half-plane (the parabolic, half-plane
+ * approximation of the circle); the reference solver's normal problem starts from it.
+ *
+ * Implements Eq. (29) of the paper; derived in derivations/contact_law_hertz.py.
+ *
+ * Arguments:
+ *   x  Position along the interface from the contact centre [length].
+ *   R  Radius of the cylinder, R > 0 [length].
+ *
+ * Returns:
+ *   h [length].
+ */
+double asymslip_hertz_profile(double x, double R);
+
+/**
  * Normal load P(a) of the Hertzian (cylinder) contact of half-width a.
  *
  * From the plane-contact relation for the profile h = x^2/(2R).
@@ -987,6 +1024,25 @@ double asymslip_corrective_stick_discrepancy_third_order(double lam, double mu);
  * beyond the paper: contact law, edge multiplier of (19), growth of the contact and
  * pressure.
  */
+
+/**
+ * Gap profile h(x) = A |x|^n of the power-law punch.
+ *
+ * The starting point of the power law (its slope n A x^(n-1), x > 0, is what the
+ * plane-contact relation integrates); the reference solver's normal problem starts from
+ * it.
+ *
+ * Implements Eq. (29) of the paper; derived in derivations/contact_law_power.py.
+ *
+ * Arguments:
+ *   x  Position along the interface from the contact centre [length].
+ *   n  Exponent n >= 1 of the profile h = A |x|^n (n = 1: wedge).
+ *   A  Coefficient A > 0 of the profile h = A |x|^n [length^(1-n)].
+ *
+ * Returns:
+ *   h [length].
+ */
+double asymslip_power_law_profile(double x, double n, double A);
 
 /**
  * Normal load P(a) = K E* A a^n of the power-law punch h = A |x|^n.
@@ -1467,6 +1523,82 @@ double asymslip_slip_on_loading(
     double L_II1,
     double L_II2,
     double E_star);
+
+/* --------------------------------------------------------------------------------------------
+ * solver_influence: Influence coefficients of the reference solver: surface displacements
+ * of one uniformly loaded element of a uniform grid, and the surface strain of a
+ * differential bulk tension, for two elastically similar half-planes in plane strain (from
+ * Flamant's point-force solution; beyond the paper).
+ */
+
+/**
+ * Opening of the gap at element centre i per unit pressure on element j.
+ *
+ * W(k) = -(2/(pi E*)) int_{(k - 1/2) h}^{(k + 1/2) h} ln(|u|/ell) du, k = i - j: the
+ * normal surface displacements of two similar half-planes (into each body, summed) caused
+ * by a uniform unit pressure on one element, from Flamant's solution. Defined up to a
+ * multiple of the total load (the constant ln ell), which the rigid approach absorbs.
+ * Toeplitz in i - j; positive definite on grids shorter than 4 ell.
+ *
+ * Implements Eqs. (F-3), (F-5) of the paper; derived in derivations/solver_influence.py.
+ *
+ * Arguments:
+ *   k       Offset i - j, in elements, of the collocation element i from the loaded
+ *           element j (an integer, so that x_i - x_j = k h never lies on an element end).
+ *   h       Element width h > 0 [length].
+ *   ell     Reference length ell > 0 of the logarithm [length]; at least a quarter of the
+ *           grid's length makes the influence matrix positive definite.
+ *   E_star  Plane-strain contact modulus E* > 0 [force/length^2].
+ *
+ * Returns:
+ *   W: displacement per unit pressure [length^3/force].
+ */
+double asymslip_gap_opening_influence(double k, double h, double ell, double E_star);
+
+/**
+ * Relative tangential displacement at element centre i per unit shear traction on element
+ * j.
+ *
+ * S(k) = +(2/(pi E*)) int_{(k - 1/2) h}^{(k + 1/2) h} ln(|u|/ell) du = -W(k): s = u_x2 -
+ * u_x1 (the lower body relative to the upper) caused by a uniform unit shear traction
+ * exerted on the upper body by the lower one (the lower body carrying the opposite
+ * traction), from Flamant's solution. Defined up to a multiple of the total shear force
+ * (the constant ln ell), which the rigid tangential shift absorbs.
+ *
+ * Implements Eqs. (F-3), (F-5) of the paper; derived in derivations/solver_influence.py.
+ *
+ * Arguments:
+ *   k       Offset i - j, in elements, of the collocation element i from the loaded
+ *           element j (an integer, so that x_i - x_j = k h never lies on an element end).
+ *   h       Element width h > 0 [length].
+ *   ell     Reference length ell > 0 of the logarithm [length]; at least a quarter of the
+ *           grid's length makes the influence matrix positive definite.
+ *   E_star  Plane-strain contact modulus E* > 0 [force/length^2].
+ *
+ * Returns:
+ *   S: displacement per unit shear traction [length^3/force].
+ */
+double asymslip_relative_slip_influence(double k, double h, double ell, double E_star);
+
+/**
+ * Relative tangential displacement s = u_x2 - u_x1 at x from a differential bulk tension.
+ *
+ * sigma x/(2 E*): plane-strain bulk strains (1 - nu^2) sigma_i/E of the two bodies,
+ * differenced, with 1/E* = 2 (1 - nu^2)/E; up to a rigid shift. Under full stick it
+ * produces the tension term (sigma/4) sqrt(a/2) of K_II in (38).
+ *
+ * Implements Eqs. (F-4), (38) of the paper; derived in derivations/solver_influence.py.
+ *
+ * Arguments:
+ *   x       Position along the interface [length].
+ *   sigma   Differential bulk tension sigma = sigma_2 - sigma_1: the bulk tension of the
+ *           lower body minus that of the upper body [force/length^2].
+ *   E_star  Plane-strain contact modulus E* > 0 [force/length^2].
+ *
+ * Returns:
+ *   s [length].
+ */
+double asymslip_tension_relative_displacement(double x, double sigma, double E_star);
 
 /* --------------------------------------------------------------------------------------------
  * table_law: Beyond the paper: the edge multiplier's slope of a contact law tabulated

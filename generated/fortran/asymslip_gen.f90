@@ -5,7 +5,8 @@
 ! derivations/section2_consistency.py, derivations/section2_dislocation_density.py,
 ! derivations/section2_validity.py, derivations/section3_corrective_stick.py,
 ! derivations/section3_exact_solution.py, derivations/section3_method_agreement.py,
-! derivations/section3_slip_displacement.py, derivations/section3_tractions.py.
+! derivations/section3_slip_displacement.py, derivations/section3_tractions.py,
+! derivations/solver_influence.py.
 ! Do not edit: change the derivation and run `make generate`.
 
 ! The formulas of the paper (Moore, Hills et al., Theoretical and Applied Fracture
@@ -36,6 +37,7 @@ module asymslip_gen
     public :: asymslip_permanent_stick_load
     public :: asymslip_hertz_stick_boundary_exact
     public :: asymslip_hertz_slip_zone_width_exact
+    public :: asymslip_flat_rounded_profile
     public :: asymslip_flat_rounded_load
     public :: asymslip_flat_rounded_load_slope
     public :: asymslip_flat_rounded_normal_edge_multiplier
@@ -49,6 +51,7 @@ module asymslip_gen
     public :: asymslip_flat_rounded_pressure
     public :: asymslip_second_order_stick_boundary_gap
     public :: asymslip_second_order_stick_boundary_gap_from_multiplier
+    public :: asymslip_hertz_profile
     public :: asymslip_hertz_load
     public :: asymslip_hertz_load_slope
     public :: asymslip_hertz_half_width
@@ -59,6 +62,7 @@ module asymslip_gen
     public :: asymslip_corrective_slip_discrepancy_third_order
     public :: asymslip_corrective_stick_discrepancy_second_order
     public :: asymslip_corrective_stick_discrepancy_third_order
+    public :: asymslip_power_law_profile
     public :: asymslip_power_law_load
     public :: asymslip_power_law_load_slope
     public :: asymslip_power_law_half_width
@@ -75,6 +79,9 @@ module asymslip_gen
     public :: asymslip_slip_zone_width_second_order_from_multiplier
     public :: asymslip_paper_stick_boundary_error_from_multiplier
     public :: asymslip_slip_on_loading
+    public :: asymslip_gap_opening_influence
+    public :: asymslip_relative_slip_influence
+    public :: asymslip_tension_relative_displacement
     public :: asymslip_normal_edge_multiplier_slope_loglog
     public :: asymslip_hertz_pressure
     public :: asymslip_hertz_shear_traction_difference
@@ -101,6 +108,7 @@ module asymslip_gen
     public :: asymslip_permanent_stick_load_c
     public :: asymslip_hertz_stick_boundary_exact_c
     public :: asymslip_hertz_slip_zone_width_exact_c
+    public :: asymslip_flat_rounded_profile_c
     public :: asymslip_flat_rounded_load_c
     public :: asymslip_flat_rounded_load_slope_c
     public :: asymslip_flat_rounded_normal_edge_multiplier_c
@@ -114,6 +122,7 @@ module asymslip_gen
     public :: asymslip_flat_rounded_pressure_c
     public :: asymslip_second_order_stick_boundary_gap_c
     public :: asymslip_second_order_stick_boundary_gap_from_multiplier_c
+    public :: asymslip_hertz_profile_c
     public :: asymslip_hertz_load_c
     public :: asymslip_hertz_load_slope_c
     public :: asymslip_hertz_half_width_c
@@ -124,6 +133,7 @@ module asymslip_gen
     public :: asymslip_corrective_slip_discrepancy_third_order_c
     public :: asymslip_corrective_stick_discrepancy_second_order_c
     public :: asymslip_corrective_stick_discrepancy_third_order_c
+    public :: asymslip_power_law_profile_c
     public :: asymslip_power_law_load_c
     public :: asymslip_power_law_load_slope_c
     public :: asymslip_power_law_half_width_c
@@ -140,6 +150,9 @@ module asymslip_gen
     public :: asymslip_slip_zone_width_second_order_from_multiplier_c
     public :: asymslip_paper_stick_boundary_error_from_multiplier_c
     public :: asymslip_slip_on_loading_c
+    public :: asymslip_gap_opening_influence_c
+    public :: asymslip_relative_slip_influence_c
+    public :: asymslip_tension_relative_displacement_c
     public :: asymslip_normal_edge_multiplier_slope_loglog_c
     public :: asymslip_hertz_pressure_c
     public :: asymslip_hertz_shear_traction_difference_c
@@ -775,6 +788,35 @@ contains
     ! flat_rounded: Flat punch with rounded corners (flat half-width c, corner radius R),
     ! beyond the paper: contact law P(a), edge multiplier L_I of (19) and contact pressure.
     ! --------------------------------------------------------------------------------------------
+    !> Gap profile h(x) = Max(0, |x| - c)^2/(2R) of the flat punch with rounded corners.
+    !!
+    !! Flat (h = 0) over |x| < c, circular of radius R (in the parabolic, half-plane
+    !! approximation) beyond; c = 0 is the cylinder of (29). The starting point of the law; the
+    !! reference solver's normal problem starts from it.
+    !!
+    !! Implements Eq. (29) of the paper; derived in derivations/contact_law_flat_rounded.py.
+    !!
+    !! Arguments:
+    !!   x  Position along the interface from the contact centre [length].
+    !!   c  Half-width c >= 0 of the flat face of the punch [length].
+    !!   R  Radius R > 0 of the rounded corners [length].
+    !!
+    !! Returns:
+    !!   h [length].
+    elemental function asymslip_flat_rounded_profile(x, c, R) result(asymslip_result)
+        real(c_double), intent(in) :: x, c, R
+        real(c_double) :: asymslip_result
+        asymslip_result = (1.0d0/2.0d0)*max(0.0d0, -c + abs(x))**2/R
+    end function asymslip_flat_rounded_profile
+
+    !> C binding of asymslip_flat_rounded_profile (scalar arguments by value).
+    function asymslip_flat_rounded_profile_c(x, c, R) result(asymslip_result) &
+            bind(C, name="asymslip_flat_rounded_profile")
+        real(c_double), value, intent(in) :: x, c, R
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_flat_rounded_profile(x, c, R)
+    end function asymslip_flat_rounded_profile_c
+
     !> Normal load P(a) of the flat punch with rounded corners at half-width a.
     !!
     !! The counterpart of (29): P = E* (a^2 psi - c sqrt(a^2 - c^2))/(2R) with psi =
@@ -1225,6 +1267,33 @@ contains
     ! hertz: Section 3 of the paper: the Hertzian (cylinder) contact law and its edge
     ! multiplier.
     ! --------------------------------------------------------------------------------------------
+    !> Gap profile h(x) = x^2/(2R) of the cylinder, from which (29) is derived.
+    !!
+    !! The initial gap between the cylinder and the half-plane (the parabolic, half-plane
+    !! approximation of the circle); the reference solver's normal problem starts from it.
+    !!
+    !! Implements Eq. (29) of the paper; derived in derivations/contact_law_hertz.py.
+    !!
+    !! Arguments:
+    !!   x  Position along the interface from the contact centre [length].
+    !!   R  Radius of the cylinder, R > 0 [length].
+    !!
+    !! Returns:
+    !!   h [length].
+    elemental function asymslip_hertz_profile(x, R) result(asymslip_result)
+        real(c_double), intent(in) :: x, R
+        real(c_double) :: asymslip_result
+        asymslip_result = (1.0d0/2.0d0)*x**2/R
+    end function asymslip_hertz_profile
+
+    !> C binding of asymslip_hertz_profile (scalar arguments by value).
+    function asymslip_hertz_profile_c(x, R) result(asymslip_result) &
+            bind(C, name="asymslip_hertz_profile")
+        real(c_double), value, intent(in) :: x, R
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_hertz_profile(x, R)
+    end function asymslip_hertz_profile_c
+
     !> Normal load P(a) of the Hertzian (cylinder) contact of half-width a.
     !!
     !! From the plane-contact relation for the profile h = x^2/(2R).
@@ -1543,6 +1612,35 @@ contains
     ! beyond the paper: contact law, edge multiplier of (19), growth of the contact and
     ! pressure.
     ! --------------------------------------------------------------------------------------------
+    !> Gap profile h(x) = A |x|^n of the power-law punch.
+    !!
+    !! The starting point of the power law (its slope n A x^(n-1), x > 0, is what the
+    !! plane-contact relation integrates); the reference solver's normal problem starts from
+    !! it.
+    !!
+    !! Implements Eq. (29) of the paper; derived in derivations/contact_law_power.py.
+    !!
+    !! Arguments:
+    !!   x  Position along the interface from the contact centre [length].
+    !!   n  Exponent n >= 1 of the profile h = A |x|^n (n = 1: wedge).
+    !!   A  Coefficient A > 0 of the profile h = A |x|^n [length^(1-n)].
+    !!
+    !! Returns:
+    !!   h [length].
+    elemental function asymslip_power_law_profile(x, n, A) result(asymslip_result)
+        real(c_double), intent(in) :: x, n, A
+        real(c_double) :: asymslip_result
+        asymslip_result = A*abs(x)**n
+    end function asymslip_power_law_profile
+
+    !> C binding of asymslip_power_law_profile (scalar arguments by value).
+    function asymslip_power_law_profile_c(x, n, A) result(asymslip_result) &
+            bind(C, name="asymslip_power_law_profile")
+        real(c_double), value, intent(in) :: x, n, A
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_power_law_profile(x, n, A)
+    end function asymslip_power_law_profile_c
+
     !> Normal load P(a) = K E* A a^n of the power-law punch h = A |x|^n.
     !!
     !! The counterpart of (29), from the plane-contact relation and Euler's Beta integral.
@@ -2292,6 +2390,124 @@ contains
         asymslip_result = asymslip_slip_on_loading(x, b, a1, mu, L_I1, L_I2, L_II1, L_II2, &
                 E_star)
     end function asymslip_slip_on_loading_c
+
+    ! --------------------------------------------------------------------------------------------
+    ! solver_influence: Influence coefficients of the reference solver: surface displacements
+    ! of one uniformly loaded element of a uniform grid, and the surface strain of a
+    ! differential bulk tension, for two elastically similar half-planes in plane strain (from
+    ! Flamant's point-force solution; beyond the paper).
+    ! --------------------------------------------------------------------------------------------
+    !> Opening of the gap at element centre i per unit pressure on element j.
+    !!
+    !! W(k) = -(2/(pi E*)) int_{(k - 1/2) h}^{(k + 1/2) h} ln(|u|/ell) du, k = i - j: the
+    !! normal surface displacements of two similar half-planes (into each body, summed) caused
+    !! by a uniform unit pressure on one element, from Flamant's solution. Defined up to a
+    !! multiple of the total load (the constant ln ell), which the rigid approach absorbs.
+    !! Toeplitz in i - j; positive definite on grids shorter than 4 ell.
+    !!
+    !! Implements Eqs. (F-3), (F-5) of the paper; derived in derivations/solver_influence.py.
+    !!
+    !! Arguments:
+    !!   k       Offset i - j, in elements, of the collocation element i from the loaded
+    !!           element j (an integer, so that x_i - x_j = k h never lies on an element end).
+    !!   h       Element width h > 0 [length].
+    !!   ell     Reference length ell > 0 of the logarithm [length]; at least a quarter of the
+    !!           grid's length makes the influence matrix positive definite.
+    !!   E_star  Plane-strain contact modulus E* > 0 [force/length^2].
+    !!
+    !! Returns:
+    !!   W: displacement per unit pressure [length^3/force].
+    elemental function asymslip_gap_opening_influence(k, h, ell, E_star) result(asymslip_result)
+        real(c_double), intent(in) :: k, h, ell, E_star
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3
+        tmp0 = log(abs(k - 0.5d0))
+        tmp1 = (1.0d0/2.0d0)*h
+        tmp2 = log(abs(k + 0.5d0))
+        tmp3 = h*k
+        asymslip_result = -2*(-h*log(ell) + h*log(h) - h + tmp0*tmp1 - tmp0*tmp3 &
+              + tmp1*tmp2 + tmp2*tmp3)/(asymslip_pi*E_star)
+    end function asymslip_gap_opening_influence
+
+    !> C binding of asymslip_gap_opening_influence (scalar arguments by value).
+    function asymslip_gap_opening_influence_c(k, h, ell, E_star) result(asymslip_result) &
+            bind(C, name="asymslip_gap_opening_influence")
+        real(c_double), value, intent(in) :: k, h, ell, E_star
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_gap_opening_influence(k, h, ell, E_star)
+    end function asymslip_gap_opening_influence_c
+
+    !> Relative tangential displacement at element centre i per unit shear traction on element
+    !! j.
+    !!
+    !! S(k) = +(2/(pi E*)) int_{(k - 1/2) h}^{(k + 1/2) h} ln(|u|/ell) du = -W(k): s = u_x2 -
+    !! u_x1 (the lower body relative to the upper) caused by a uniform unit shear traction
+    !! exerted on the upper body by the lower one (the lower body carrying the opposite
+    !! traction), from Flamant's solution. Defined up to a multiple of the total shear force
+    !! (the constant ln ell), which the rigid tangential shift absorbs.
+    !!
+    !! Implements Eqs. (F-3), (F-5) of the paper; derived in derivations/solver_influence.py.
+    !!
+    !! Arguments:
+    !!   k       Offset i - j, in elements, of the collocation element i from the loaded
+    !!           element j (an integer, so that x_i - x_j = k h never lies on an element end).
+    !!   h       Element width h > 0 [length].
+    !!   ell     Reference length ell > 0 of the logarithm [length]; at least a quarter of the
+    !!           grid's length makes the influence matrix positive definite.
+    !!   E_star  Plane-strain contact modulus E* > 0 [force/length^2].
+    !!
+    !! Returns:
+    !!   S: displacement per unit shear traction [length^3/force].
+    elemental function asymslip_relative_slip_influence(k, h, ell, E_star) result(asymslip_result)
+        real(c_double), intent(in) :: k, h, ell, E_star
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3
+        tmp0 = log(abs(k - 0.5d0))
+        tmp1 = (1.0d0/2.0d0)*h
+        tmp2 = log(abs(k + 0.5d0))
+        tmp3 = h*k
+        asymslip_result = 2*(-h*log(ell) + h*log(h) - h + tmp0*tmp1 - tmp0*tmp3 &
+              + tmp1*tmp2 + tmp2*tmp3)/(asymslip_pi*E_star)
+    end function asymslip_relative_slip_influence
+
+    !> C binding of asymslip_relative_slip_influence (scalar arguments by value).
+    function asymslip_relative_slip_influence_c(k, h, ell, E_star) result(asymslip_result) &
+            bind(C, name="asymslip_relative_slip_influence")
+        real(c_double), value, intent(in) :: k, h, ell, E_star
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_relative_slip_influence(k, h, ell, E_star)
+    end function asymslip_relative_slip_influence_c
+
+    !> Relative tangential displacement s = u_x2 - u_x1 at x from a differential bulk tension.
+    !!
+    !! sigma x/(2 E*): plane-strain bulk strains (1 - nu^2) sigma_i/E of the two bodies,
+    !! differenced, with 1/E* = 2 (1 - nu^2)/E; up to a rigid shift. Under full stick it
+    !! produces the tension term (sigma/4) sqrt(a/2) of K_II in (38).
+    !!
+    !! Implements Eqs. (F-4), (38) of the paper; derived in derivations/solver_influence.py.
+    !!
+    !! Arguments:
+    !!   x       Position along the interface [length].
+    !!   sigma   Differential bulk tension sigma = sigma_2 - sigma_1: the bulk tension of the
+    !!           lower body minus that of the upper body [force/length^2].
+    !!   E_star  Plane-strain contact modulus E* > 0 [force/length^2].
+    !!
+    !! Returns:
+    !!   s [length].
+    elemental function asymslip_tension_relative_displacement(x, sigma, E_star) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: x, sigma, E_star
+        real(c_double) :: asymslip_result
+        asymslip_result = (1.0d0/2.0d0)*sigma*x/E_star
+    end function asymslip_tension_relative_displacement
+
+    !> C binding of asymslip_tension_relative_displacement (scalar arguments by value).
+    function asymslip_tension_relative_displacement_c(x, sigma, E_star) result(asymslip_result) &
+            bind(C, name="asymslip_tension_relative_displacement")
+        real(c_double), value, intent(in) :: x, sigma, E_star
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_tension_relative_displacement(x, sigma, E_star)
+    end function asymslip_tension_relative_displacement_c
 
     ! --------------------------------------------------------------------------------------------
     ! table_law: Beyond the paper: the edge multiplier's slope of a contact law tabulated

@@ -21,6 +21,7 @@ from asymslip_gen.flat_rounded import (
     flat_rounded_normal_edge_multiplier_at_angle,
     flat_rounded_normal_edge_multiplier_slope_at_angle,
     flat_rounded_pressure,
+    flat_rounded_profile,
 )
 from asymslip_gen.hertz import hertz_half_width
 
@@ -200,6 +201,10 @@ class FlatRoundedLaw(ContactLaw):
         chord = flat_rounded_chord(a, self.c)
         return flat_rounded_normal_edge_multiplier_slope_at_angle(
             a, self.c, self.R, self.E_star, flat_rounded_corner_angle(chord, self.c), chord)
+
+    def profile(self, x: ArrayLike) -> FloatArray:
+        """Initial gap h(x) = Max(0, |x| - c)^2/(2R): flat over |x| < c, rounded beyond."""
+        return flat_rounded_profile(as_float_array("x", x), self.c, self.R)
 
     def pressure(self, x: ArrayLike, P: ArrayLike) -> FloatArray:
         """Contact pressure p(x) at load P; zero for |x| >= a(P)."""

@@ -16,10 +16,11 @@ from asymslip_gen.hertz import (
     hertz_load_slope,
     hertz_normal_edge_multiplier,
     hertz_normal_edge_multiplier_slope,
+    hertz_profile,
 )
 from asymslip_gen.tractions import hertz_pressure
 
-from ..errors import positive
+from ..errors import as_float_array, positive
 from .base import BoolArray, ContactLaw, FloatArray, LawState
 
 
@@ -110,3 +111,7 @@ class HertzLaw(ContactLaw):
 
     def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
         return hertz_normal_edge_multiplier_slope(P, self.R, self.E_star)
+
+    def profile(self, x: ArrayLike) -> FloatArray:
+        """Initial gap h(x) = x^2/(2R) between the cylinder and the half-plane (29)."""
+        return hertz_profile(as_float_array("x", x), self.R)

@@ -22,6 +22,7 @@ from asymslip_gen.power_law import (
     power_law_normal_edge_multiplier,
     power_law_normal_edge_multiplier_slope,
     power_law_pressure,
+    power_law_profile,
     wedge_pressure,
 )
 
@@ -159,6 +160,10 @@ class PowerLaw(ContactLaw):
     def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
         """(1 - 3/(2n)) L_I / P: negative for n < 3/2."""
         return power_law_normal_edge_multiplier_slope(positive("P", P), *self._parameters)
+
+    def profile(self, x: ArrayLike) -> FloatArray:
+        """Initial gap h(x) = A |x|^n between the punch and the half-plane."""
+        return power_law_profile(as_float_array("x", x), self.n, self.A)
 
     def pressure(self, x: ArrayLike, P: ArrayLike) -> FloatArray:
         """Contact pressure p(x) at load P; zero for |x| >= a(P).
