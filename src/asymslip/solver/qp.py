@@ -1,0 +1,249 @@
+"""Box-constrained quadratic programmes with a Toeplitz Hessian: the contact problems' core.
+
+Both contact problems of the solver are strictly convex quadratic programmes over the grid
+elements of a domain D (the others are fixed at zero)::
+
+    minimise  1/2 y.H.y - g.y   subject to  lower <= y <= upper  and  A y = c,
+
+with H a positive definite Toeplitz influence matrix (``toeplitz.ToeplitzOperator``) and one
+or two equality rows A (the total force, and for the normal problem the moment).  The
+optimality conditions are the contact conditions: with the gradient
+``G = H y - g + A^T lambda``, G = 0 where lower < y < upper (stick, or contact), G >= 0 where
+y = lower and G <= 0 where y = upper (slip in the direction of the traction, or a gap).
+
+:func:`solve_box_qp` uses the primal-dual active-set method (Hintermueller, Ito & Kunisch
+2002; a semismooth Newton method): guess which elements sit at a bound, solve the equality-
+constrained problem on the rest, move every element whose value leaves its box or whose
+gradient has the wrong sign, repeat.  Warm-started from the previous load step it needs 2-3
+solves.  It is not guaranteed to converge for a matrix that is not an M-matrix, so it watches
+for a repeated guess (a cycle) and, if one occurs or the iterations run out, switches to a
+primal active-set method (Nocedal & Wright, Algorithm 16.3), which decreases the objective at
+every step and ends in finitely many (one bound changes per step; slower, never wrong).  If
+that too runs out, :class:`~asymslip.solver.toeplitz.SolverError` is raised: no unconverged
+answer is ever returned.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .toeplitz import (
+    FloatArray,
+    Runs,
+    SolverError,
+    ToeplitzOperator,
+    pack,
+    solve_constrained,
+    unpack,
+)
+
+BoolArray = NDArray[np.bool_]
+
+#: Relative tolerance of the bound and sign decisions (the linear solves reach 1e-11).
+DECISION_TOLERANCE = 1e-9
+#: Primal-dual iterations before the monotone fallback takes over.
+MAX_PRIMAL_DUAL = 40
+#: Iterations of the monotone fallback before giving up (each changes one bound).
+MAX_PRIMAL = 20_000
+
+
+@dataclass
+class BoxQP:
+    """One problem: minimise 1/2 y.H.y - g.y, lower <= y <= upper, A y = c, y = 0 off D."""
+
+    operator: ToeplitzOperator
+    domain: BoolArray
+    lower: FloatArray
+    upper: FloatArray
+    linear: FloatArray
+    rows: FloatArray  # (m, N)
+    targets: FloatArray  # (m,)
+
+
+@dataclass
+class QPSolution:
+    """The minimiser, its multipliers and how it was found."""
+
+    y: FloatArray
+    multipliers: FloatArray  # lambda of the equality rows
+    gradient: FloatArray  # H y - g + A^T lambda (zero where y is strictly inside its box)
+    at_lower: BoolArray
+    at_upper: BoolArray
+    iterations: int  # equality-constrained solves
+    cg_iterations: int
+    method: str  # "primal-dual" or "primal (fallback)"
+    gradient_tolerance: float  # |G| below this counts as zero (e.g. no slip at the bound)
+
+
+class Workspace:
+    """Solves the equality-constrained problems of a sequence of similar programmes.
+
+    The last solution (on the whole grid) starts the next conjugate gradients: successive
+    active-set iterations, and successive load steps, differ little.  A solver keeps one
+    workspace for its life.
+    """
+
+    def __init__(self) -> None:
+        self.cg_iterations = 0
+        self._last: FloatArray | None = None
+
+    def solve(
+        self, qp: BoxQP, at_lower: BoolArray, at_upper: BoolArray
+    ) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """y, lambda and the gradient for this split of the domain."""
+        free = qp.domain & ~at_lower & ~at_upper
+        runs = Runs.of(free)
+        rows = qp.rows
+        if runs.count < rows.shape[0]:
+            raise SolverError(
+                f"only {runs.count} element(s) free for {rows.shape[0]} equilibrium "
+                "condition(s): the grid is too coarse for this contact"
+            )
+        fixed = np.where(at_lower, qp.lower, 0.0) + np.where(at_upper, qp.upper, 0.0)
+        fixed = np.where(qp.domain, fixed, 0.0)
+        right = pack(qp.linear - qp.operator.apply(fixed), runs)
+        guess = None if self._last is None else pack(self._last, runs)
+        free_values, multipliers, iterations = solve_constrained(
+            qp.operator, runs, right, pack(rows, runs), qp.targets - rows @ fixed, guess=guess
+        )
+        self.cg_iterations += iterations
+        y = fixed + unpack(free_values, runs, free.size)
+        self._last = y
+        gradient = qp.operator.apply(y) - qp.linear + multipliers @ rows
+        gradient = np.where(qp.domain, gradient, 0.0)
+        return y, multipliers, gradient
+
+
+def _scales(qp: BoxQP, y: FloatArray) -> tuple[float, float]:
+    """Sizes against which 'at the bound' and 'zero gradient' are decided."""
+    bounds = np.concatenate([qp.lower[qp.domain], qp.upper[qp.domain]])
+    finite = bounds[np.isfinite(bounds)]
+    value_scale = max(
+        float(np.max(np.abs(finite))) if finite.size else 0.0,
+        float(np.max(np.abs(y[qp.domain]))),
+        1e-300,
+    )
+    gradient_scale = max(
+        float(np.max(np.abs(qp.linear[qp.domain]))),
+        qp.operator.diagonal() * value_scale,
+        1e-300,
+    )
+    return DECISION_TOLERANCE * value_scale, DECISION_TOLERANCE * gradient_scale
+
+
+def solve_box_qp(
+    qp: BoxQP,
+    at_lower: BoolArray,
+    at_upper: BoolArray,
+    *,
+    workspace: Workspace | None = None,
+    feasible_start: FloatArray | None = None,
+) -> QPSolution:
+    """Minimise the box-constrained problem from a guess of the elements at their bounds.
+
+    Parameters
+    ----------
+    qp
+        The problem.
+    at_lower, at_upper
+        Initial guess of the elements at their lower and upper bounds (inside the domain).
+    workspace
+        Cached solutions from earlier programmes with the same operator and rows.
+    feasible_start
+        A point satisfying the bounds and the equality rows, for the monotone fallback; without
+        it the fallback is unavailable and a cycling primal-dual iteration raises.
+
+    Raises
+    ------
+    SolverError
+        When neither method converges.
+    """
+    equality = Workspace() if workspace is None else workspace
+    cg_before = equality.cg_iterations
+    lower_set = at_lower & qp.domain
+    upper_set = at_upper & qp.domain & ~lower_set
+    seen: set[bytes] = set()
+    for iteration in range(1, MAX_PRIMAL_DUAL + 1):
+        signature = np.packbits(lower_set).tobytes() + np.packbits(upper_set).tobytes()
+        if signature in seen:
+            break  # a cycle: the primal-dual iteration will not converge from here
+        seen.add(signature)
+        y, multipliers, gradient = equality.solve(qp, lower_set, upper_set)
+        value_tol, gradient_tol = _scales(qp, y)
+        free = qp.domain & ~lower_set & ~upper_set
+        # An element leaves its bound only when its gradient clearly has the wrong sign
+        # (G >= 0 at the lower bound, G <= 0 at the upper, up to the tolerance).
+        new_lower = (free & (y < qp.lower - value_tol)) | (lower_set & (gradient > -gradient_tol))
+        new_upper = (free & (y > qp.upper + value_tol)) | (upper_set & (gradient < gradient_tol))
+        if np.array_equal(new_lower, lower_set) and np.array_equal(new_upper, upper_set):
+            return QPSolution(
+                y,
+                multipliers,
+                gradient,
+                lower_set,
+                upper_set,
+                iteration,
+                equality.cg_iterations - cg_before,
+                "primal-dual",
+                gradient_tol,
+            )
+        lower_set, upper_set = new_lower, new_upper & ~new_lower
+    if feasible_start is None:
+        raise SolverError(
+            f"the active-set iteration did not settle in {len(seen)} iterations (it cycles "
+            "between stick/slip guesses) and no feasible starting point was given"
+        )
+    return _primal_active_set(qp, feasible_start, equality, len(seen), cg_before)
+
+
+def _primal_active_set(
+    qp: BoxQP, start: FloatArray, equality: Workspace, spent: int, cg_before: int
+) -> QPSolution:
+    """Nocedal & Wright's primal active-set method from a feasible point (monotone, finite)."""
+    y = np.where(qp.domain, start, 0.0)
+    value_tol, gradient_tol = _scales(qp, y)
+    if np.any(qp.domain & ((y < qp.lower - value_tol) | (y > qp.upper + value_tol))):
+        raise SolverError("the fallback's starting point violates the bounds")
+    at_lower = qp.domain & (y <= qp.lower + value_tol)
+    at_upper = qp.domain & (y >= qp.upper - value_tol) & ~at_lower
+    for iteration in range(1, MAX_PRIMAL + 1):
+        candidate, multipliers, gradient = equality.solve(qp, at_lower, at_upper)
+        free = qp.domain & ~at_lower & ~at_upper
+        step = np.where(free, candidate - y, 0.0)
+        if np.max(np.abs(step)) <= value_tol:
+            wrong = np.where(at_lower, -gradient, 0.0) + np.where(at_upper, gradient, 0.0)
+            worst = int(np.argmax(wrong))
+            if wrong[worst] <= gradient_tol:
+                return QPSolution(
+                    candidate,
+                    multipliers,
+                    gradient,
+                    at_lower,
+                    at_upper,
+                    spent + iteration,
+                    equality.cg_iterations - cg_before,
+                    "primal (fallback)",
+                    gradient_tol,
+                )
+            at_lower[worst] = at_upper[worst] = False
+            y = candidate
+            continue
+        with np.errstate(divide="ignore", invalid="ignore"):
+            to_lower = np.where(free & (step < 0), (qp.lower - y) / step, np.inf)
+            to_upper = np.where(free & (step > 0), (qp.upper - y) / step, np.inf)
+        blocking = np.minimum(to_lower, to_upper)
+        index = int(np.argmin(blocking))
+        alpha = min(1.0, max(0.0, float(blocking[index])))
+        y = y + alpha * step
+        if alpha < 1.0:
+            if to_lower[index] <= to_upper[index]:
+                at_lower[index], y[index] = True, qp.lower[index]
+            else:
+                at_upper[index], y[index] = True, qp.upper[index]
+    raise SolverError(
+        f"the stick/slip iteration did not converge: {MAX_PRIMAL_DUAL} primal-dual and "
+        f"{MAX_PRIMAL} monotone active-set iterations"
+    )

@@ -1,0 +1,139 @@
+"""Refinement mode: the same problem on N, 2N, 4N elements, and what the sequence says.
+
+Every run uses the same computational domain, so the grids are nested.  For each reported
+boundary (the permanent stick boundary b of each edge, and at each path point the contact edge
+a<k> and stick boundary b<k>) the three values v1, v2, v4 are compared:
+
+* if the differences d1 = v2 - v1 and d2 = v4 - v2 have the same sign and shrink, the observed
+  order is p = log2(d1/d2); for 0.5 <= p <= 6 the value is Richardson-extrapolated,
+  v = v4 + d2/(2^p - 1), with the error |d2|/(2^p - 1) (the size of the correction);
+* otherwise (no order observed: sub-element fits converge erratically, as the element ends
+  move relative to the boundary) the value is the finest run's and the error the spread,
+  max(|v1 - v4|, |v2 - v4|).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from ..cycle import LoadCycle
+from ..errors import InputError
+from .path import LoadPath, as_path
+from .profiles import as_profile
+from .result import SolverResult
+from .run import DEFAULT_ELEMENTS, _integer, _modulus, choose_domain, solve
+
+#: Accepted range of an observed convergence order for Richardson extrapolation.
+ORDER_RANGE = (0.5, 6.0)
+
+
+@dataclass(frozen=True)
+class Extrapolation:
+    """One quantity over the refinement levels, and its extrapolated value and error."""
+
+    values: tuple[float | None, ...]
+    value: float | None
+    error: float | None
+    order: float | None
+    method: str  # "richardson", "spread" or "unavailable"
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "values": list(self.values),
+            "value": self.value,
+            "error": self.error,
+            "order": self.order,
+            "method": self.method,
+        }
+
+
+def extrapolate(values: tuple[float | None, ...]) -> Extrapolation:
+    """Richardson extrapolation of a sequence on grids refined by 2, or its spread."""
+    if any(v is None for v in values) or len(values) < 2:
+        return Extrapolation(values, None, None, None, "unavailable")
+    finest = float(values[-1])
+    spread = max(abs(float(v) - finest) for v in values[:-1])
+    if len(values) >= 3:
+        d1 = float(values[-2]) - float(values[-3])
+        d2 = finest - float(values[-2])
+        if d1 * d2 > 0 and abs(d2) < abs(d1):
+            ratio = d1 / d2
+            order = math.log2(ratio)
+            if ORDER_RANGE[0] <= order <= ORDER_RANGE[1]:
+                correction = d2 / (ratio - 1)
+                return Extrapolation(
+                    values, finest + correction, abs(correction), order, "richardson"
+                )
+    return Extrapolation(values, finest, spread, None, "spread")
+
+
+@dataclass(frozen=True)
+class RefinementResult:
+    """The runs on N, 2N, 4N ... elements and the extrapolated boundaries of each edge."""
+
+    results: tuple[SolverResult, ...]
+    right: dict[str, Extrapolation]
+    left: dict[str, Extrapolation]
+
+    @property
+    def finest(self) -> SolverResult:
+        return self.results[-1]
+
+    def to_dict(self) -> dict[str, Any]:
+        """The finest run's dictionary, each edge with ``refinement``: quantity -> sequence."""
+        data = self.finest.to_dict()
+        data["refinement"] = {key: value.to_dict() for key, value in self.right.items()}
+        data["left"]["refinement"] = {key: value.to_dict() for key, value in self.left.items()}
+        data["solver"]["refinement_elements"] = [r.elements for r in self.results]
+        return data
+
+
+def _quantities(result: SolverResult, side: str) -> dict[str, float | None]:
+    edge = result.edge(side)  # type: ignore[arg-type]
+    values: dict[str, float | None] = {"b": edge.b}
+    for state in result.states:
+        at = state.edge(side)  # type: ignore[arg-type]
+        values[f"a{state.label}"] = at.a
+        values[f"b{state.label}"] = at.b
+    return values
+
+
+def refine(
+    contact: Any,
+    loading: LoadCycle | LoadPath | Any,
+    mu: float,
+    *,
+    elements: int = DEFAULT_ELEMENTS,
+    levels: int = 3,
+    E_star: float | None = None,
+    domain: tuple[float, float] | None = None,
+    **options: Any,
+) -> RefinementResult:
+    """Run :func:`~asymslip.solver.solve` on N, 2N, 4N (``levels`` grids) and extrapolate.
+
+    Parameters are those of :func:`~asymslip.solver.solve` (``elements`` is the coarsest N);
+    ``levels`` >= 2 grids, each twice as fine as the last.
+    """
+    levels = _integer("levels", levels, 2, "must be at least 2 (a sequence needs two grids)")
+    elements = _integer("elements", elements, 1, "must be at least 1")
+    if elements * 2 ** (levels - 1) > 2_000_000:
+        raise InputError(
+            "levels",
+            "the finest grid would exceed 2,000,000 elements",
+            elements * 2 ** (levels - 1),
+        )
+    if domain is None:
+        domain = choose_domain(as_profile(contact), _modulus(contact, E_star), as_path(loading))
+    results = tuple(
+        solve(
+            contact, loading, mu, elements=elements * 2**k, E_star=E_star, domain=domain, **options
+        )
+        for k in range(levels)
+    )
+    edges = {}
+    for side in ("right", "left"):
+        per_run = [_quantities(r, side) for r in results]
+        edges[side] = {key: extrapolate(tuple(q[key] for q in per_run)) for key in per_run[0]}
+    return RefinementResult(results, edges["right"], edges["left"])

@@ -1,0 +1,223 @@
+"""What the solver returns: per load state, per edge, per point, and how far to trust it.
+
+Edges are reported as ``slip-zone`` reports them: the right edge at the top level and the left
+edge under ``left``; every position b or a is the distance from the profile's origin (the
+contact centre of a symmetric profile) along the edge's outward direction -- the right edge's
+x, minus the left edge's x.  A boundary's error is a bound of at least one element width
+(:mod:`asymslip.solver.boundaries`).
+
+Slip direction of an edge (+1, -1 or 0), as in ``slip-zone``: +1 when the edge slips outward
+(the traction on the upper body, and the lower body's motion relative to it, point away from
+the contact centre) -- forward slip; -1 inward; 0 when the edge does not slip.  For the paper's
+cycle it is the direction at state 2, i.e. on loading; for a general path, at the point of
+largest P.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from typing import Any, Literal
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .boundaries import Boundary
+from .grid import Grid
+from .path import LoadPath
+from .toeplitz import FloatArray
+
+Edge = Literal["right", "left"]
+ORIENTATION = {"right": 1, "left": -1}
+
+
+@dataclass(frozen=True)
+class EdgeState:
+    """One edge at one load state: contact edge, stick boundary, slip direction."""
+
+    a: float  # contact edge, measured outward from the origin
+    a_error: float
+    b: float | None  # stick boundary of that state's stick zone (None: nothing sticks)
+    b_error: float | None
+    slip_direction: int
+
+
+@dataclass(frozen=True)
+class StateResult:
+    """The solution at one point of the (steady) path."""
+
+    label: str
+    P: float
+    Q: float
+    sigma: float
+    M: float
+    pressure: FloatArray
+    shear: FloatArray
+    slip_sign: NDArray[np.int8]  # +1/-1 slipping, 0 stuck or out of contact
+    slip: FloatArray  # slip accumulated since the period's first point
+    approach: float
+    tilt: float
+    right: EdgeState
+    left: EdgeState
+
+    @property
+    def contact(self) -> NDArray[np.bool_]:
+        return self.pressure > 0
+
+    @property
+    def stick(self) -> NDArray[np.bool_]:
+        return self.contact & (self.slip_sign == 0)
+
+    def edge(self, side: Edge) -> EdgeState:
+        return self.right if side == "right" else self.left
+
+
+@dataclass(frozen=True)
+class EdgeResult:
+    """The steady state seen from one edge."""
+
+    edge: Edge
+    b: float | None  # boundary of the permanent stick zone (never slips in the steady period)
+    b_error: float | None
+    b_method: str | None  # "fit" or "grid"
+    slip_direction: int
+    asymptotes: dict[str, Any] | None = None
+
+    def b_elements(self, element_size: float, value: float) -> float:
+        """(value - b) in elements."""
+        return (value - self.b) / element_size if self.b is not None else math.nan
+
+
+@dataclass(frozen=True)
+class SolverResult:
+    """The steady state of the incremental half-plane contact solver.
+
+    Per point of the grid (arrays over ``x``): in each state of ``states`` the pressure,
+    shear traction, slip state and accumulated slip; over one steady period ``slip_range``
+    (peak-to-peak slip), ``slip_amplitude`` (half of it) and ``energy`` (frictional energy
+    dissipated per period per unit area of interface, int q ds).
+    """
+
+    grid: Grid
+    mu: float
+    E_star: float
+    profile: dict[str, Any]
+    path: LoadPath
+    is_cycle: bool
+    states: tuple[StateResult, ...]
+    permanent_stick: NDArray[np.bool_]
+    slip_range: FloatArray
+    energy: FloatArray
+    right: EdgeResult
+    left: EdgeResult
+    steps: int
+    cycles: int
+    steady: bool
+    steady_change: float  # largest change of q over the last period / (mu max p)
+    tolerance: float
+    load_steps: int
+    active_set_solves: int
+    cg_iterations: int
+    fallbacks: int
+    seconds: float
+    warnings: tuple[str, ...] = field(default_factory=tuple)
+
+    @property
+    def x(self) -> FloatArray:
+        return self.grid.centres
+
+    @property
+    def element_size(self) -> float:
+        return self.grid.width
+
+    @property
+    def elements(self) -> int:
+        return self.grid.count
+
+    @property
+    def slip_amplitude(self) -> FloatArray:
+        return self.slip_range / 2
+
+    @property
+    def q_diff(self) -> FloatArray:
+        """q2 - q1 of (46) for the paper's cycle (state 2 minus state 1)."""
+        if not self.is_cycle:
+            raise AttributeError("q_diff is defined for the paper's two-state cycle")
+        return self.states[1].shear - self.states[0].shear
+
+    def edge(self, side: Edge) -> EdgeResult:
+        return self.right if side == "right" else self.left
+
+    def with_edges(self, right: EdgeResult, left: EdgeResult) -> SolverResult:
+        return replace(self, right=right, left=left)
+
+    def _edge_dict(self, side: Edge) -> dict[str, Any]:
+        edge = self.edge(side)
+        data: dict[str, Any] = {
+            "b": edge.b,
+            "b_error": edge.b_error,
+            "b_elements_error": None if edge.b_error is None else edge.b_error / self.element_size,
+            "b_method": edge.b_method,
+            "slip_direction": edge.slip_direction,
+        }
+        for state in self.states:
+            at = state.edge(side)
+            data[f"a{state.label}"] = at.a
+            data[f"a{state.label}_error"] = at.a_error
+        for state in self.states:
+            at = state.edge(side)
+            data[f"b{state.label}"] = at.b
+            data[f"b{state.label}_error"] = at.b_error
+            data[f"slip_direction{state.label}"] = at.slip_direction
+        if edge.asymptotes is not None:
+            data["asymptotes"] = edge.asymptotes
+        return data
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready: the right edge at the top level, the left under ``left``.
+
+        Per edge: ``b`` (permanent stick boundary), ``b_error``, ``slip_direction``, the contact
+        edge ``a<k>`` and stick boundary ``b<k>`` (with ``_error``) at each path point k (for the
+        paper's cycle a1, a2, b1, b2), and ``asymptotes`` when attached by
+        :func:`asymslip.solver.compare.with_asymptotes`.  Then the loads of the states, the
+        settings and the convergence record, and the warnings.
+        """
+        data = self._edge_dict("right")
+        data["left"] = self._edge_dict("left")
+        data["states"] = [
+            {
+                "label": s.label,
+                "P": s.P,
+                "Q": s.Q,
+                "sigma": s.sigma,
+                "M": s.M,
+                "approach": s.approach,
+                "tilt": s.tilt,
+            }
+            for s in self.states
+        ]
+        data["solver"] = {
+            "elements": self.elements,
+            "element_size": self.element_size,
+            "domain": [self.grid.start, self.grid.end],
+            "steps_per_segment": self.steps,
+            "cycles": self.cycles,
+            "steady": self.steady,
+            "steady_change": self.steady_change,
+            "steady_tolerance": self.tolerance,
+            "load_steps": self.load_steps,
+            "active_set_solves": self.active_set_solves,
+            "cg_iterations": self.cg_iterations,
+            "fallbacks": self.fallbacks,
+            "seconds": self.seconds,
+            "mu": self.mu,
+            "E_star": self.E_star,
+            **self.profile,
+        }
+        data["warnings"] = list(self.warnings)
+        return data
+
+
+def measured(side: Edge, boundary: Boundary) -> tuple[float, float]:
+    """A boundary's x as the edge's outward distance b, and its error."""
+    return ORIENTATION[side] * boundary.x, boundary.error

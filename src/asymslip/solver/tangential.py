@@ -1,0 +1,181 @@
+"""One load step of the tangential problem: stick, slip and the shear tractions.
+
+Sign convention (``derivations/solver_influence.py``): q(x) is the shear traction the lower
+body exerts on the upper one, along +x, Q = int q dx; s = u_x2 - u_x1 is the tangential
+displacement of the lower body relative to the upper one; sigma = sigma_2 - sigma_1 is the
+bulk tension of the lower body minus that of the upper.  Then
+
+    s_i = (S q)_i + sigma x_i/(2 E*) + c,
+
+with S = -W the generated slip influence matrix and c a rigid shift.  Over one load step,
+with the pressure p of the step's end, Coulomb's law on every element in contact reads
+
+    stick:  Delta s_i = 0,          |q_i| <= mu p_i,
+    slip:   q_i = +-mu p_i,         Delta s_i of the same sign as q_i,
+
+with sum q_i h_el = Q.  These are the optimality conditions of the strictly convex programme
+
+    minimise 1/2 q.(-S).q - ((-S) q_old + Delta f).q   over |q_i| <= mu p_i, sum q_i h_el = Q,
+
+(Delta f the step's change of the tension displacement; the multiplier of the force balance is
+-Delta c, and Delta s = -gradient), solved by :func:`~asymslip.solver.qp.solve_box_qp` warm-
+started from the previous step's stick/slip sets.  Elements out of contact carry no traction.
+
+An element that comes into contact during a step is taken to stick from the step's start;
+with K steps per segment this misplaces its slip history by at most one step's motion (the
+stick boundary at the ends of a monotone segment does not depend on it: every element of the
+final stick zone is in contact throughout).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from asymslip_gen.solver_influence import tension_relative_displacement
+
+from .grid import Grid, InfluenceOperators
+from .normal import NormalState
+from .qp import BoxQP, Workspace, solve_box_qp
+from .toeplitz import FloatArray
+
+Int8Array = NDArray[np.int8]
+
+
+@dataclass(frozen=True)
+class TangentialState:
+    """The shear state at the end of a load step."""
+
+    shear: FloatArray  # q on every element (0 out of contact)
+    slip_sign: Int8Array  # +1 / -1 where slipping (q = +-mu p), 0 where stuck or out of contact
+    slip_increment: FloatArray  # Delta s over the step (0 where stuck or out of contact)
+    sigma: float
+    iterations: int  # active-set solves
+    cg_iterations: int
+    fallback: bool  # the monotone fallback was needed
+
+    @property
+    def stick(self) -> NDArray[np.bool_]:
+        return self.slip_sign == 0
+
+
+class TangentialSolver:
+    """Advances the tangential state by one load step."""
+
+    def __init__(self, grid: Grid, operators: InfluenceOperators, mu: float) -> None:
+        self.grid = grid
+        self.operators = operators
+        self.mu = mu
+        self._rows = np.full((1, grid.count), grid.width)
+        self._workspace = Workspace()
+
+    def initial(self) -> TangentialState:
+        """No shear: the state after normal loading alone (elastically similar bodies)."""
+        zeros = np.zeros(self.grid.count)
+        return TangentialState(
+            zeros, np.zeros(self.grid.count, dtype=np.int8), zeros, 0.0, 0, 0, False
+        )
+
+    def step(
+        self,
+        old: TangentialState,
+        normal: NormalState,
+        Q: float,
+        sigma: float,
+        predicted: Int8Array | None = None,
+    ) -> TangentialState:
+        """The state at the end of a step to shear force Q and tension sigma.
+
+        ``predicted`` is a guess of the new slip signs (+1, -1, 0), e.g. from
+        :func:`predict_slip`; the active-set iteration starts from it.  Without it the
+        iteration starts from the previous step's slip zones.  The guess only affects the
+        work, never the solution.
+        """
+        contact = normal.contact
+        capacity = self.mu * normal.pressure
+        stiffness = self.operators.slip_stiffness
+        tension_change = tension_relative_displacement(
+            self.grid.centres, sigma - old.sigma, self.operators.E_star
+        )
+        qp = BoxQP(
+            operator=stiffness,
+            domain=contact,
+            lower=-capacity,
+            upper=capacity,
+            linear=stiffness.apply(old.shear) + tension_change,
+            rows=self._rows,
+            targets=np.array([Q], dtype=np.float64),
+        )
+        guess_sign = old.slip_sign if predicted is None else predicted
+        at_upper = contact & (guess_sign > 0)
+        at_lower = contact & (guess_sign < 0)
+        guess = np.where(contact, np.clip(old.shear, -capacity, capacity), 0.0)
+        solution = solve_box_qp(
+            qp,
+            at_lower,
+            at_upper,
+            workspace=self._workspace,
+            feasible_start=self._feasible(guess, capacity, contact, Q),
+        )
+        # An element at its friction limit slips only if it moves: one held at the limit by
+        # a locked-in traction, with no slip increment, sticks.
+        moving = np.abs(solution.gradient) > solution.gradient_tolerance
+        sign = np.zeros(self.grid.count, dtype=np.int8)
+        sign[solution.at_upper & moving] = 1
+        sign[solution.at_lower & moving] = -1
+        increment = np.where(sign != 0, -solution.gradient, 0.0)
+        return TangentialState(
+            shear=np.where(contact, solution.y, 0.0),
+            slip_sign=sign,
+            slip_increment=increment,
+            sigma=float(sigma),
+            iterations=solution.iterations,
+            cg_iterations=solution.cg_iterations,
+            fallback=solution.method != "primal-dual",
+        )
+
+    def _feasible(
+        self, guess: FloatArray, capacity: FloatArray, contact: NDArray[np.bool_], Q: float
+    ) -> FloatArray:
+        """A point in the box with sum q h = Q (exists because |Q| < mu P)."""
+        width = self.grid.width
+        deficit = Q / width - float(np.sum(guess))
+        room = np.where(contact, (capacity - guess) if deficit > 0 else (guess + capacity), 0.0)
+        total = float(np.sum(room))
+        if total <= 0:
+            return guess
+        share = min(1.0, abs(deficit) / total)
+        return guess + np.sign(deficit) * share * room
+
+
+def predict_slip(
+    mu: float,
+    before: tuple[NormalState, TangentialState],
+    now: tuple[NormalState, TangentialState],
+    upcoming: NormalState,
+) -> Int8Array:
+    """Guess the slip signs of the next step of a segment from its last two steps.
+
+    Slip zones grow steadily within a segment and the friction reserve r = mu p -+ q of a
+    stuck element vanishes like a square root of its distance from the moving slip zone, so
+    r^2 falls about linearly in time: extrapolated, r^2 -> 2 r_now^2 - r_before^2 <= 0 marks
+    the elements expected to slip next.  Elements slipping now are expected to go on, and
+    elements coming into contact to do what the contact's edge element does now.
+    """
+    (normal_before, state_before), (normal_now, state_now) = before, now
+    guess = state_now.slip_sign.copy()
+    entering = upcoming.contact & ~normal_now.contact
+    if entering.any():
+        first, last = normal_now.first, normal_now.last
+        left_side = np.arange(guess.size) < first
+        guess[entering & left_side] = state_now.slip_sign[first]
+        guess[entering & ~left_side] = state_now.slip_sign[last]
+    stuck = normal_now.contact & normal_before.contact & (guess == 0)
+    for sign in (1, -1):
+        reserve_now = mu * normal_now.pressure - sign * state_now.shear
+        reserve_before = mu * normal_before.pressure - sign * state_before.shear
+        closing = stuck & (reserve_now < reserve_before)
+        guess[closing & (2 * reserve_now**2 <= reserve_before**2)] = sign
+    return guess
