@@ -8,9 +8,11 @@ x, minus the left edge's x.  A boundary's error is a bound of at least one eleme
 
 Slip direction of an edge (+1, -1 or 0), as in ``slip-zone``: +1 when the edge slips outward
 (the traction on the upper body, and the lower body's motion relative to it, point away from
-the contact centre) -- forward slip; -1 inward; 0 when the edge does not slip.  For the paper's
-cycle it is the direction at state 2, i.e. on loading; for a general path, at the point of
-largest P.
+the contact centre) -- forward slip; -1 inward; 0 when the edge does not slip.  It is the
+direction of the element just outside the permanent stick zone at the point of largest P
+(state 2 of the paper's cycle, i.e. on loading); 0 when that element does not slip there,
+as when only the annulus a1 < |x| < a2 slips (|lambda| < mu, eta = 0).  Each state also
+records the direction of the slip zone next to that state's own stick zone.
 """
 
 from __future__ import annotations

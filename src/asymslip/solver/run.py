@@ -11,7 +11,7 @@ changed by more than ``tolerance`` times mu max p.  The result is built from the
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -42,6 +42,9 @@ DEFAULT_MAX_CYCLES = 20
 DOMAIN_MARGIN = 0.03
 #: Elements of the coarse grid that places the domain.
 COARSE_ELEMENTS = 400
+#: A slip below this fraction of the period's largest slip increment counts as none: the
+#: residue of the geometric approach to the steady state (see ``_significant_slip``).
+SLIP_SIGNIFICANCE = 1e-6
 
 
 def _modulus(contact: Any, E_star: float | None) -> float:
@@ -328,8 +331,12 @@ def _run(
         # Each step's solution is unique, so the shear state at the start of a period decides
         # the whole period: when a period ends where it began, it repeats forever.
         scale = mu * max(float(r.normal.pressure.max()) for r in records)
-        change = float(np.max(np.abs(state.shear - start.shear))) / scale
-        if change <= tolerance:
+        previous_change, change = change, float(np.max(np.abs(state.shear - start.shear))) / scale
+        # The approach is geometric: with the ratio r of the last two changes the changes
+        # still to come sum to change r/(1 - r), which must be within the tolerance too.
+        ratio = change / previous_change if np.isfinite(previous_change) and previous_change else 0
+        remaining = change * ratio / (1 - ratio) if ratio < 1 else np.inf
+        if change <= tolerance and remaining <= tolerance:
             steady = True
             break
     return _build(
@@ -390,16 +397,24 @@ def _edge_state(
 
 
 def _permanent_boundary(
-    grid: Grid, mu: float, records: list[_StepRecord], vertex_steps: set[int], end: int, side: Edge
+    grid: Grid,
+    mu: float,
+    records: list[_StepRecord],
+    vertex_steps: set[int],
+    end: int,
+    side: Edge,
 ) -> Boundary:
     """The permanent stick zone's boundary beyond element ``end`` on ``side``.
 
-    The reserve is summed over the steps at which the element just outside slips (the path's
-    points among them if any): each vanishes like a square root at the boundary.  If that
-    element never slips it leaves the contact, and the boundary is that step's contact edge.
+    The element just outside the zone slips at some steps, or leaves the contact at some, or
+    both.  Where it slips, the friction reserves mu p -+ q of those steps (the path's points
+    among them if any) are summed: each vanishes like a square root at the boundary.  Where it
+    leaves the contact, the innermost of those steps' contact edges is the candidate.  The
+    boundary is the innermost candidate.
     """
     direction = ORIENTATION[side]
     outside = end + direction
+    candidates = []
     slipping = [
         i
         for i, r in enumerate(records)
@@ -411,10 +426,32 @@ def _permanent_boundary(
         for i in chosen:
             r = records[i]
             reserve += mu * r.normal.pressure - r.state.slip_sign[outside] * r.state.shear
-        return locate(grid, reserve, end, direction)
-    outside_contact = [i for i, r in enumerate(records) if not r.normal.contact[outside]]
-    i = min(outside_contact, key=lambda k: int(records[k].normal.contact.sum()))
-    return locate(grid, records[i].normal.pressure, end, direction)
+        candidates.append(locate(grid, reserve, end, direction))
+    normals = {id(r.normal): r.normal for r in records if not r.normal.contact[outside]}
+    candidates.extend(locate(grid, n.pressure, end, direction) for n in normals.values())
+    return min(candidates, key=lambda boundary: direction * boundary.x)
+
+
+def _significant_slip(records: list[_StepRecord]) -> list[_StepRecord]:
+    """The period's steps with slips below SLIP_SIGNIFICANCE of the largest one set to zero.
+
+    A steady state is approached geometrically: the last period still carries residual slips,
+    of the order of the steady tolerance, where the limit has none (the permanent stick
+    zone).  Counted as slip they would shrink that zone; they are far below any slip of a real
+    slip zone except within a tiny fraction of an element of its boundary.
+    """
+    largest = max(float(np.max(np.abs(r.state.slip_increment))) for r in records)
+    threshold = SLIP_SIGNIFICANCE * largest
+    out = []
+    for r in records:
+        significant = np.abs(r.state.slip_increment) > threshold
+        state = replace(
+            r.state,
+            slip_sign=np.where(significant, r.state.slip_sign, 0).astype(np.int8),
+            slip_increment=np.where(significant, r.state.slip_increment, 0.0),
+        )
+        out.append(_StepRecord(r.normal, state, np.where(significant, r.energy, 0.0)))
+    return out
 
 
 def _build(
@@ -440,6 +477,7 @@ def _build(
             f"{change:.3g} mu max p (tolerance {tolerance:g}) or the stick/slip state moved; "
             "the results are those of the last period"
         )
+    records = _significant_slip(records)
     in_contact_always = np.logical_and.reduce([r.normal.contact for r in records])
     never_slips = np.logical_and.reduce([r.state.slip_sign == 0 for r in records])
     permanent = in_contact_always & never_slips
@@ -478,17 +516,23 @@ def _build(
             f"the permanent stick zone is in {len(runs.starts)} pieces; b refers to the longest"
         )
     loaded = int(np.argmax(path.points[:, 0]))
+    loaded_step = records[((loaded - 1) % path.count + 1) * steps - 1]
     edges = {}
     for side in ("right", "left"):
-        direction_now = states[loaded].edge(side).slip_direction
         if run is None:
-            edges[side] = EdgeResult(side, None, None, None, direction_now)
+            direction = states[loaded].edge(side).slip_direction
+            edges[side] = EdgeResult(side, None, None, None, direction)
             continue
         end = run[1] if side == "right" else run[0]
+        # The edge's slip direction: that of the element just outside the permanent stick
+        # zone at the point of largest load (state 2 of the paper's cycle: on loading); 0 if
+        # it does not slip there (e.g. only the annulus a1 < |x| < a2 ever slips).
+        outside = end + ORIENTATION[side]
+        direction = int(loaded_step.state.slip_sign[outside]) * ORIENTATION[side]
         boundary = _permanent_boundary(grid, mu, records, vertex_steps, end, side)
         b, b_error = measured(side, boundary)
-        edges[side] = EdgeResult(side, b, b_error, boundary.method, direction_now)
-        if is_cycle:
+        edges[side] = EdgeResult(side, b, b_error, boundary.method, direction)
+        if is_cycle and direction != 0:
             for state in states:
                 at = state.edge(side)
                 if at.b is not None and abs(at.b - b) > max(at.b_error or 0.0, b_error):

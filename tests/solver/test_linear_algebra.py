@@ -1,0 +1,121 @@
+"""The solver's linear algebra against dense NumPy: FFT products, constrained CG, active sets."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from asymslip.solver import qp as qp_module
+from asymslip.solver.grid import Grid, InfluenceOperators
+from asymslip.solver.qp import BoxQP, solve_box_qp
+from asymslip.solver.toeplitz import Runs, SolverError, fast_length, solve_constrained
+
+GRID = Grid.spanning(-1.0, 1.0, 160)
+OPERATORS = InfluenceOperators(GRID, 1.0)
+DENSE = OPERATORS.gap.column[np.abs(np.subtract.outer(np.arange(160), np.arange(160)))]
+RNG = np.random.default_rng(7)
+
+
+def test_fast_length_is_the_next_product_of_2_3_5():
+    assert [fast_length(n) for n in (1, 7, 997, 3601, 8001)] == [1, 8, 1000, 3645, 8100]
+
+
+def test_fft_product_equals_the_dense_toeplitz_product():
+    values = RNG.standard_normal((3, 160))
+    assert np.allclose(OPERATORS.gap.apply(values), values @ DENSE.T, rtol=0, atol=1e-13)
+
+
+def test_block_product_equals_the_dense_leading_block():
+    values = RNG.standard_normal(57)
+    expected = DENSE[:57, :57] @ values
+    assert np.allclose(OPERATORS.gap.block_product(values), expected, rtol=0, atol=1e-13)
+
+
+@pytest.mark.parametrize("rows", [0, 1, 2])
+@pytest.mark.parametrize("mask", ["one run", "two runs"])
+def test_constrained_cg_solves_the_dense_kkt_system(rows, mask):
+    x = GRID.centres
+    free = np.abs(x) < 0.6 if mask == "one run" else (np.abs(x) < 0.7) & (np.abs(x - 0.1) > 0.2)
+    runs = Runs.of(free)
+    n = runs.count
+    H = DENSE[np.ix_(free, free)]
+    A = np.vstack([np.ones(n), x[free]])[:rows]
+    c = np.array([0.3, -0.05])[:rows]
+    b = RNG.standard_normal(n)
+    y, multipliers, iterations = solve_constrained(OPERATORS.gap, runs, b, A, c)
+    kkt = np.block([[H, A.T], [A, np.zeros((rows, rows))]])
+    reference = np.linalg.solve(kkt, np.concatenate([b, c]))
+    assert np.allclose(y, reference[:n], rtol=1e-8, atol=1e-8 * np.abs(reference[:n]).max())
+    assert np.allclose(multipliers, reference[n:], rtol=1e-7)
+    assert iterations <= 25
+
+
+def test_circulant_preconditioner_keeps_the_iterations_flat_in_n():
+    counts = []
+    for count in (500, 4000):
+        grid = Grid.spanning(-1.0, 1.0, count)
+        operators = InfluenceOperators(grid, 1.0)
+        free = np.abs(grid.centres) < 0.9
+        _, _, iterations = solve_constrained(
+            operators.gap, Runs.of(free), grid.centres[free] ** 2, np.ones((1, free.sum())),
+            np.array([1.0]),
+        )  # fmt: skip
+        counts.append(iterations)
+    # Unpreconditioned CG needs ~80 and ~180 iterations here (log kernel, condition ~ N).
+    assert max(counts) <= 20 and counts[1] <= counts[0] + 4
+
+
+def _tangential_problem(seed: int) -> BoxQP:
+    """A friction step: box |q| <= mu p over a Hertz-like contact, one force condition."""
+    rng = np.random.default_rng(seed)
+    x = GRID.centres
+    contact = np.abs(x) < 0.8
+    capacity = np.where(contact, 0.3 * np.sqrt(np.maximum(0.64 - x**2, 0)), 0.0)
+    stiffness = OPERATORS.slip_stiffness
+    old = np.where(contact, rng.uniform(-1, 1, GRID.count) * capacity, 0.0)
+    linear = stiffness.apply(old) + rng.standard_normal() * 0.05 * x
+    return BoxQP(stiffness, contact, -capacity, capacity, linear,
+                 np.full((1, GRID.count), GRID.width), np.array([0.1]))  # fmt: skip
+
+
+def _check_kkt(problem: BoxQP, solution) -> None:
+    """Optimality, checked densely: a strictly convex programme has no other KKT point."""
+    y, d = solution.y, problem.domain
+    H = -OPERATORS.relative_slip(np.eye(GRID.count)).T  # the slip stiffness, densely
+    gradient = H @ y - problem.linear + solution.multipliers @ problem.rows
+    scale = np.abs(problem.linear[d]).max()
+    assert np.all(y[d] >= problem.lower[d] - 1e-9) and np.all(y[d] <= problem.upper[d] + 1e-9)
+    assert problem.rows @ y == pytest.approx(problem.targets, rel=1e-10)
+    inside = d & (y > problem.lower + 1e-9) & (y < problem.upper - 1e-9)
+    assert np.all(np.abs(gradient[inside]) <= 1e-7 * scale)
+    assert np.all(gradient[d & ~inside & (y <= problem.lower + 1e-9)] >= -1e-7 * scale)
+    assert np.all(gradient[d & ~inside & (y >= problem.upper - 1e-9)] <= 1e-7 * scale)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_primal_dual_active_set_meets_the_optimality_conditions(seed):
+    problem = _tangential_problem(seed)
+    none = np.zeros(GRID.count, dtype=bool)
+    solution = solve_box_qp(problem, none, none)
+    assert solution.method == "primal-dual"
+    _check_kkt(problem, solution)
+
+
+def test_monotone_fallback_finds_the_same_minimiser(monkeypatch):
+    problem = _tangential_problem(4)
+    none = np.zeros(GRID.count, dtype=bool)
+    primal_dual = solve_box_qp(problem, none, none)
+    monkeypatch.setattr(qp_module, "MAX_PRIMAL_DUAL", 1)  # force the fallback
+    start = problem.upper * 0.1 / (GRID.width * problem.upper.sum())  # in the box, force 0.1
+    fallback = solve_box_qp(problem, none, none, feasible_start=start)
+    assert fallback.method == "primal (fallback)"
+    _check_kkt(problem, fallback)
+    assert np.allclose(fallback.y, primal_dual.y, atol=1e-8 * np.abs(primal_dual.y).max())
+
+
+def test_an_unsettled_active_set_without_a_fallback_raises(monkeypatch):
+    problem = _tangential_problem(5)
+    none = np.zeros(GRID.count, dtype=bool)
+    monkeypatch.setattr(qp_module, "MAX_PRIMAL_DUAL", 1)
+    with pytest.raises(SolverError, match="did not settle"):
+        solve_box_qp(problem, none, none)
