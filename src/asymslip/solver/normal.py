@@ -63,10 +63,11 @@ class NormalSolver:
         self._workspace = Workspace()
 
     def initial_contact(self) -> BoolArray:
-        """A first guess: the middle half of the grid around the lowest point of the profile."""
-        x = self.grid.centres
-        lowest = x[int(np.argmin(self.heights))]
-        return np.abs(x - lowest) < 0.25 * self.grid.length
+        """A first guess: the grid without its ends (the domain is chosen to fit the contact)."""
+        margin = max(1, int(0.04 * self.grid.count))
+        guess = np.zeros(self.grid.count, dtype=bool)
+        guess[margin:-margin] = True
+        return guess
 
     def solve(self, P: float, M: float, start: BoolArray | None = None) -> NormalState:
         """Pressure at load P and moment M, warm-started from a guess of the contact set.
@@ -114,3 +115,14 @@ class NormalSolver:
         return NormalState(
             float(P), float(M), pressure, contact, approach, tilt, solution.iterations
         )
+
+
+def extrapolated_contact(before: NormalState, now: NormalState) -> BoolArray:
+    """A guess of the next step's contact: both ends moved on as over the last step."""
+    first = 2 * now.first - before.first
+    last = 2 * now.last - before.last
+    size = now.contact.size
+    first, last = max(first, 1), min(last, size - 2)
+    guess = np.zeros(size, dtype=bool)
+    guess[first : last + 1] = True
+    return guess if guess.any() else now.contact

@@ -21,7 +21,7 @@ from ..cycle import LoadCycle
 from ..errors import InputError, as_float_array, positive
 from .boundaries import Boundary, locate
 from .grid import Grid, InfluenceOperators
-from .normal import ContactOutsideGrid, NormalSolver, NormalState
+from .normal import ContactOutsideGrid, NormalSolver, NormalState, extrapolated_contact
 from .path import LoadPath, as_path
 from .profiles import Profile, as_profile
 from .result import ORIENTATION, Edge, EdgeResult, EdgeState, SolverResult, StateResult, measured
@@ -233,8 +233,8 @@ def solve(
         "must be at least 2 (a steady state is seen by repeating a period)",
     )
     tolerance = float(positive("tolerance", tolerance))
-    E_star = _modulus(contact, E_star)
     profile = as_profile(contact)
+    E_star = _modulus(contact, E_star)
     path = as_path(loading)
     path.check_partial_slip(mu)
     is_cycle = isinstance(loading, LoadCycle)
@@ -315,7 +315,10 @@ def _run(
             for j, (P, Q, sigma, M) in enumerate(loads):
                 cached = normals[s][j]
                 if cached is None:
-                    cached = normal_solver.solve(P, M, normal.contact)
+                    guess = normal.contact
+                    if previous_step is not None:  # the contact's ends move steadily too
+                        guess = extrapolated_contact(previous_step[0], normal)
+                    cached = normal_solver.solve(P, M, guess)
                     normals[s][j] = cached
                 # Within a segment the slip zones grow steadily: extrapolate the last two steps.
                 # At a segment's start (a reversal, for the paper's cycle) everything sticks.

@@ -17,6 +17,7 @@ logarithmic kernels here it takes 10-12 iterations to a relative residual of 1e-
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
@@ -38,6 +39,7 @@ class SolverError(RuntimeError):
     """
 
 
+@functools.lru_cache(maxsize=4096)
 def fast_length(n: int) -> int:
     """Smallest 5-smooth integer >= n: NumPy's FFT is fastest on products of 2, 3 and 5."""
     candidate = max(1, n)
@@ -230,7 +232,10 @@ def solve_constrained(
         z = operator.precondition(runs, residual)
         if not m:
             return z, np.zeros(0), residual
-        w = np.linalg.solve(schur, A @ z)
+        if m == 1:  # the common case (force balance): a scalar Schur complement
+            w = (A @ z) / schur[0, 0]
+        else:
+            w = np.linalg.solve(schur, A @ z)
         return z - w @ Z, w, residual - w @ A
 
     r = product(y) - b
