@@ -17,8 +17,8 @@ from typing import Any
 import numpy as np
 
 from ..cycle import LoadCycle
-from ..edge_solution import slip_zone
 from ..errors import InputError
+from ..slip_zones import slip_zone
 from .path import LoadPath
 from .result import SolverResult
 
