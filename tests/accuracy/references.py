@@ -1226,3 +1226,71 @@ def register_slip_zone_quantities(law_name: str) -> None:
 
 for _name in API_LAWS:
     register_slip_zone_quantities(_name)
+
+
+# ---------------------------------------------------------------------------------------------
+# The reference solver (derivations/solver_influence.py and the laws' profiles).  The profiles
+# transcribed from the laws' definitions; the influence kernels from the Flamant point-force
+# relations of two similar half-planes (Johnson, Contact Mechanics, (2.19), (2.25), 1/E* =
+# 2 (1 - nu^2)/E): ds/dx = +(2/(pi E*)) q/(x - t) for the relative slip, dw/dx = -(2/(pi E*))
+# p/(x - t) for the gap opening, integrated to logarithms and over one element by mpmath
+# quadrature; the tension strain (1 - nu^2) sigma/E = sigma/(2 E*).  A grid of 500 elements
+# over the contact half-width a2 is laid so that the drawn x_contact picks the offset k.
+# ---------------------------------------------------------------------------------------------
+
+register_quantity(Quantity(
+    "hertz.hertz_profile", ("x=x_contact", "R"),
+    lambda x, R: x**2 / (2 * R), ("29",), laws=("hertz",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "flat_rounded.flat_rounded_profile", ("x=x_contact", "c", "R"),
+    lambda x, c, R: max(0, abs(x) - c) ** 2 / (2 * R), ("29",), laws=("flat-rounded",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "power_law.power_law_profile", ("x=x_contact", "n", "A"),
+    lambda x, n, A: A * abs(x) ** n, ("29",), laws=("power",),
+))  # fmt: skip
+
+_SOLVER_ELEMENTS = 500
+
+
+def _solver_grid(x, a):
+    """Offset k (an integer), element width h and reference length ell of the test grid."""
+    h = a / _SOLVER_ELEMENTS
+    return np.round(x / h), h, 2.2 * a
+
+
+def _log_kernel_over_element(x, a, E_star, sign):
+    """sign (2/(pi E*)) int over the element of ln(|x_i - t|/ell) dt, by quadrature."""
+    k, h, ell = (mpmath.mpf(float(v)) for v in _solver_grid(float(x), float(a)))
+    lower, upper = (k - mpmath.mpf(1) / 2) * h, (k + mpmath.mpf(1) / 2) * h
+    points = [lower, 0, upper] if lower < 0 < upper else [lower, upper]
+    return sign * 2 / (pi * E_star) * mpmath.quad(lambda u: mpmath.log(abs(u) / ell), points)
+
+
+def _kernel_on_grid(name):
+    def compose(x, a, E_star):
+        from asymslip_gen import solver_influence
+
+        k, h, ell = _solver_grid(x, a)
+        return getattr(solver_influence, name)(k, h, ell, E_star)
+
+    return compose
+
+
+register_quantity(Quantity(
+    "solver_influence.relative_slip_influence", ("x=x_contact", "a=a2", "E_star"),
+    lambda x, a, E_star: _log_kernel_over_element(x, a, E_star, +1), ("F-3", "F-5"),
+    laws=("hertz",), compose=_kernel_on_grid("relative_slip_influence"), costly=True,
+))  # fmt: skip
+register_quantity(Quantity(
+    "solver_influence.gap_opening_influence", ("x=x_contact", "a=a2", "E_star"),
+    lambda x, a, E_star: _log_kernel_over_element(x, a, E_star, -1), ("F-3", "F-5"),
+    laws=("hertz",), compose=_kernel_on_grid("gap_opening_influence"), costly=True,
+))  # fmt: skip
+register_quantity(Quantity(
+    "solver_influence.tension_relative_displacement", ("x=x_contact", "sigma=eta", "E_star"),
+    lambda x, sigma, E_star: (1 - mpmath.mpf("0.3") ** 2) * sigma * x
+    / (2 * (1 - mpmath.mpf("0.3") ** 2) * E_star),  # (1 - nu^2) sigma x / E, any nu
+    ("F-4",),
+))  # fmt: skip
