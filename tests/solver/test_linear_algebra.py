@@ -119,3 +119,19 @@ def test_an_unsettled_active_set_without_a_fallback_raises(monkeypatch):
     monkeypatch.setattr(qp_module, "MAX_PRIMAL_DUAL", 1)
     with pytest.raises(SolverError, match="did not settle"):
         solve_box_qp(problem, none, none)
+
+
+def test_an_element_whose_gap_closes_halfway_through_a_step_is_in_contact_for_half_of_it():
+    from asymslip.solver.normal import NormalState
+    from asymslip.solver.tangential import contact_fractions
+
+    compliance = 0.5
+    before = NormalState(1.0, 0.0, np.array([1.0, 0.0, 2.0]), np.array([True, False, True]),
+                         0.0, 0.0, 1, np.array([0.0, 0.25, 0.0]))  # fmt: skip
+    after = NormalState(1.0, 0.0, np.array([1.0, 0.5, 0.0]), np.array([True, True, False]),
+                        0.0, 0.0, 1, np.array([0.0, 0.0, 3.0]))  # fmt: skip
+    entering, leaving = contact_fractions(before, after, compliance)
+    # gap 0.25 closing to an overlap 0.5 x 0.5 = 0.25: contact from t = 1/2
+    assert entering.tolist() == [0.0, 0.5, 0.0]
+    # overlap 0.5 x 2 = 1 opening to a gap 3: contact until t = 1/4
+    assert leaving.tolist() == [0.0, 0.0, 0.25]

@@ -38,6 +38,7 @@ class NormalState:
     approach: float
     tilt: float
     iterations: int
+    gap: FloatArray  # h - delta - theta x + W p: 0 in contact, > 0 outside
 
     @property
     def first(self) -> int:
@@ -112,8 +113,9 @@ class NormalSolver:
         width = self.grid.width
         approach = -float(solution.multipliers[0]) * width
         tilt = -float(solution.multipliers[1]) * width
+        gap = np.where(contact, 0.0, np.maximum(solution.gradient, 0.0))
         return NormalState(
-            float(P), float(M), pressure, contact, approach, tilt, solution.iterations
+            float(P), float(M), pressure, contact, approach, tilt, solution.iterations, gap
         )
 
 

@@ -69,7 +69,7 @@ class QPSolution:
 
     y: FloatArray
     multipliers: FloatArray  # lambda of the equality rows
-    gradient: FloatArray  # H y - g + A^T lambda (zero where y is strictly inside its box)
+    gradient: FloatArray  # H y - g + A^T lambda on every element (0 strictly inside the box)
     at_lower: BoolArray
     at_upper: BoolArray
     iterations: int  # equality-constrained solves
@@ -112,8 +112,8 @@ class Workspace:
         self.cg_iterations += iterations
         y = fixed + unpack(free_values, runs, free.size)
         self._last = y
+        # On every element, the domain's and beyond (e.g. the gap outside the contact).
         gradient = qp.operator.apply(y) - qp.linear + multipliers @ rows
-        gradient = np.where(qp.domain, gradient, 0.0)
         return y, multipliers, gradient
 
 

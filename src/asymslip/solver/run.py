@@ -147,10 +147,21 @@ class _StepRecord:
     energy: FloatArray
 
 
-def _energy(old: TangentialState, new: TangentialState) -> FloatArray:
-    """Frictional dissipation q ds of one step (trapezoid where the element kept slipping)."""
+def _energy(
+    old: TangentialState, new: TangentialState, before: NormalState, after: NormalState
+) -> FloatArray:
+    """Frictional dissipation q ds of one step, per unit area, at every element.
+
+    The slip of the step times the traction while slipping: the mean of the two ends' where
+    the element slipped the same way at both (trapezoid, second order in the step), half the
+    end traction where it came into contact during the step (its traction rose from zero),
+    half the start traction where it left, and the end traction where it started to slip
+    (its traction reached the limit before it moved).
+    """
     kept = (old.slip_sign == new.slip_sign) & (new.slip_sign != 0)
     traction = np.where(kept, 0.5 * (old.shear + new.shear), new.shear)
+    traction = np.where(after.contact & ~before.contact, 0.5 * new.shear, traction)
+    traction = np.where(before.contact & ~after.contact, 0.5 * old.shear, traction)
     return traction * new.slip_increment
 
 
@@ -286,8 +297,9 @@ def _run(
         Q: float,
         sigma: float,
         predicted: NDArray[np.int8] | None = None,
+        previous: NormalState | None = None,
     ) -> TangentialState:
-        new = tangential.step(state, normal, Q, sigma, predicted)
+        new = tangential.step(state, normal, Q, sigma, predicted, previous)
         counters["steps"] += 1
         counters["solves"] += new.iterations
         counters["cg"] += new.cg_iterations
@@ -327,9 +339,9 @@ def _run(
                 else:
                     predicted = predict_slip(mu, previous_step, (normal, state), cached)
                 previous_step = (normal, state)
-                normal = cached
-                new = advance(state, normal, Q, sigma, predicted)
-                records.append(_StepRecord(normal, new, _energy(state, new)))
+                before, normal = normal, cached
+                new = advance(state, normal, Q, sigma, predicted, before)
+                records.append(_StepRecord(normal, new, _energy(state, new, before, normal)))
                 state = new
         # Each step's solution is unique, so the shear state at the start of a period decides
         # the whole period: when a period ends where it began, it repeats forever.

