@@ -129,3 +129,13 @@ def test_refinement_brackets_the_exact_boundaries():
     data = refined.to_dict()
     assert data["refinement"]["b"]["values"] == [r.right.b for r in refined.results]
     assert data["solver"]["refinement_elements"] == [250, 500, 1000]
+
+
+def test_a_refinement_carries_the_asymptotes_of_its_finest_run():
+    refined = refine(LAW, CYCLE, 0.1, elements=200, levels=2, steps=3)
+    compared = with_asymptotes(refined, LAW, CYCLE, 0.1)
+    data = compared.to_dict()
+    assert data["asymptotes"]["b_exact"]["difference"] == pytest.approx(
+        float(LAW.half_width(97.5)) - refined.finest.right.b, rel=1e-12
+    )
+    assert "refinement" in data and "asymptotes" in data["left"]

@@ -20,6 +20,7 @@ from ..cycle import LoadCycle
 from ..errors import InputError
 from ..slip_zones import slip_zone
 from .path import LoadPath
+from .refine import RefinementResult
 from .result import SolverResult
 
 #: The estimates of ``slip_zone`` compared, by attribute name.
@@ -72,8 +73,14 @@ def asymptote_comparison(
     return out
 
 
-def with_asymptotes(result: SolverResult, law: Any, cycle: LoadCycle, mu: float) -> SolverResult:
+def with_asymptotes(
+    result: SolverResult | RefinementResult, law: Any, cycle: LoadCycle, mu: float
+) -> SolverResult | RefinementResult:
     """The result with each edge's ``asymptotes`` filled in (shown by ``to_dict``).
+
+    For a :class:`~asymslip.solver.refine.RefinementResult` the finest run gets them (its
+    dictionary is the refinement's), compared with that run's b; the extrapolated b is in
+    the dictionary's ``refinement``.
 
     Examples
     --------
@@ -85,6 +92,9 @@ def with_asymptotes(result: SolverResult, law: Any, cycle: LoadCycle, mu: float)
     >>> abs(result.right.asymptotes["b_exact"]["elements"]) < 1
     True
     """
+    if isinstance(result, RefinementResult):
+        finest = with_asymptotes(result.finest, law, cycle, mu)
+        return replace(result, results=(*result.results[:-1], finest))
     comparison = asymptote_comparison(result, law, cycle, mu)
     return result.with_edges(
         replace(result.right, asymptotes=comparison["right"]),
