@@ -147,25 +147,29 @@ def _equilibrium(stresses: tuple[sympy.Expr, ...]) -> sympy.Matrix:
                          sympy.diff(s_xz, x) + sympy.diff(s_zz, z)])  # fmt: skip
 
 
-def _resultant(stresses: tuple[sympy.Expr, ...]) -> sympy.Matrix:
-    """Force that the body inside the half circle r = rho receives from the outer material.
+def _resultant(direction: tuple[int, int], magnitude: sympy.Expr) -> sympy.Matrix:
+    """Force that the material inside the half circle r = rho receives from the outside.
 
-    Its sum with the applied force must vanish.  On the half circle (x, z) = rho (cos phi,
-    sin phi), 0 < phi < pi, the outward normal is (cos phi, sin phi).
+    The field being radial (checked first), the traction on the half circle (x, z) =
+    rho (cos phi, sin phi), 0 < phi < pi, is sigma_rr n with n = (cos phi, sin phi) and
+    rho sigma_rr = -(2F/pi) d.n for the force direction d.  Its sum with the applied force
+    must vanish.
     """
     phi = sympy.Symbol("phi", real=True)
-    rho = sympy.Symbol("rho", positive=True)
-    s_xx, s_zz, s_xz = (s.subs({x: rho * sympy.cos(phi), z: rho * sympy.sin(phi)})
-                        for s in stresses)  # fmt: skip
-    traction = (s_xx * sympy.cos(phi) + s_xz * sympy.sin(phi),
-                s_xz * sympy.cos(phi) + s_zz * sympy.sin(phi))  # fmt: skip
-    return sympy.Matrix([sympy.integrate(sympy.simplify(c * rho), (phi, 0, sympy.pi))
-                         for c in traction])  # fmt: skip
+    n = (sympy.cos(phi), sympy.sin(phi))
+    radial = -2 * magnitude / sympy.pi * (direction[0] * n[0] + direction[1] * n[1])
+    return sympy.Matrix([sympy.integrate(radial * c, (phi, 0, sympy.pi)) for c in n])
 
 
 def _at_surface(expr: sympy.Expr) -> sympy.Expr:
-    """The value on the surface z -> 0+ away from the load (x = r > 0)."""
-    return sympy.limit(sympy.simplify(expr.subs(x, r_pos)), z, 0, "+")
+    """The value on the surface z -> 0+ away from the load (x = r > 0).
+
+    The fields are rational in x and z with denominators powers of x^2 + z^2, continuous at
+    (r, 0) for r > 0: the limit is the value there.
+    """
+    rational = sympy.cancel(expr.subs(x, r_pos))
+    assert sympy.denom(rational).subs(z, 0) != 0, "not continuous at the surface"
+    return sympy.cancel(rational.subs(z, 0))
 
 
 @functools.cache
@@ -285,7 +289,7 @@ def derive() -> Derivation:
             eq.holds(sympy.simplify(residual).norm(),
                      how=f"{name}: the Cartesian components are the radial field "
                      "sigma_rr n n")  # fmt: skip
-            eq.holds(sympy.simplify(_equilibrium(stresses)).norm(),
+            eq.holds(sympy.Matrix([sympy.cancel(c) for c in _equilibrium(stresses)]).norm(),
                      how=f"{name}: div sigma = 0")  # fmt: skip
             surface = [s.subs(z, 0) for s in stresses[1:]]
             eq.holds(
@@ -293,7 +297,7 @@ def derive() -> Derivation:
                 how=f"{name}: sigma_zz = sigma_xz = 0 on the surface z = 0, x != 0",
             )
             applied = sympy.Matrix([force, 0] if magnitude is force else [0, load])
-            eq.holds((_resultant(stresses) + applied).norm(),
+            eq.holds((_resultant(direction, magnitude) + applied).norm(),
                      how=f"{name}: the stresses on a half circle balance the applied "
                      "force")  # fmt: skip
     with d.equation("F-2", "Surface displacement gradients of one half-plane") as eq:

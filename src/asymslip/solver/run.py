@@ -2,10 +2,15 @@
 
 :func:`solve` is the entry point.  Each load step solves the normal problem at the step's
 (P, M) (:mod:`.normal`; reused in every period) and then the tangential problem from the
-previous step's shear state (:mod:`.tangential`).  After every period the shear tractions and
-the stick/slip state at each point of the path are compared with the previous period's: the
-steady state is declared when the stick/slip state is the same at every point and no traction
-changed by more than ``tolerance`` times mu max p.  The result is built from the last period.
+previous step's shear state (:mod:`.tangential`).  Each step's solution is unique (a strictly
+convex programme), so the shear state at the start of a period decides the whole period: a
+period that ends in the state it began from repeats forever, and its stick zones, tractions,
+slips and energies are the steady ones.  The steady state is declared when, over the last
+period, no shear traction changed by more than ``tolerance`` times mu max p, and the changes
+still to come -- the approach is geometric: change r/(1 - r) with r the ratio of the last two
+periods' changes -- are within the tolerance too.  The result is built from that period.
+Periods needed on the paper's cycle: 2 (4 when one edge does not slip and tension is present,
+whose locked-in tractions settle geometrically, by about 2500 times per period).
 """
 
 from __future__ import annotations
