@@ -139,3 +139,17 @@ def test_a_refinement_carries_the_asymptotes_of_its_finest_run():
         float(LAW.half_width(97.5)) - refined.finest.right.b, rel=1e-12
     )
     assert "refinement" in data and "asymptotes" in data["left"]
+
+
+def test_the_solver_imports_neither_the_asymptotes_nor_an_optional_extra():
+    import subprocess
+    import sys
+
+    code = (
+        "import sys, asymslip.solver, asymslip.solver.run; "
+        "print(sorted(m for m in ('asymslip.slip_zones', 'matplotlib', 'sympy', 'scipy') "
+        "if m in sys.modules))"
+    )
+    completed = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                               check=True)  # fmt: skip
+    assert completed.stdout.strip() == "[]"

@@ -3,13 +3,35 @@
 Two elastically similar bodies in plane strain (modulus E*), the half-plane formulation of the
 paper (normal and tangential problems uncoupled), Coulomb friction mu, quasi-static and history
 dependent, on a uniform grid of N elements: the paper's cycle or any closed load path of
-(P, Q, sigma, M) points is applied period after period until the stick zones and tractions
-repeat.  Every boundary comes with an error bound of at least one element; :func:`refine` runs
-N, 2N, 4N elements and extrapolates.  Runtime needs NumPy only.
+(P, Q, sigma, M) points is applied period after period until the tractions repeat.  Every
+boundary comes with an error bound of at least one element; :func:`refine` runs N, 2N, 4N
+elements and extrapolates.  Runtime needs NumPy only (a typed profile needs SymPy, the
+``derive`` extra; the PNG matplotlib, the ``plot`` extra).
 
 The project's independent truth where no exact solution exists (bulk tension, asymmetric
 profiles, general load paths): it never imports the asymptotes to compute; only
 :mod:`asymslip.solver.compare` puts them side by side.
+
+API
+---
+``solve(contact, loading, mu, *, elements=2000, steps=20, E_star=None, tolerance=1e-8,
+max_cycles=20, domain=None) -> SolverResult``
+    ``contact``: a built-in law with a profile (``HertzLaw``, ``FlatRoundedLaw``,
+    ``PowerLaw``), or a :class:`Profile` (:class:`ExpressionProfile`,
+    :class:`TableProfile`) with ``E_star``.  ``loading``: an :class:`asymslip.LoadCycle`
+    or a :class:`LoadPath` (``LoadPath.from_csv(path)``, header ``P,Q,sigma,M``).
+``refine(contact, loading, mu, *, elements=2000, levels=3, ...) -> RefinementResult``
+``asymslip.solver.compare.with_asymptotes(result, law, cycle, mu)``
+    the same result with every ``slip-zone`` estimate and its difference in elements.
+``write_outputs(result, out_dir, *, png=True) -> list[Path]``
+    tractions.csv, slip.csv, energy.csv and solver.png.
+``result.to_dict()``
+    shaped like ``slip-zone --json``: right edge on top, left edge under ``left``.
+
+Sign conventions (``derivations/solver_influence.py``): q and Q are the shear traction and
+force on the upper body (the indenter), sigma = sigma_lower - sigma_upper the differential bulk
+tension; both give a positive K_II (38) at the right edge.  x is the profile's coordinate; b
+and a are measured outward from its origin (right edge: x; left edge: -x), as ``slip-zone``.
 
 Examples
 --------
@@ -20,6 +42,7 @@ Examples
 (11.14, 1, True)
 """
 
+from .outputs import write_outputs
 from .path import LoadPath
 from .profiles import ExpressionProfile, LawProfile, Profile, TableProfile
 from .refine import RefinementResult, refine
@@ -45,4 +68,5 @@ __all__ = [
     "choose_domain",
     "refine",
     "solve",
+    "write_outputs",
 ]
