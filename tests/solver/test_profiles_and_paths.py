@@ -90,7 +90,7 @@ def test_the_cycle_as_a_two_point_path_gives_the_same_solution():
     assert np.array_equal(as_path.states[1].shear, as_cycle.states[1].shear)
 
 
-@pytest.mark.parametrize("Q0, sigma0", [(20.0, 0.0), (20.0, 1.0), (10.0, -0.8)])
+@pytest.mark.parametrize("Q0, sigma0", [(20.0, 0.0), (20.0, 1.0), (10.0, -0.8), (29.9, 0.0)])
 def test_constant_load_fretting_cycle_has_the_classical_eccentric_stick_zone(Q0, sigma0):
     P, mu = 100.0, 0.3
     a = float(HERTZ.half_width(P))

@@ -170,6 +170,8 @@ def solve_box_qp(
         signature = np.packbits(lower_set).tobytes() + np.packbits(upper_set).tobytes()
         if signature in seen:
             break  # a cycle: the primal-dual iteration will not converge from here
+        if np.count_nonzero(qp.domain & ~lower_set & ~upper_set) < qp.rows.shape[0]:
+            break  # a guess with too few free elements to meet the equalities: go monotone
         seen.add(signature)
         y, multipliers, gradient = equality.solve(qp, lower_set, upper_set)
         value_tol, gradient_tol = _scales(qp, y)
