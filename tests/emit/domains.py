@@ -216,6 +216,20 @@ def _flat_rounded(draw: Draw) -> Points:
     return draw.flat_rounded()
 
 
+def _influence(draw: Draw) -> Points:
+    """Solver kernels: integer offsets k of a grid of up to 8000 elements, ell >= its length/4."""
+    h = draw.log_uniform(1e-4, 1.0)
+    return {
+        "k": np.round(draw.uniform(-8000.0, 8000.0)), "h": h, "ell": h * draw.uniform(100, 20000),
+        "E_star": draw.log_uniform(1.0, 1e3),
+    }  # fmt: skip
+
+
+def _tension(draw: Draw) -> Points:
+    return {"x": draw.uniform(-100.0, 100.0), "sigma": draw.uniform(-1e3, 1e3),
+            "E_star": draw.log_uniform(1.0, 1e3)}  # fmt: skip
+
+
 #: Function name -> how to draw points inside its documented domain.
 DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     # corrective_slip, validity: one steady partial-slip cycle
@@ -295,6 +309,13 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "power_law_hypergeometric_argument": _power_law,
     "power_law_pressure": _power_law,
     "wedge_pressure": _wedge,
+    # the laws' profiles and the reference solver's kernels
+    "hertz_profile": _hertz_pressure,
+    "flat_rounded_profile": _flat_rounded,
+    "power_law_profile": _power_law,
+    "gap_opening_influence": _influence,
+    "relative_slip_influence": _influence,
+    "tension_relative_displacement": _tension,
 }
 
 
