@@ -158,7 +158,7 @@ class SolverResult:
         data: dict[str, Any] = {
             "b": edge.b,
             "b_error": edge.b_error,
-            "b_elements_error": None if edge.b_error is None else edge.b_error / self.element_size,
+            "b_error_elements": None if edge.b_error is None else edge.b_error / self.element_size,
             "b_method": edge.b_method,
             "slip_direction": edge.slip_direction,
         }
