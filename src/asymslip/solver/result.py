@@ -17,7 +17,6 @@ records the direction of the slip zone next to that state's own stick zone.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
@@ -55,16 +54,13 @@ class StateResult:
     M: float
     pressure: FloatArray
     shear: FloatArray
+    contact: NDArray[np.bool_]
     slip_sign: NDArray[np.int8]  # +1/-1 slipping, 0 stuck or out of contact
     slip: FloatArray  # slip accumulated since the period's first point
-    approach: float
-    tilt: float
+    approach: float  # rigid approach delta of the normal problem
+    tilt: float  # rigid tilt theta (the gap is h(x) - delta - theta x + opening)
     right: EdgeState
     left: EdgeState
-
-    @property
-    def contact(self) -> NDArray[np.bool_]:
-        return self.pressure > 0
 
     @property
     def stick(self) -> NDArray[np.bool_]:
@@ -85,19 +81,19 @@ class EdgeResult:
     slip_direction: int
     asymptotes: dict[str, Any] | None = None
 
-    def b_elements(self, element_size: float, value: float) -> float:
-        """(value - b) in elements."""
-        return (value - self.b) / element_size if self.b is not None else math.nan
-
 
 @dataclass(frozen=True)
 class SolverResult:
     """The steady state of the incremental half-plane contact solver.
 
-    Per point of the grid (arrays over ``x``): in each state of ``states`` the pressure,
-    shear traction, slip state and accumulated slip; over one steady period ``slip_range``
-    (peak-to-peak slip), ``slip_amplitude`` (half of it) and ``energy`` (frictional energy
-    dissipated per period per unit area of interface, int q ds).
+    Per point of the grid (arrays over ``x``, the element centres): in each state of
+    ``states`` (one per point of the path) the pressure, shear traction, slip state and the
+    slip accumulated since the period's first point; over one steady period ``slip_range``
+    (peak-to-peak relative slip), ``slip_amplitude`` (half of it) and ``energy`` (frictional
+    energy dissipated per period per unit area of interface, int q ds, summed step by step by
+    the trapezoid rule), and ``permanent_stick`` (never slips, always in contact).  Slip and
+    energy of the elements that come into and leave the contact converge like 1/steps (see
+    :mod:`asymslip.solver.tangential`); the stick boundaries do not depend on the steps.
     """
 
     grid: Grid

@@ -520,6 +520,7 @@ def _build(
                 sigma=float(sigma),
                 M=float(M),
                 pressure=record.normal.pressure,
+                contact=record.normal.contact,
                 shear=record.state.shear,
                 slip_sign=record.state.slip_sign,
                 slip=shift,
