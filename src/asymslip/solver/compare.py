@@ -2,7 +2,8 @@
 
 The only module of :mod:`asymslip.solver` that imports the asymptotic formulas: the solver
 computes without them, and this module puts them side by side.  For each edge, every estimate
-of ``asymslip.slip_zone`` -- ``b`` (22), ``b_first_order`` (28), ``b_corrective_stick`` (40)
+of ``asymslip.slip_zone`` -- ``b`` (22), ``b_first_order`` (28), ``b_second_order`` (the
+second-order boundary of ``derivations/second_order_slip_zone.py``), ``b_corrective_stick`` (40)
 and ``b_exact`` (a(P_K), which exists only without bulk tension) -- is reported with its
 difference from the solver's stick boundary, in length and in elements, and whether it lies
 within the solver's error bound.
@@ -24,7 +25,7 @@ from .refine import RefinementResult
 from .result import SolverResult
 
 #: The estimates of ``slip_zone`` compared, by attribute name.
-ESTIMATES = ("b", "b_first_order", "b_corrective_stick", "b_exact")
+ESTIMATES = ("b", "b_first_order", "b_second_order", "b_corrective_stick", "b_exact")
 
 
 def _entry(value: float | None, b: float | None, b_error: float | None,
@@ -67,7 +68,7 @@ def asymptote_comparison(
     for side, estimate in (("right", estimates), ("left", estimates.left)):
         edge = result.edge(side)  # type: ignore[arg-type]
         out[side] = {
-            name: _entry(getattr(estimate, name), edge.b, edge.b_error, element)
+            name: _entry(getattr(estimate, name, None), edge.b, edge.b_error, element)
             for name in ESTIMATES
         }
     return out
