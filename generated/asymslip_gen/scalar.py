@@ -5,7 +5,8 @@
 # derivations/section2_consistency.py, derivations/section2_dislocation_density.py,
 # derivations/section2_validity.py, derivations/section3_corrective_stick.py,
 # derivations/section3_exact_solution.py, derivations/section3_method_agreement.py,
-# derivations/section3_slip_displacement.py, derivations/section3_tractions.py.
+# derivations/section3_slip_displacement.py, derivations/section3_tractions.py,
+# derivations/solver_influence.py.
 # Do not edit: change the derivation and run `make generate`.
 """The generated formulas for one value at a time, on Python floats with ``math``.
 
@@ -37,6 +38,7 @@ __all__ = [
     "permanent_stick_load",
     "hertz_stick_boundary_exact",
     "hertz_slip_zone_width_exact",
+    "flat_rounded_profile",
     "flat_rounded_load",
     "flat_rounded_load_slope",
     "flat_rounded_normal_edge_multiplier",
@@ -50,6 +52,7 @@ __all__ = [
     "flat_rounded_pressure",
     "second_order_stick_boundary_gap",
     "second_order_stick_boundary_gap_from_multiplier",
+    "hertz_profile",
     "hertz_load",
     "hertz_load_slope",
     "hertz_half_width",
@@ -60,6 +63,7 @@ __all__ = [
     "corrective_slip_discrepancy_third_order",
     "corrective_stick_discrepancy_second_order",
     "corrective_stick_discrepancy_third_order",
+    "power_law_profile",
     "power_law_load",
     "power_law_load_slope",
     "power_law_half_width",
@@ -76,6 +80,9 @@ __all__ = [
     "slip_zone_width_second_order_from_multiplier",
     "paper_stick_boundary_error_from_multiplier",
     "slip_on_loading",
+    "gap_opening_influence",
+    "relative_slip_influence",
+    "tension_relative_displacement",
     "normal_edge_multiplier_slope_loglog",
     "hertz_pressure",
     "hertz_shear_traction_difference",
@@ -678,6 +685,33 @@ def hertz_slip_zone_width_exact(
     )
 
 
+def flat_rounded_profile(x: float, c: float, R: float) -> float:
+    """Gap profile h(x) = Max(0, |x| - c)^2/(2R) of the flat punch with rounded corners.
+
+    Flat (h = 0) over |x| < c, circular of radius R (in the parabolic, half-plane approximation)
+    beyond; c = 0 is the cylinder of (29).  The starting point of the law; the reference
+    solver's normal problem starts from it.  One value at a time, as
+    ``asymslip_gen.flat_rounded.flat_rounded_profile``.
+
+    Implements Eq. (29) of the paper; derived in ``derivations/contact_law_flat_rounded.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the interface from the contact centre [length].
+    c : float
+        Half-width c >= 0 of the flat face of the punch [length].
+    R : float
+        Radius R > 0 of the rounded corners [length].
+
+    Returns
+    -------
+    float
+        h [length].
+    """
+    return (1 / 2) * max(0, -c + abs(x)) ** 2 / R
+
+
 def flat_rounded_load(a: float, c: float, R: float, E_star: float) -> float:
     """Normal load P(a) of the flat punch with rounded corners at half-width a.
 
@@ -1113,6 +1147,30 @@ def second_order_stick_boundary_gap_from_multiplier(
     )
 
 
+def hertz_profile(x: float, R: float) -> float:
+    """Gap profile h(x) = x^2/(2R) of the cylinder, from which (29) is derived.
+
+    The initial gap between the cylinder and the half-plane (the parabolic, half-plane
+    approximation of the circle); the reference solver's normal problem starts from it.  One
+    value at a time, as ``asymslip_gen.hertz.hertz_profile``.
+
+    Implements Eq. (29) of the paper; derived in ``derivations/contact_law_hertz.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the interface from the contact centre [length].
+    R : float
+        Radius of the cylinder, R > 0 [length].
+
+    Returns
+    -------
+    float
+        h [length].
+    """
+    return (1 / 2) * x**2 / R
+
+
 def hertz_load(a: float, R: float, E_star: float) -> float:
     """Normal load P(a) of the Hertzian (cylinder) contact of half-width a.
 
@@ -1389,6 +1447,32 @@ def corrective_stick_discrepancy_third_order(lam: float, mu: float) -> float:
     """
     tmp0 = mu**3
     return (1 / 128) * (lam**3 - 3 * lam**2 * mu + 3 * lam * mu**2 + 3 * tmp0) / tmp0
+
+
+def power_law_profile(x: float, n: float, A: float) -> float:
+    """Gap profile h(x) = A |x|^n of the power-law punch.
+
+    The starting point of the power law (its slope n A x^(n-1), x > 0, is what the plane-contact
+    relation integrates); the reference solver's normal problem starts from it.  One value at a
+    time, as ``asymslip_gen.power_law.power_law_profile``.
+
+    Implements Eq. (29) of the paper; derived in ``derivations/contact_law_power.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the interface from the contact centre [length].
+    n : float
+        Exponent n >= 1 of the profile h = A |x|^n (n = 1: wedge).
+    A : float
+        Coefficient A > 0 of the profile h = A |x|^n [length^(1-n)].
+
+    Returns
+    -------
+    float
+        h [length].
+    """
+    return A * abs(x) ** n
 
 
 def power_law_load(a: float, n: float, A: float, E_star: float, K: float) -> float:
@@ -2252,6 +2336,132 @@ def slip_on_loading(
     return tmp1 * tmp2 * max(0, -a1 - tmp0) ** (3 / 2) - tmp2 * (L_I2 * mu - L_II2 + tmp1) * max(
         0, -b - tmp0
     ) ** (3 / 2)
+
+
+def gap_opening_influence(k: float, h: float, ell: float, E_star: float) -> float:
+    """Opening of the gap at element centre i per unit pressure on element j.
+
+    W(k) = -(2/(pi E*)) int_{(k - 1/2) h}^{(k + 1/2) h} ln(|u|/ell) du, k = i - j: the normal
+    surface displacements of two similar half-planes (into each body, summed) caused by a
+    uniform unit pressure on one element, from Flamant's solution.  Defined up to a multiple of
+    the total load (the constant ln ell), which the rigid approach absorbs.  Toeplitz in i - j;
+    positive definite on grids shorter than 4 ell.  One value at a time, as
+    ``asymslip_gen.solver_influence.gap_opening_influence``.
+
+    Implements Eqs. (F-3), (F-5) of the paper; derived in ``derivations/solver_influence.py``.
+
+    Parameters
+    ----------
+    k : float
+        Offset i - j, in elements, of the collocation element i from the loaded element j (an
+        integer, so that x_i - x_j = k h never lies on an element end).
+    h : float
+        Element width h > 0 [length].
+    ell : float
+        Reference length ell > 0 of the logarithm [length]; at least a quarter of the grid's
+        length makes the influence matrix positive definite.
+    E_star : float
+        Plane-strain contact modulus E* > 0 [force/length^2].
+
+    Returns
+    -------
+    float
+        W: displacement per unit pressure [length^3/force].
+    """
+    tmp0 = math.log(abs(k - 1 / 2))
+    tmp1 = (1 / 2) * h
+    tmp2 = math.log(abs(k + 1 / 2))
+    tmp3 = h * k
+    return (
+        -2
+        * (
+            -h * math.log(ell)
+            + h * math.log(h)
+            - h
+            + tmp0 * tmp1
+            - tmp0 * tmp3
+            + tmp1 * tmp2
+            + tmp2 * tmp3
+        )
+        / (math.pi * E_star)
+    )
+
+
+def relative_slip_influence(k: float, h: float, ell: float, E_star: float) -> float:
+    """Relative tangential displacement at element centre i per unit shear traction on element j.
+
+    S(k) = +(2/(pi E*)) int_{(k - 1/2) h}^{(k + 1/2) h} ln(|u|/ell) du = -W(k): s = u_x2 - u_x1
+    (the lower body relative to the upper) caused by a uniform unit shear traction exerted on
+    the upper body by the lower one (the lower body carrying the opposite traction), from
+    Flamant's solution.  Defined up to a multiple of the total shear force (the constant ln
+    ell), which the rigid tangential shift absorbs.  One value at a time, as
+    ``asymslip_gen.solver_influence.relative_slip_influence``.
+
+    Implements Eqs. (F-3), (F-5) of the paper; derived in ``derivations/solver_influence.py``.
+
+    Parameters
+    ----------
+    k : float
+        Offset i - j, in elements, of the collocation element i from the loaded element j (an
+        integer, so that x_i - x_j = k h never lies on an element end).
+    h : float
+        Element width h > 0 [length].
+    ell : float
+        Reference length ell > 0 of the logarithm [length]; at least a quarter of the grid's
+        length makes the influence matrix positive definite.
+    E_star : float
+        Plane-strain contact modulus E* > 0 [force/length^2].
+
+    Returns
+    -------
+    float
+        S: displacement per unit shear traction [length^3/force].
+    """
+    tmp0 = math.log(abs(k - 1 / 2))
+    tmp1 = (1 / 2) * h
+    tmp2 = math.log(abs(k + 1 / 2))
+    tmp3 = h * k
+    return (
+        2
+        * (
+            -h * math.log(ell)
+            + h * math.log(h)
+            - h
+            + tmp0 * tmp1
+            - tmp0 * tmp3
+            + tmp1 * tmp2
+            + tmp2 * tmp3
+        )
+        / (math.pi * E_star)
+    )
+
+
+def tension_relative_displacement(x: float, sigma: float, E_star: float) -> float:
+    """Relative tangential displacement s = u_x2 - u_x1 at x from a differential bulk tension.
+
+    sigma x/(2 E*): plane-strain bulk strains (1 - nu^2) sigma_i/E of the two bodies,
+    differenced, with 1/E* = 2 (1 - nu^2)/E; up to a rigid shift.  Under full stick it produces
+    the tension term (sigma/4) sqrt(a/2) of K_II in (38).  One value at a time, as
+    ``asymslip_gen.solver_influence.tension_relative_displacement``.
+
+    Implements Eqs. (F-4), (38) of the paper; derived in ``derivations/solver_influence.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the interface [length].
+    sigma : float
+        Differential bulk tension sigma = sigma_2 - sigma_1: the bulk tension of the lower body
+        minus that of the upper body [force/length^2].
+    E_star : float
+        Plane-strain contact modulus E* > 0 [force/length^2].
+
+    Returns
+    -------
+    float
+        s [length].
+    """
+    return (1 / 2) * sigma * x / E_star
 
 
 def normal_edge_multiplier_slope_loglog(P: float, L_I: float, ds: float, d2s: float) -> float:
