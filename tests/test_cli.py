@@ -14,8 +14,8 @@ from asymslip.cli import main
 FIG5 = ["--law", "hertz", "--R", "1", "--E-star", "1", "--mu", "0.1", "--P1", "100", "--Q1", "0",
         "--P2", "105", "--Q2", "1"]  # fmt: skip
 KEYS = ["a1", "a2", "lam", "eta", "L_I1", "L_I2", "L_II1", "L_II2", "b", "slip_zone_width",
-        "b_first_order", "b_second_order", "b_exact", "b_corrective_stick", "slip_direction",
-        "validity", "warnings"]  # fmt: skip
+        "b_accuracy", "b_paper", "b_first_order", "b_exact", "b_corrective_stick",
+        "slip_direction", "validity", "warnings"]  # fmt: skip
 
 
 def test_slip_zone_json_prints_exactly_the_api_result(capsys):

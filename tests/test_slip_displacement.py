@@ -22,13 +22,13 @@ CYCLE = LoadCycle(100.0, 0.0, 105.0, 1.0)  # Fig. 5 loads: forward slip at the r
 
 def slip_by_quadrature(x: float, edge) -> float:
     """int_b^x B(a2 - t) dt with B from (15), 30 digits (zero in the stick zone)."""
-    if x <= edge.b:
+    if x <= edge.b_paper:  # (15) is built on the b of (17)/(22)
         return 0.0
     with mpmath.workdps(30):
         def density(t):
-            return eq15(float(t), edge.b, edge.a1, MU, edge.L_I1, edge.L_I2, edge.L_II1,
+            return eq15(float(t), edge.b_paper, edge.a1, MU, edge.L_I1, edge.L_I2, edge.L_II1,
                         edge.L_II2, 2.0)  # fmt: skip
-        points = [edge.b, *([edge.a1] if edge.b < edge.a1 < x else []), x]
+        points = [edge.b_paper, *([edge.a1] if edge.b_paper < edge.a1 < x else []), x]
         return float(mpmath.quad(lambda t: mpmath.mpf(density(t)), points))
 
 
@@ -42,7 +42,7 @@ def test_slip_equals_the_quadrature_of_the_density_15_to_1e_10():
 
 def test_the_stick_zone_does_not_slip():
     edge = slip_zone(LAW, CYCLE, MU)
-    assert slip_displacement(LAW, CYCLE, MU, [0.0, edge.b * 0.999]).slip == [0.0, 0.0]
+    assert slip_displacement(LAW, CYCLE, MU, [0.0, edge.b_paper * 0.999]).slip == [0.0, 0.0]
 
 
 def test_friction_resists_the_slip_so_slip_and_traction_change_have_opposite_signs():

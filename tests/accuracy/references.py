@@ -1132,16 +1132,30 @@ def _slip_zone_exact(law_name, digits, mu, P1, dP, dQ, dsigma, parameters):
         (a1, L_I1), (a2, L_I2) = (_law_exact(law_name, digits + 20, P, parameters)
                                   for P in (P1, P1 + dP))  # fmt: skip
         lam, eta = dQ / dP, dsigma / dP
-        slope = lam + pi * eta * a2 / 4
-        direction = 1 if slope > mu else -1 if slope < -mu else 0
+
+        def direction_of(edge_lam):  # forward, backward or no slip, in the edge's own frame
+            slope = edge_lam + pi * eta * a2 / 4
+            return 1 if slope > mu else -1 if slope < -mu else 0
+
+        direction, other = direction_of(lam), direction_of(-lam)  # the right edge, the left
         if direction == 0:
-            b, P_K = a1, P1
+            b22, width, P_K = a1, mpmath.mpf(0), P1
         else:
             lam, eta = direction * lam, direction * eta
-            b = stick_boundary_22(mu, lam, eta, a1, a2, L_I1, L_I2)
+            b22 = stick_boundary_22(mu, lam, eta, a1, a2, L_I1, L_I2)
             P_K = permanent_stick_load_33(P1, dP, lam, mu)
+            # The headline, b to second order (X-b2): a' and a'' of the law by mpmath.diff of
+            # its P(a); the other edge slips the same way globally when the own-frame
+            # directions differ in sign (its frame is mirrored), +1 where it does not slip.
+            spec = API_LAWS[law_name]
+            load = spec.load(**dict(parameters))
+            first, second = mpmath.diff(load, a1), mpmath.diff(load, a1, 2)
+            same_way = 1 if other == 0 else -direction * other
+            width = _width_second_order(mu, lam, eta, a1, 1 / first, -second / first**3, dP,
+                                        same_way)  # fmt: skip
         exact = {
-            "a1": a1, "a2": a2, "L_I1": L_I1, "L_I2": L_I2, "b": b, "slip_zone_width": a1 - b,
+            "a1": a1, "a2": a2, "L_I1": L_I1, "L_I2": L_I2, "b": a1 - width,
+            "slip_zone_width": width, "b_paper": b22,
             "b_exact": None if dsigma else _law_exact(law_name, digits + 20, P_K, parameters)[0],
         }  # fmt: skip
     return {key: value if value is None else +value for key, value in exact.items()}
@@ -1201,17 +1215,20 @@ def _slip_zone_api(law_name, field, variant):
 def register_slip_zone_quantities(law_name: str) -> None:
     """The API results of one built-in law, each against its 50-digit reference."""
     spec = API_LAWS[law_name]
-    b, width = "corrective_slip.stick_boundary_proportional", "corrective_slip.slip_zone_width"
+    paper = "corrective_slip.stick_boundary_proportional"
+    width = "second_order.slip_zone_width_second_order_from_multiplier"
     checks = [
         ("a1", spec.kernels["a1"], "drawn", ("29",)),
         ("a2", spec.kernels["a2"], "drawn", ("23",)),
         ("L_I1", spec.kernels["L_I"], "drawn", ("19",)),
         ("L_I2", spec.kernels["L_I"], "drawn", ("19",)),
-        ("b", b, "drawn", ("22",)),
-        ("slip_zone_width", width, "drawn", ("22",)),
+        ("b", width, "drawn", ("22", "28")),
+        ("slip_zone_width", width, "drawn", ("22", "28")),
+        ("b_paper", paper, "drawn", ("22",)),
         ("b_exact", spec.kernels["a1"], "eta = 0", ("33", "34")),
-        ("b", b, "reversed", ("22",)),
-        ("slip_zone_width", width, "reversed", ("22",)),
+        ("b", width, "reversed", ("22", "28")),
+        ("slip_zone_width", width, "reversed", ("22", "28")),
+        ("b_paper", paper, "reversed", ("22",)),
     ]
     cycle = ("mu", "P1", "dP=dP_cycle", "Q1", "dQ", "sigma1", "dsigma")
     for field, kernel, variant, equations in checks:

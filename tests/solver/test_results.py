@@ -46,7 +46,7 @@ def test_asymptotes_are_reported_with_their_difference_in_elements(result):
     assert entry["within_error"] is True
     data = compared.to_dict()
     assert set(data["asymptotes"]) == {
-        "b", "b_first_order", "b_second_order", "b_corrective_stick", "b_exact"
+        "b", "b_paper", "b_first_order", "b_corrective_stick", "b_exact"
     }  # fmt: skip
     assert set(data["left"]["asymptotes"]) == set(data["asymptotes"])
 

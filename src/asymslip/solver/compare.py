@@ -2,8 +2,9 @@
 
 The only module of :mod:`asymslip.solver` that imports the asymptotic formulas: the solver
 computes without them, and this module puts them side by side.  For each edge, every estimate
-of ``asymslip.slip_zone`` -- ``b`` (22), ``b_first_order`` (28), ``b_second_order`` (the
-second-order boundary of ``derivations/second_order_slip_zone.py``), ``b_corrective_stick`` (40)
+of ``asymslip.slip_zone`` -- ``b`` (the headline: the second-order boundary of
+``derivations/second_order_slip_zone.py``), ``b_paper`` (22), ``b_first_order`` (28),
+``b_corrective_stick`` (40)
 and ``b_exact`` (a(P_K), which exists only without bulk tension) -- is reported with its
 difference from the solver's stick boundary, in length and in elements, and whether it lies
 within the solver's error bound.
@@ -25,7 +26,7 @@ from .refine import RefinementResult
 from .result import SolverResult
 
 #: The estimates of ``slip_zone`` compared, by attribute name.
-ESTIMATES = ("b", "b_first_order", "b_second_order", "b_corrective_stick", "b_exact")
+ESTIMATES = ("b", "b_paper", "b_first_order", "b_corrective_stick", "b_exact")
 
 
 def _entry(value: float | None, b: float | None, b_error: float | None,
