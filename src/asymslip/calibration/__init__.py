@@ -1,0 +1,1 @@
+"""Calibration of contact edges from pressure data."""
