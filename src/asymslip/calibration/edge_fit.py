@@ -81,7 +81,8 @@ NOISE_FLOOR = 1e-12
 LAST_NODE_RESOLUTION = 0.25
 _GRID = 48
 _ROUNDS = 4
-_PROFILE_GRID = 400
+_PROFILE_GRID = 120
+_BISECTIONS = 30
 # Successive window sizes grow by this factor (at least one node).
 _WINDOW_GROWTH = 1.2
 
@@ -278,19 +279,16 @@ def _profile_interval(X: FloatArray, Pv: FloatArray, a: FloatArray, L: FloatArra
     L_t, _, rss_t, var_t = _profile(X, Pv, trial)
     inside = rss_t <= threshold[:, None]
     step = (high - low) / (_PROFILE_GRID - 1)
-    ends = []
-    for direction in (-1.0, 1.0):
-        # Outermost grid point inside (a itself if none), and the grid point beyond it.
-        outer = np.where(inside, direction * trial, -np.inf).max(axis=1) * direction
-        outer = np.where(direction * (outer - a) > 0, outer, a)
-        beyond = np.clip(outer + direction * step, low, high)
-        lo_t, hi_t = outer, beyond  # lo_t inside, hi_t outside (or the bracket end)
-        for _ in range(40):
-            middle = 0.5 * (lo_t + hi_t)
-            rss_m = _profile(X, Pv, middle[:, None])[2][:, 0]
-            inner = rss_m <= threshold
-            lo_t, hi_t = np.where(inner, middle, lo_t), np.where(inner, hi_t, middle)
-        ends.append(lo_t)
+    # Outermost grid point inside on each side (a itself if none), and the grid point beyond.
+    lower_in = np.where(inside, trial, np.inf).min(axis=1)
+    upper_in = np.where(inside, trial, -np.inf).max(axis=1)
+    inner = np.stack([np.minimum(lower_in, a), np.maximum(upper_in, a)], axis=1)
+    outer = np.clip(inner + np.array([-step, step]), low, high)
+    for _ in range(_BISECTIONS):  # both ends at once: inner stays inside, outer outside
+        middle = 0.5 * (inner + outer)
+        below = _profile(X, Pv, middle)[2] <= threshold[:, None]
+        inner, outer = np.where(below, middle, inner), np.where(below, outer, middle)
+    ends = [inner[:, 0], inner[:, 1]]
     lower, upper = ends
     noise_a = np.maximum(a - lower, upper - a)
     L_ends = [_profile(X, Pv, end[:, None]) for end in (lower, upper)]
