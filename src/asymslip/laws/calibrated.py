@@ -46,6 +46,7 @@ from asymslip_gen.asymmetric_edges import (
 from ..calibration.calibration import Calibration
 from ..calibration.traces import SIDES, Side
 from ..errors import InputError
+from .base import BoolArray, LawState
 from .roots import invert_increasing
 from .table import ERROR_SAFETY_FACTOR, LogLogCurve
 
@@ -96,6 +97,8 @@ class CalibratedEdge:
     #: two states, off the load path the data follow (derivations/asymmetric_edge_multipliers.py,
     #: AS7).  It is a(P_K) only when the moment factor is 1 all along the path.
     exact_stick_boundary_exists = False
+    #: The array core reads b_exact = a(P_K) only from symmetric laws; a calibrated edge is not.
+    symmetric = False
 
     def __init__(self, law: CalibratedLaw, side: Side, points: _Points, *,
                  cubic_ends: bool = False) -> None:  # fmt: skip
@@ -137,6 +140,44 @@ class CalibratedEdge:
     def load_slope(self, a: ArrayLike) -> FloatArray:
         """dP/da = 1/a'(P) at P = P(a)."""
         return 1.0 / self.half_width_slope(self.load(a))
+
+    def half_width_where_possible(self, P: ArrayLike) -> tuple[FloatArray, BoolArray]:
+        """a(P) and a mask of the loads it exists for (P finite and > 0; NaN elsewhere)."""
+        P = np.asarray(P, dtype=np.float64)
+        usable = np.isfinite(P) & (P > 0)
+        a = self.half_width(np.where(usable, P, 1.0))
+        return np.where(usable, a, np.nan)[()], usable[()]
+
+    def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
+        """Every law quantity of the cycles P1 -> P1 + dP at this edge, from the fitted curves.
+
+        L_I is the calibrated multiplier, not (19).  The array core takes a1, a2, a2 - a1,
+        L_I, dP/da = 1/a'(P) and dL_I/dP from here.
+        """
+        P1, dP = np.broadcast_arrays(np.asarray(P1, dtype=np.float64),
+                                     np.asarray(dP, dtype=np.float64))  # fmt: skip
+        P2 = P1 + dP
+        found1 = np.isfinite(P1) & (P1 > 0)
+        found2 = found1 & np.isfinite(P2) & (dP >= 0)
+        safe1, safe2 = np.where(found1, P1, 1.0), np.where(found2, P2, 1.0)
+        safe_dP = np.where(found2, dP, 0.0)
+        a1 = self.half_width(safe1)
+        da = self.half_width_growth(safe1, safe_dP)
+
+        def mark(values: FloatArray, found: BoolArray) -> FloatArray:
+            return np.where(found, values, np.nan)[()]
+
+        return LawState(
+            P1=P1[()], P2=P2[()], a1=mark(a1, found1), a2=mark(a1 + da, found2),
+            da=mark(da, found2),
+            L_I1=mark(self.normal_multiplier(safe1), found1),
+            L_I2=mark(self.normal_multiplier(safe2), found2),
+            load_slope1=mark(1.0 / self.half_width_slope(safe1), found1),
+            load_slope2=mark(1.0 / self.half_width_slope(safe2), found2),
+            L_I_slope1=mark(self.normal_multiplier_slope(safe1), found1),
+            L_I_slope2=mark(self.normal_multiplier_slope(safe2), found2),
+            found1=found1[()], found2=found2[()],
+        )  # fmt: skip
 
     # --- the multipliers --------------------------------------------------------------------
     def normal_multiplier(self, P: ArrayLike) -> FloatArray:
