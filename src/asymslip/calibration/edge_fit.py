@@ -180,7 +180,10 @@ def _least_squares(D: FloatArray, p: FloatArray) -> tuple[FloatArray, FloatArray
     L = np.where(regular, (g22 * r1 - g12 * r2) / safe, 0.0)
     c = np.where(regular, (g11 * r2 - g12 * r1) / safe, 0.0)
     rss = np.einsum("...i,...i->...", p, p) - L * r1 - c * r2
-    rss = np.where(regular, np.maximum(rss, 0.0), np.inf)
+    # A pressure: the model sqrt(d) (L + c d) must stay >= 0 over the nodes it fits, else a
+    # trial edge far beyond the contact can pass through the zero nodes (a spurious minimum).
+    positive = (L > 0) & (L + c * D.max(axis=-1) >= 0)
+    rss = np.where(regular & positive, np.maximum(rss, 0.0), np.inf)
     var_L = np.where(regular, g22 / safe, np.inf)
     return L, c, rss, var_L
 
@@ -212,7 +215,11 @@ def _least_squares_next(D: FloatArray, p: FloatArray) -> tuple[FloatArray, Float
     x1 = (c01 * r[0] + c11 * r[1] + c12 * r[2]) / safe
     x2 = (c02 * r[0] + c12 * r[1] + c22 * r[2]) / safe
     rss = np.einsum("...i,...i->...", p, p) - (x0 * r[0] + x1 * r[1] + x2 * r[2])
-    return np.where(regular, x0 / norm[0], 0.0), np.where(regular, np.maximum(rss, 0.0), np.inf)
+    # As for the two-term fit: a pressure, >= 0 at the far end of the window.
+    far = D.max(axis=-1)
+    L, c, e = x0 / norm[0], x1 / norm[1], x2 / norm[2]
+    positive = (L > 0) & (L + c * far + e * far**2 >= 0)
+    return np.where(regular, L, 0.0), np.where(regular & positive, np.maximum(rss, 0.0), np.inf)
 
 
 def _profile(x: FloatArray, p: FloatArray, trial: FloatArray,
@@ -453,7 +460,11 @@ def _right_edge(x: FloatArray, p: FloatArray, noise: float | None) -> tuple[_Cho
     width = x[last] - x[first]
     beyond = np.arange(last + 1, min(last + 3, x.size))
     low = x[max(last - 1, first)]
-    high = x[last + 2] if last + 2 < x.size else x[last + 1] + (x[last + 1] - x[last])
+    # The edge lies before the first node out of contact -- or, if noise hid a last node in
+    # contact, before the one after it; never more than one spacing beyond the first.
+    high = x[last + 1] + (x[last + 1] - x[last])
+    if last + 2 < x.size:
+        high = min(high, x[last + 2])
     notes: list[str] = []
 
     def variant(end: int) -> _Choice | None:

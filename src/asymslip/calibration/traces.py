@@ -264,18 +264,22 @@ def _read_report(path: Path, text: str, loads: Sequence[float] | None) -> Traces
         raise InputError("traces", f"{path}: no rows of numbers (position, pressure, ...) found")
     columns = [(block, j) for block in blocks for j in range(1, block["width"])]
     if loads is None:
-        found = []
-        for block, j in columns:
-            labels = re.split(r"\s{2,}", block["header"]) if block["header"] else []
-            label = labels[j] if len(labels) == block["width"] else ""
-            match = _LOAD_IN_HEADER.search(label)
-            if match is None:
+        found: list[float] = []
+        for block in blocks:
+            # One 'P=<number>' per pressure column, in order, anywhere in the block's header.
+            named = _LOAD_IN_HEADER.findall(block["header"])
+            if len(named) != block["width"] - 1:
                 raise InputError(
                     "traces",
                     f"{path}: line {block['rows'][0]}: the pressure columns do not say their load "
-                    "(no 'P=<number>' in the header): give the loads, one per pressure column",
+                    "(no 'P=<number>' per column in the header): give the loads, one per "
+                    "pressure column",
                 )
-            found.append(float(match.group(1)))
+            try:
+                found += [float(value) for value in named]
+            except ValueError:
+                raise InputError("traces", f"{path}: line {block['rows'][0]}: the loads in the "
+                                 f"header ({', '.join(named)}) are not numbers") from None  # fmt: skip
         loads = found
     loads = list(loads)
     if len(loads) != len(columns):
@@ -305,7 +309,7 @@ def _assemble(P: FloatArray, x: FloatArray, p: FloatArray, side: Sequence[str] |
         bad = ~np.isfinite(column)
         if bad.any():
             row = int(np.flatnonzero(bad)[0])
-            raise InputError("traces", f"{at(row)}: column {name}: {column[row]!r} is not a "
+            raise InputError("traces", f"{at(row)}: column {name}: {float(column[row])!r} is not a "
                              "finite number")  # fmt: skip
     if (P <= 0).any():
         row = int(np.flatnonzero(P <= 0)[0])
