@@ -37,8 +37,9 @@ LAWS = {
 REFERENCE_LOAD = 100.0
 
 
-def mesh(kind: str, half_width: float, nodes: int, rng: np.random.Generator,
-         reach: float = 1.6) -> np.ndarray:  # fmt: skip
+def mesh(
+    kind: str, half_width: float, nodes: int, rng: np.random.Generator, reach: float = 1.6
+) -> np.ndarray:
     """Node positions over (-reach, reach) * half_width with ``nodes`` across 2 * half_width."""
     spacing = 2 * half_width / nodes
     if kind == "uniform":
@@ -54,8 +55,9 @@ def mesh(kind: str, half_width: float, nodes: int, rng: np.random.Generator,
     return np.sort(x)
 
 
-def noisy(p: np.ndarray, noise: float, rng: np.random.Generator,
-          kind: str = "relative") -> np.ndarray:  # fmt: skip
+def noisy(
+    p: np.ndarray, noise: float, rng: np.random.Generator, kind: str = "relative"
+) -> np.ndarray:
     """p with Gaussian noise on the nodes in contact.
 
     ``relative``: standard deviation noise * p at each node (an FE result's error is a fraction
@@ -68,16 +70,18 @@ def noisy(p: np.ndarray, noise: float, rng: np.random.Generator,
     return np.where(p > 0, p + scale * rng.standard_normal(p.size), 0.0)
 
 
-def sampled_traces(pressure, loads, x: np.ndarray, noise: float, rng: np.random.Generator,
-                   kind: str = "relative") -> Traces:  # fmt: skip
+def sampled_traces(
+    pressure, loads, x: np.ndarray, noise: float, rng: np.random.Generator, kind: str = "relative"
+) -> Traces:
     """Long-format traces of ``pressure(x, P)`` at each load on the fixed mesh x."""
     P = np.repeat(np.asarray(loads, dtype=float), x.size)
     p = np.concatenate([noisy(pressure(x, load), noise, rng, kind) for load in loads])
     return Traces.from_arrays(P, np.tile(x, len(loads)), p)
 
 
-def stick_boundary_of_edge(edge, P1: float, P2: float, lam: float, eta: float, mu: float,
-                           side: str) -> float:  # fmt: skip
+def stick_boundary_of_edge(
+    edge, P1: float, P2: float, lam: float, eta: float, mu: float, side: str
+) -> float:
     """b of (17) at one edge from its law: a, L_I and the edge's own L_II.
 
     The left edge sees lam -> -lam; the slip direction follows from L_II2 against mu L_I2 and
@@ -131,14 +135,20 @@ class CubicProfile:
 
     def pressure_of(self, m: float, h: float, x: np.ndarray) -> np.ndarray:
         inside = np.clip(h**2 - (x - m) ** 2, 0.0, None)
-        return 0.5 * self.E_star * np.sqrt(inside) * (1 / self.R + 6 * self.k * m
-                                                      + 3 * self.k * (x - m))  # fmt: skip
+        return (
+            0.5
+            * self.E_star
+            * np.sqrt(inside)
+            * (1 / self.R + 6 * self.k * m + 3 * self.k * (x - m))
+        )
 
     def multipliers(self, m: float, h: float) -> tuple[float, float]:
         """(L_I right, L_I left)."""
         base = 0.5 * self.E_star * math.sqrt(2 * h)
-        return (base * (1 / self.R + 6 * self.k * m + 3 * self.k * h),
-                base * (1 / self.R + 6 * self.k * m - 3 * self.k * h))  # fmt: skip
+        return (
+            base * (1 / self.R + 6 * self.k * m + 3 * self.k * h),
+            base * (1 / self.R + 6 * self.k * m - 3 * self.k * h),
+        )
 
     def contact(self, P: float, M: float) -> tuple[float, float]:
         """(m, h) carrying load P and moment M (about x = 0): Newton from the Hertz contact."""
@@ -146,8 +156,9 @@ class CubicProfile:
         m = 0.0
         return _newton2(lambda m, h: (self.load(m, h) - P, self.moment(m, h) - M), m, h)
 
-    def contact_at_rotation(self, P: float, theta: float, start: tuple[float, float]
-                            ) -> tuple[float, float]:  # fmt: skip
+    def contact_at_rotation(
+        self, P: float, theta: float, start: tuple[float, float]
+    ) -> tuple[float, float]:
         """(m, h) carrying load P at rotation theta."""
         return _newton2(lambda m, h: (self.load(m, h) - P, self.rotation(m, h) - theta), *start)
 
@@ -157,10 +168,12 @@ def _newton2(residual, m: float, h: float) -> tuple[float, float]:
     for _ in range(60):
         f = np.array(residual(m, h))
         step_m, step_h = 1e-7 * max(abs(h), 1.0), 1e-7 * max(abs(h), 1.0)
-        jac = np.column_stack([
-            (np.array(residual(m + step_m, h)) - f) / step_m,
-            (np.array(residual(m, h + step_h)) - f) / step_h,
-        ])  # fmt: skip
+        jac = np.column_stack(
+            [
+                (np.array(residual(m + step_m, h)) - f) / step_m,
+                (np.array(residual(m, h + step_h)) - f) / step_h,
+            ]
+        )
         dm, dh = np.linalg.solve(jac, -f)
         m, h = m + dm, h + dh
         if abs(dm) + abs(dh) < 1e-14 * abs(h):

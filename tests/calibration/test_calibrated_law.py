@@ -33,20 +33,26 @@ MU = 0.1
 CYCLE = (100.0, 0.0, 105.0, 1.0)  # P1, Q1, P2, Q2: the paper's Fig. 5 cycle, lam = 0.2
 
 
-def _law(name: str, kind: str, nodes: int, noise: float, seed: int,
-         loads=LOADS) -> CalibratedLaw:  # fmt: skip
+def _law(name: str, kind: str, nodes: int, noise: float, seed: int, loads=LOADS) -> CalibratedLaw:
     rng = np.random.default_rng(seed)
     law = LAWS[name]
     x = mesh(kind, float(law.half_width(REFERENCE_LOAD)), nodes, rng)
-    return CalibratedLaw(calibrate(sampled_traces(law.pressure, loads, x, noise, rng),
-                                   origin=0.0))  # fmt: skip
+    return CalibratedLaw(calibrate(sampled_traces(law.pressure, loads, x, noise, rng), origin=0.0))
 
 
 def _proportional(law: CalibratedLaw, P1: float, P2: float, lam: float, eta: float) -> float:
     edge = law.for_edge("right")
-    return float(stick_boundary_proportional(
-        MU, lam, eta, edge.half_width(P1), edge.half_width(P2), edge.normal_multiplier(P1),
-        edge.normal_multiplier(P2)))  # fmt: skip
+    return float(
+        stick_boundary_proportional(
+            MU,
+            lam,
+            eta,
+            edge.half_width(P1),
+            edge.half_width(P2),
+            edge.normal_multiplier(P1),
+            edge.normal_multiplier(P2),
+        )
+    )
 
 
 def _check_stick_boundaries(name: str, calibrated: CalibratedLaw, eta_sigma2: float = 0.0):
@@ -61,21 +67,21 @@ def _check_stick_boundaries(name: str, calibrated: CalibratedLaw, eta_sigma2: fl
 
         assert abs(own(calibrated) - b_ref) <= calibrated.error_of(own), side
     assert abs(_proportional(calibrated, P1, P2, lam, eta) - reference.b) <= calibrated.error_of(
-        lambda law: _proportional(law, P1, P2, lam, eta))
+        lambda law: _proportional(law, P1, P2, lam, eta)
+    )
     core = slip_zone(calibrated, cycle, MU, edge="both")
-    for side, b_ref, b in (("right", reference.b, core.b), ("left", reference.left.b,
-                                                             core.left.b)):  # fmt: skip
-        error = calibrated.error_of(
-            lambda law, side=side: getattr(slip_zone(law, cycle, MU, edge=side), "b"))
+    for side, b_ref, b in (("right", reference.b, core.b), ("left", reference.left.b, core.left.b)):
+        error = calibrated.error_of(lambda law, side=side: slip_zone(law, cycle, MU, edge=side).b)
         assert abs(b - b_ref) <= error, side
 
 
 @pytest.mark.parametrize(
     ("name", "kind", "nodes", "noise"),
     [(name, "uniform", 50, 0.0) for name in LAWS] + [(name, "graded", 200, 0.01) for name in LAWS],
-)  # fmt: skip
-def test_the_stick_boundary_lies_within_the_propagated_error_of_the_law_s_own(name, kind, nodes,
-                                                                             noise):  # fmt: skip
+)
+def test_the_stick_boundary_lies_within_the_propagated_error_of_the_law_s_own(
+    name, kind, nodes, noise
+):
     _check_stick_boundaries(name, _law(name, kind, nodes, noise, seed=nodes))
 
 
@@ -103,10 +109,12 @@ def test_a_and_L_I_between_the_loads_lie_within_the_reported_errors(name):
         edge = calibrated.for_edge(side)
         errors = edge.error_estimate(loads)
         assert np.all(np.abs(edge.half_width(loads) - law.half_width(loads)) <= errors["a"])
-        assert np.all(np.abs(edge.normal_multiplier(loads) - law.normal_multiplier(loads))
-                      <= errors["L_I"])  # fmt: skip
-        assert np.all(np.abs(edge.half_width_slope(loads) - law.half_width_slope(loads))
-                      <= errors["a_slope"])  # fmt: skip
+        assert np.all(
+            np.abs(edge.normal_multiplier(loads) - law.normal_multiplier(loads)) <= errors["L_I"]
+        )
+        assert np.all(
+            np.abs(edge.half_width_slope(loads) - law.half_width_slope(loads)) <= errors["a_slope"]
+        )
 
 
 @pytest.mark.parametrize("name", list(LAWS))
@@ -116,8 +124,9 @@ def test_a_symmetric_contact_has_moment_factor_one_and_balanced_edges(name):
     loads = np.array([80.0, 100.0, 140.0])
     for side in ("right", "left"):
         edge = calibrated.for_edge(side)
-        factor_error = calibrated.error_of(lambda law, side=side: law.for_edge(side)
-                                           .moment_factor(loads))  # fmt: skip
+        factor_error = calibrated.error_of(
+            lambda law, side=side: law.for_edge(side).moment_factor(loads)
+        )
         assert np.all(np.abs(edge.moment_factor(loads) - 1) <= factor_error)
         assert np.all(factor_error < 0.02)
     balance_error = calibrated.error_of(lambda law: law.multiplier_balance(loads))
@@ -131,8 +140,9 @@ def test_the_edge_s_own_shear_multiplier_is_21_for_a_centred_symmetric_contact()
     loads = np.array([90.0, 120.0])
     hertz = LAWS["hertz"]
     expected = (0.3 + np.pi * 0.02 * hertz.half_width(loads) / 4) * hertz.normal_multiplier(loads)
-    error = calibrated.error_of(lambda law: law.for_edge("right").shear_multiplier(loads, 0.3,
-                                                                                   0.02))  # fmt: skip
+    error = calibrated.error_of(
+        lambda law: law.for_edge("right").shear_multiplier(loads, 0.3, 0.02)
+    )
     assert np.all(np.abs(edge.shear_multiplier(loads, 0.3, 0.02) - expected) <= error)
 
 
@@ -159,8 +169,11 @@ def test_an_edge_that_does_not_advance_between_close_loads_is_refused_with_the_r
     rng = np.random.default_rng(1)
     x = mesh("graded", float(law.half_width(REFERENCE_LOAD)), 20, rng)
     traces = sampled_traces(law.pressure, (95.0, 100.0, 105.0, 110.0), x, 0.01, rng, "absolute")
-    with pytest.raises(InputError, match="does not advance between .* the loads are too close "
-                                         "together for the mesh near this edge"):  # fmt: skip
+    with pytest.raises(
+        InputError,
+        match="does not advance between .* the loads are too close "
+        "together for the mesh near this edge",
+    ):
         CalibratedLaw(calibrate(traces))
 
 

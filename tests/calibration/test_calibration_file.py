@@ -33,8 +33,9 @@ def test_json_lists_both_edges_per_load_with_P_a_errors_and_window(calibration):
             assert {"P", "a", "a_error", "L_I", "L_I_error", "window"} <= set(entry)
             assert set(entry["window"]) == {"x_from", "x_to", "nodes"}
             assert entry["window"]["nodes"] >= 4
-            assert abs(entry["a"] - float(HERTZ.half_width(entry["P"]))) <= entry["a_error"] + \
-                abs(data["origin"])  # fmt: skip
+            assert abs(entry["a"] - float(HERTZ.half_width(entry["P"]))) <= entry["a_error"] + abs(
+                data["origin"]
+            )
     json.dumps(data, allow_nan=False)  # plain JSON, no NaN
 
 
@@ -65,21 +66,31 @@ def test_save_and_load_give_back_the_same_calibration(calibration, tmp_path):
     ("edit", "words"),
     [
         (lambda text: text[: len(text) // 2], "not valid JSON"),
-        (lambda text: text.replace('"asymslip-calibration"', '"something-else"'),
-         "not a calibration"),
+        (
+            lambda text: text.replace('"asymslip-calibration"', '"something-else"'),
+            "not a calibration",
+        ),
         (lambda text: text.replace('"version": 1', '"version": 7'), "version 7 is not supported"),
         (lambda text: text.replace('"L_I": ', '"L_I": -', 1), "right[0]: 'L_I' must be > 0"),
-        (lambda text: text.replace('"a_error": ', '"a_error": NaN, "x": ', 1),
-         "NaN is not a number a calibration may hold"),
-        (lambda text: text.replace('"nodes": ', '"nodes": 0.5, "n": ', 1),
-         "'window.nodes' must be a positive integer"),
-        (lambda text: text.replace('"x_edge": ', '"x_edge": "12", "was": ', 1),
-         "'x_edge' must be a finite number"),
+        (
+            lambda text: text.replace('"a_error": ', '"a_error": NaN, "x": ', 1),
+            "NaN is not a number a calibration may hold",
+        ),
+        (
+            lambda text: text.replace('"nodes": ', '"nodes": 0.5, "n": ', 1),
+            "'window.nodes' must be a positive integer",
+        ),
+        (
+            lambda text: text.replace('"x_edge": ', '"x_edge": "12", "was": ', 1),
+            "'x_edge' must be a finite number",
+        ),
         (lambda text: text.replace('"P": 95.0', '"P": 70.0'), "the loads P must increase"),
-        (lambda text: text.replace('"x_edge": ', '"x_edge": 1e3, "ignored": ', 1),
-         "is not the distance of 'x_edge'"),
+        (
+            lambda text: text.replace('"x_edge": ', '"x_edge": 1e3, "ignored": ', 1),
+            "is not the distance of 'x_edge'",
+        ),
     ],
-)  # fmt: skip
+)
 def test_a_malformed_calibration_file_is_refused_in_one_line(calibration, tmp_path, edit, words):
     path = tmp_path / "calibration.json"
     calibration.save(path)

@@ -45,8 +45,9 @@ def test_fine_exact_traces_give_the_edge_to_1e_5_and_the_multiplier_to_1e_3(name
     rng = np.random.default_rng(7)
     a = float(law.half_width(REFERENCE_LOAD))
     x = mesh("uniform", a, 200, rng)
-    for side, fit, x_edge, L_I in _fit_both_edges(law, x, law.pressure(x, REFERENCE_LOAD),
-                                                  REFERENCE_LOAD):  # fmt: skip
+    for side, fit, x_edge, L_I in _fit_both_edges(
+        law, x, law.pressure(x, REFERENCE_LOAD), REFERENCE_LOAD
+    ):
         assert abs(fit.x_edge - x_edge) < 1e-5 * a, side
         assert abs(fit.L_I / L_I - 1) < 1e-3, side
         assert fit.a_error < 1e-3 * a and fit.L_I_error < 1e-2 * L_I, side
@@ -73,14 +74,18 @@ def test_points_interpolated_linearly_between_nodes_are_recognised_and_left_out(
     rng = np.random.default_rng(5)
     x = mesh("graded", float(law.half_width(REFERENCE_LOAD)), 30, rng)
     p = law.pressure(x, REFERENCE_LOAD)
-    fine = np.concatenate([np.linspace(x[i], x[i + 1], 4)[:-1] for i in range(x.size - 1)]
-                          + [x[-1:]])  # fmt: skip
+    fine = np.concatenate(
+        [np.linspace(x[i], x[i + 1], 4)[:-1] for i in range(x.size - 1)] + [x[-1:]]
+    )
     fine_p = np.interp(fine, x, p)
     assert np.array_equal(fine[nodal_points(fine, fine_p)], x[nodal_points(x, p)])
     on_nodes = fit_edge(x, p, "right", REFERENCE_LOAD)
     on_path = fit_edge(fine, fine_p, "right", REFERENCE_LOAD)
-    assert (on_path.x_edge, on_path.L_I, on_path.a_error) == (on_nodes.x_edge, on_nodes.L_I,
-                                                               on_nodes.a_error)  # fmt: skip
+    assert (on_path.x_edge, on_path.L_I, on_path.a_error) == (
+        on_nodes.x_edge,
+        on_nodes.L_I,
+        on_nodes.a_error,
+    )
     assert "interpolating between nodes" in on_path.notes[0]
 
 
@@ -112,7 +117,7 @@ def test_no_error_is_understated_over_many_meshes_loads_and_noise(noise_kind):
     """320 fits per noise model: every law, both meshes, 20 to 200 nodes, exact or 1 % noise."""
     rng = np.random.default_rng(11 if noise_kind == "relative" else 12)
     worst = 0.0
-    for name, law in LAWS.items():
+    for law in LAWS.values():
         for kind in ("uniform", "graded"):
             for nodes in (20, 35, 50, 100, 200):
                 for _ in range(2):
@@ -120,6 +125,9 @@ def test_no_error_is_understated_over_many_meshes_loads_and_noise(noise_kind):
                     x = mesh(kind, float(law.half_width(REFERENCE_LOAD)), nodes, rng)
                     p = noisy(law.pressure(x, P), 0.01 * rng.integers(0, 2), rng, noise_kind)
                     for _side, fit, x_edge, L_I in _fit_both_edges(law, x, p, P):
-                        worst = max(worst, abs(fit.x_edge - x_edge) / fit.a_error,
-                                    abs(fit.L_I - L_I) / fit.L_I_error)  # fmt: skip
+                        worst = max(
+                            worst,
+                            abs(fit.x_edge - x_edge) / fit.a_error,
+                            abs(fit.L_I - L_I) / fit.L_I_error,
+                        )
     assert worst <= 1.0

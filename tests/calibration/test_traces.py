@@ -27,12 +27,16 @@ def _x(nodes: int = 41) -> np.ndarray:
 def _rows(nodes: int = 41) -> list[list[str]]:
     """P, x, p rows of Hertz traces at LOADS (data rows only, as strings)."""
     x = _x(nodes)
-    return [[repr(P), repr(float(xi)), repr(float(pi))]
-            for P in LOADS for xi, pi in zip(x, HERTZ.pressure(x, P), strict=True)]  # fmt: skip
+    return [
+        [repr(P), repr(float(xi)), repr(float(pi))]
+        for P in LOADS
+        for xi, pi in zip(x, HERTZ.pressure(x, P), strict=True)
+    ]
 
 
-def _write(tmp_path: Path, rows: list[list[str]], header: str = "P,x,p",
-           comment: str = "# Hertz traces") -> Path:  # fmt: skip
+def _write(
+    tmp_path: Path, rows: list[list[str]], header: str = "P,x,p", comment: str = "# Hertz traces"
+) -> Path:
     """File lines: 1 comment, 2 header, data from line 3 on (row k is line k + 3)."""
     path = tmp_path / "traces.csv"
     path.write_text("\n".join([comment, header, *(",".join(row) for row in rows)]) + "\n")
@@ -80,8 +84,13 @@ def test_a_trace_with_no_contact(tmp_path):
 def test_non_monotone_x_within_a_load(tmp_path):
     rows = _rows()
     rows[50][1], rows[51][1] = rows[51][1], rows[50][1]  # lines 53 and 54 swapped
-    _refused(_write(tmp_path, rows), "line 54", "does not exceed", "line 53",
-             "x must increase within a load")  # fmt: skip
+    _refused(
+        _write(tmp_path, rows),
+        "line 54",
+        "does not exceed",
+        "line 53",
+        "x must increase within a load",
+    )
 
 
 def test_a_repeated_x_within_a_load(tmp_path):
@@ -126,11 +135,15 @@ def test_a_single_node_in_contact(tmp_path):
 
 def test_too_few_nodes_near_an_edge(tmp_path):
     """11 nodes across the contact: the message names the last node in contact of that load."""
-    coarse = [[repr(P), repr(float(xi)), repr(float(pi))]
-              for P in LOADS for xi, pi in zip(_x(17), HERTZ.pressure(_x(17), P), strict=True)]  # fmt: skip
+    coarse = [
+        [repr(P), repr(float(xi)), repr(float(pi))]
+        for P in LOADS
+        for xi, pi in zip(_x(17), HERTZ.pressure(_x(17), P), strict=True)
+    ]
     last = max(k for k in range(17) if float(coarse[k][2]) > 0)  # first load, right edge
-    _refused(_write(tmp_path, coarse), f"line {last + 3}", "right edge", "too few nodes near "
-             "the edge")  # fmt: skip
+    _refused(
+        _write(tmp_path, coarse), f"line {last + 3}", "right edge", "too few nodes near the edge"
+    )
 
 
 def test_a_contact_that_runs_off_the_trace(tmp_path):
@@ -139,8 +152,7 @@ def test_a_contact_that_runs_off_the_trace(tmp_path):
 
 
 def test_a_header_without_the_pressure_column(tmp_path):
-    message = _refused(_write(tmp_path, _rows(), header="P,x,CPRESS"), "line 2",
-                       "no column p")  # fmt: skip
+    message = _refused(_write(tmp_path, _rows(), header="P,x,CPRESS"), "line 2", "no column p")
     assert "found P, x, CPRESS" in message
 
 
@@ -168,10 +180,14 @@ def test_a_side_column_gives_one_edge_per_trace(tmp_path):
     rows = []
     for P in LOADS:
         p = HERTZ.pressure(x, P)
-        rows += [[repr(P), repr(float(xi)), repr(float(pi)), "left"] for xi, pi in
-                 zip(x[x < 0], p[x < 0], strict=True)]  # fmt: skip
-        rows += [[repr(P), repr(float(xi)), repr(float(pi)), "right"] for xi, pi in
-                 zip(x[x > 0], p[x > 0], strict=True)]  # fmt: skip
+        rows += [
+            [repr(P), repr(float(xi)), repr(float(pi)), "left"]
+            for xi, pi in zip(x[x < 0], p[x < 0], strict=True)
+        ]
+        rows += [
+            [repr(P), repr(float(xi)), repr(float(pi)), "right"]
+            for xi, pi in zip(x[x > 0], p[x > 0], strict=True)
+        ]
     calibration = calibrate(read_traces(_write(tmp_path, rows, header="P,x,p,side")))
     assert len(calibration.right) == len(calibration.left) == 3
     assert not calibration.symmetric_about_origin
@@ -197,7 +213,9 @@ def _report(x: np.ndarray, pressures: list[np.ndarray], header: str) -> str:
     """An XY-data report as Abaqus/CAE writes it: banner, a header, rows in E-notation."""
     lines = ["*" * 80, "", f"{header}", ""]
     for k, xi in enumerate(x):
-        lines.append("   " + "   ".join(f"{value:.6E}" for value in [xi] + [p[k] for p in pressures]))
+        lines.append(
+            "   " + "   ".join(f"{value:.6E}" for value in [xi] + [p[k] for p in pressures])
+        )
     return "\n".join(lines) + "\n\n"
 
 
@@ -205,7 +223,9 @@ def test_an_fe_report_with_one_pressure_column_per_load(tmp_path):
     x = _x(61)
     pressures = [HERTZ.pressure(x, P) for P in LOADS]
     path = tmp_path / "cpress.rpt"
-    path.write_text(_report(x, pressures, "        X        CPRESS-1        CPRESS-2        CPRESS-3"))
+    path.write_text(
+        _report(x, pressures, "        X        CPRESS-1        CPRESS-2        CPRESS-3")
+    )
     traces = read_traces(path, loads=LOADS)
     assert [t.P for t in traces.traces] == list(LOADS)
     assert traces.traces[0].rows[0] == 5  # banner, blank, header, blank: data on line 5
@@ -216,8 +236,9 @@ def test_an_fe_report_with_one_pressure_column_per_load(tmp_path):
 
 def test_an_fe_report_of_appended_blocks_names_its_loads_in_the_headers(tmp_path):
     x = _x(61)
-    text = "".join(_report(x, [HERTZ.pressure(x, P)], f"        X        CPRESS  P={P:g}")
-                   for P in LOADS)  # fmt: skip
+    text = "".join(
+        _report(x, [HERTZ.pressure(x, P)], f"        X        CPRESS  P={P:g}") for P in LOADS
+    )
     path = tmp_path / "cpress.rpt"
     path.write_text(text)
     assert [t.P for t in read_fe_report(path).traces] == list(LOADS)

@@ -124,8 +124,9 @@ class Calibration:
         try:
             data = json.loads(text, parse_constant=_refuse_constant)
         except json.JSONDecodeError as error:
-            raise InputError("calibration", f"{path}: line {error.lineno}: not valid JSON "
-                             f"({error.msg})") from None  # fmt: skip
+            raise InputError(
+                "calibration", f"{path}: line {error.lineno}: not valid JSON ({error.msg})"
+            ) from None
         except ValueError as error:
             raise InputError("calibration", f"{path}: {error}") from None
         return cls.from_dict(data, source=str(path))
@@ -142,8 +143,10 @@ class Calibration:
         if data.get("format") != FORMAT:
             raise fail(f"not a calibration: 'format' must be {FORMAT!r}")
         if data.get("version") != VERSION:
-            raise fail(f"version {data.get('version')!r} is not supported (this asymslip reads "
-                       f"version {VERSION})")  # fmt: skip
+            raise fail(
+                f"version {data.get('version')!r} is not supported (this asymslip reads "
+                f"version {VERSION})"
+            )
         origin = _number(data, "origin", fail)
         symmetric = data.get("symmetric_about_origin", False)
         if not isinstance(symmetric, bool):
@@ -156,24 +159,33 @@ class Calibration:
             entries = data.get(side, [])
             if not isinstance(entries, list):
                 raise fail(f"'{side}' must be a list of loads")
-            fits = tuple(_fit_from_dict(entry, side, origin, f"{side}[{k}]", fail)
-                         for k, entry in enumerate(entries))  # fmt: skip
+            fits = tuple(
+                _fit_from_dict(entry, side, origin, f"{side}[{k}]", fail)
+                for k, entry in enumerate(entries)
+            )
             loads = [fit.P for fit in fits]
             if any(b <= a for a, b in zip(loads, loads[1:], strict=False)):
                 raise fail(f"'{side}': the loads P must increase")
             edges[side] = fits
         if not edges["right"] and not edges["left"]:
             raise fail("no edge has any load")
-        return cls(edges["right"], edges["left"], origin, str(data.get("source", source)),
-                   symmetric, tuple(warnings))  # fmt: skip
+        return cls(
+            edges["right"],
+            edges["left"],
+            origin,
+            str(data.get("source", source)),
+            symmetric,
+            tuple(warnings),
+        )
 
 
 def _refuse_constant(name: str) -> float:
     raise ValueError(f"{name} is not a number a calibration may hold")
 
 
-def _number(entry: dict, key: str, fail, *, positive: bool = False,
-            non_negative: bool = False) -> float:  # fmt: skip
+def _number(
+    entry: dict, key: str, fail, *, positive: bool = False, non_negative: bool = False
+) -> float:
     value = entry.get(key)
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
         raise fail(f"'{key}' must be a finite number (got {value!r})")
@@ -212,8 +224,9 @@ def _fit_from_dict(entry: object, side: Side, origin: float, name: str, fail) ->
     a = _number(entry, "a", at)
     expected = x_edge - origin if side == "right" else origin - x_edge
     if abs(a - expected) > 1e-9 * max(abs(x_edge), abs(origin), abs(a), 1e-300):
-        raise at(f"'a' = {a!r} is not the distance of 'x_edge' = {x_edge!r} from 'origin' = "
-                 f"{origin!r}")  # fmt: skip
+        raise at(
+            f"'a' = {a!r} is not the distance of 'x_edge' = {x_edge!r} from 'origin' = {origin!r}"
+        )
     window = entry.get("window")
     if not isinstance(window, dict):
         raise at("'window' must be an object with x_from, x_to and nodes")
@@ -243,8 +256,9 @@ def _fit_from_dict(entry: object, side: Side, origin: float, name: str, fail) ->
 
 
 # --- calibrating ----------------------------------------------------------------------------------
-def calibrate(traces: Traces, *, noise: float | None = None,
-              origin: float | None = None) -> Calibration:  # fmt: skip
+def calibrate(
+    traces: Traces, *, noise: float | None = None, origin: float | None = None
+) -> Calibration:
     """Fit every edge of every trace and collect the fits per edge.
 
     Parameters
@@ -271,21 +285,28 @@ def calibrate(traces: Traces, *, noise: float | None = None,
         for side in trace.sides():
             key = (trace.P, side)
             if key in seen:
-                raise InputError("traces", f"{trace.where()}: a second trace of the {side} edge "
-                                 f"at this load (the first is at {seen[key]})")  # fmt: skip
+                raise InputError(
+                    "traces",
+                    f"{trace.where()}: a second trace of the {side} edge "
+                    f"at this load (the first is at {seen[key]})",
+                )
             seen[key] = trace.where()
             try:
                 fit = fit_edge(trace.x, trace.p, side, trace.P, noise)
             except EdgeFitError as error:
-                raise InputError("traces", f"{trace.where(error.node)}: {side} edge: "
-                                 f"{error.rule}") from None  # fmt: skip
+                raise InputError(
+                    "traces", f"{trace.where(error.node)}: {side} edge: {error.rule}"
+                ) from None
             fits[side].append(fit)
     for side in SIDES:
         fits[side].sort(key=lambda fit: fit.P)
         if len(fits[side]) == 1:
             only = fits[side][0]
-            raise InputError("traces", f"{traces.source}: the {side} edge has data at one load "
-                             f"only (P = {only.P:.6g}); its law a(P) needs two or more")  # fmt: skip
+            raise InputError(
+                "traces",
+                f"{traces.source}: the {side} edge has data at one load "
+                f"only (P = {only.P:.6g}); its law a(P) needs two or more",
+            )
     right, left = tuple(fits["right"]), tuple(fits["left"])
     symmetric = not (right and left)
     if origin is None:
@@ -293,23 +314,35 @@ def calibrate(traces: Traces, *, noise: float | None = None,
     elif not math.isfinite(origin):
         raise InputError("origin", "must be a finite number", origin)
     elif symmetric and origin != 0.0:
-        raise InputError("origin", "with one edge only the contact is taken as symmetric about "
-                         "x = 0, so the origin must be 0", origin)  # fmt: skip
+        raise InputError(
+            "origin",
+            "with one edge only the contact is taken as symmetric about "
+            "x = 0, so the origin must be 0",
+            origin,
+        )
     for side, edge in (("right", right), ("left", left)):
         for fit in edge:
             if not fit.position(origin) > 0:
-                raise InputError("origin", f"x = {origin:.6g} is not inside the contact at "
-                                 f"P = {fit.P:.6g}: the {side} edge is at x = {fit.x_edge:.6g}; "
-                                 "the distances a must be measured from a point inside every "
-                                 "contact", origin)  # fmt: skip
-    warnings = [_advance_warning(side, edge, origin) for side, edge in (("right", right),
-                                                                        ("left", left))]  # fmt: skip
+                raise InputError(
+                    "origin",
+                    f"x = {origin:.6g} is not inside the contact at "
+                    f"P = {fit.P:.6g}: the {side} edge is at x = {fit.x_edge:.6g}; "
+                    "the distances a must be measured from a point inside every "
+                    "contact",
+                    origin,
+                )
+    warnings = [
+        _advance_warning(side, edge, origin) for side, edge in (("right", right), ("left", left))
+    ]
     if symmetric:
         side = "right" if right else "left"
-        warnings.append(f"only the {side} edge has data: the contact is taken as symmetric about "
-                        "x = 0 (the width in L_II is twice the edge's distance from 0)")  # fmt: skip
-    return Calibration(right, left, float(origin), traces.source, symmetric,
-                       tuple(w for w in warnings if w))  # fmt: skip
+        warnings.append(
+            f"only the {side} edge has data: the contact is taken as symmetric about "
+            "x = 0 (the width in L_II is twice the edge's distance from 0)"
+        )
+    return Calibration(
+        right, left, float(origin), traces.source, symmetric, tuple(w for w in warnings if w)
+    )
 
 
 def _centre_at_smallest_load(right: tuple[EdgeFit, ...], left: tuple[EdgeFit, ...]) -> float:

@@ -160,8 +160,9 @@ class EdgeFitError(InputError):
 
 
 # --- the linear part: L_I and c at fixed trial edges -----------------------------------------
-def _least_squares(D: FloatArray, p: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray,
-                                                              FloatArray]:  # fmt: skip
+def _least_squares(
+    D: FloatArray, p: FloatArray
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
     """(L_I, c, RSS, var factor of L_I) for clamped distances D = max(a - x, 0), last axis nodes.
 
     Nodes padded with D = 0 and p = 0 add nothing.  Where the 2x2 normal matrix is singular
@@ -199,8 +200,10 @@ def _least_squares_next(D: FloatArray, p: FloatArray) -> tuple[FloatArray, Float
     basis = (root, D * root, D * D * root)
     norm = [np.sqrt(np.einsum("...i,...i->...", f, f)) for f in basis]
     norm = [np.where(n > 0, n, 1.0) for n in norm]
-    g = [[np.einsum("...i,...i->...", basis[i], basis[j]) / (norm[i] * norm[j])
-          for j in range(3)] for i in range(3)]  # fmt: skip
+    g = [
+        [np.einsum("...i,...i->...", basis[i], basis[j]) / (norm[i] * norm[j]) for j in range(3)]
+        for i in range(3)
+    ]
     r = [np.einsum("...i,...i->...", basis[i], p) / norm[i] for i in range(3)]
     c00 = g[1][1] * g[2][2] - g[1][2] * g[1][2]
     c01 = g[0][2] * g[1][2] - g[0][1] * g[2][2]
@@ -222,8 +225,9 @@ def _least_squares_next(D: FloatArray, p: FloatArray) -> tuple[FloatArray, Float
     return np.where(regular, L, 0.0), np.where(regular & positive, np.maximum(rss, 0.0), np.inf)
 
 
-def _profile(x: FloatArray, p: FloatArray, trial: FloatArray,
-             next_term: bool = False) -> tuple[FloatArray, ...]:  # fmt: skip
+def _profile(
+    x: FloatArray, p: FloatArray, trial: FloatArray, next_term: bool = False
+) -> tuple[FloatArray, ...]:
     """L_I, c, RSS and var factor of L_I at each trial edge (trial: (..., m); x, p: (..., n)).
 
     With ``next_term``, (L_I, RSS) of the fit with the (a - x)^(5/2) term as well.
@@ -234,8 +238,9 @@ def _profile(x: FloatArray, p: FloatArray, trial: FloatArray,
     return _least_squares(D, p[..., None, :])
 
 
-def _minimise(x: FloatArray, p: FloatArray, low: float, high: float,
-              next_term: bool = False) -> FloatArray:  # fmt: skip
+def _minimise(
+    x: FloatArray, p: FloatArray, low: float, high: float, next_term: bool = False
+) -> FloatArray:
     """The trial edge of least RSS for each row of x, p (padded rows), by refined grids."""
     rows = x.shape[0]
     lo = np.full(rows, low)
@@ -250,8 +255,9 @@ def _minimise(x: FloatArray, p: FloatArray, low: float, high: float,
     return 0.5 * (lo + hi)
 
 
-def _padded(x: FloatArray, p: FloatArray, rows: list[NDArray[np.intp]]) -> tuple[FloatArray,
-                                                                                   FloatArray]:  # fmt: skip
+def _padded(
+    x: FloatArray, p: FloatArray, rows: list[NDArray[np.intp]]
+) -> tuple[FloatArray, FloatArray]:
     """Stack ragged node sets; padding nodes sit at +inf with p = 0 (D = 0: no weight)."""
     width = max(index.size for index in rows)
     X = np.full((len(rows), width), np.inf)
@@ -262,7 +268,7 @@ def _padded(x: FloatArray, p: FloatArray, rows: list[NDArray[np.intp]]) -> tuple
     return X, Pv
 
 
-# --- nodes and noise -----------------------------------------------------------------------------------
+# --- nodes and noise ---------------------------------------------------------------------------
 def nodal_points(x: FloatArray, p: FloatArray) -> NDArray[np.bool_]:
     """False at points that lie on the straight line through their two neighbours.
 
@@ -332,8 +338,16 @@ def _window_sizes(available: int) -> list[int]:
     return sizes
 
 
-def _fit_windows(x: FloatArray, p: FloatArray, end: int, beyond: NDArray[np.intp],
-                 sizes: list[int], low: float, high: float, noise: float) -> _WindowFits:  # fmt: skip
+def _fit_windows(
+    x: FloatArray,
+    p: FloatArray,
+    end: int,
+    beyond: NDArray[np.intp],
+    sizes: list[int],
+    low: float,
+    high: float,
+    noise: float,
+) -> _WindowFits:
     rows = [np.concatenate([np.arange(end - size + 1, end + 1), beyond]) for size in sizes]
     X, Pv = _padded(x, p, rows)
     a = _minimise(X, Pv, low, high)
@@ -346,12 +360,29 @@ def _fit_windows(x: FloatArray, p: FloatArray, end: int, beyond: NDArray[np.intp
     L_next = _profile(X, Pv, a_next[:, None], next_term=True)[0][:, 0]
     noise_a, noise_L = _profile_interval(X, Pv, a, L, low, high, noise)
     reach = x[end] - x[end - np.asarray(sizes) + 1]
-    return _WindowFits(np.asarray(sizes), reach, rows, a, L, c, noise_a, noise_L,
-                       np.abs(a_next - a), np.abs(L_next - L))  # fmt: skip
+    return _WindowFits(
+        np.asarray(sizes),
+        reach,
+        rows,
+        a,
+        L,
+        c,
+        noise_a,
+        noise_L,
+        np.abs(a_next - a),
+        np.abs(L_next - L),
+    )
 
 
-def _profile_interval(X: FloatArray, Pv: FloatArray, a: FloatArray, L: FloatArray, low: float,
-                      high: float, noise: float) -> tuple[FloatArray, FloatArray]:  # fmt: skip
+def _profile_interval(
+    X: FloatArray,
+    Pv: FloatArray,
+    a: FloatArray,
+    L: FloatArray,
+    low: float,
+    high: float,
+    noise: float,
+) -> tuple[FloatArray, FloatArray]:
     """Half-width of {t : RSS(t) <= RSS(a) + (kappa s)^2} and the error of L_I over it.
 
     The interval's ends are found on a grid over the bracket (which sees every dip of RSS),
@@ -379,14 +410,21 @@ def _profile_interval(X: FloatArray, Pv: FloatArray, a: FloatArray, L: FloatArra
     lower, upper = ends
     noise_a = np.maximum(a - lower, upper - a)
     L_ends = [_profile(X, Pv, end[:, None]) for end in (lower, upper)]
-    spread_L = np.maximum.reduce([
-        np.where(inside, np.abs(L_t - L[:, None]), 0.0).max(axis=1),
-        np.abs(L_ends[0][0][:, 0] - L), np.abs(L_ends[1][0][:, 0] - L),
-    ])  # fmt: skip
-    var_L = np.maximum.reduce([
-        np.where(inside, var_t, 0.0).max(axis=1), var_a,
-        L_ends[0][3][:, 0], L_ends[1][3][:, 0],
-    ])  # fmt: skip
+    spread_L = np.maximum.reduce(
+        [
+            np.where(inside, np.abs(L_t - L[:, None]), 0.0).max(axis=1),
+            np.abs(L_ends[0][0][:, 0] - L),
+            np.abs(L_ends[1][0][:, 0] - L),
+        ]
+    )
+    var_L = np.maximum.reduce(
+        [
+            np.where(inside, var_t, 0.0).max(axis=1),
+            var_a,
+            L_ends[0][3][:, 0],
+            L_ends[1][3][:, 0],
+        ]
+    )
     del L_a
     return noise_a, spread_L + KAPPA * noise * np.sqrt(var_L)
 
@@ -413,7 +451,6 @@ def _choose(fits: _WindowFits, x: FloatArray, p: FloatArray, low: float, high: f
             m = wider[0]
             truncation_a[k] = TRUNCATION_SAFETY * max(abs(fits.a[m] - fits.a[k]), fits.next_a[k])
             truncation_L[k] = TRUNCATION_SAFETY * max(abs(fits.L[m] - fits.L[k]), fits.next_L[k])
-    error_a = fits.noise_a + truncation_a
     error_L = fits.noise_L + truncation_L
     relative = np.where(np.isfinite(error_L), error_L / np.maximum(np.abs(fits.L), 1e-300), np.inf)
     k = int(np.argmin(relative))
@@ -439,8 +476,9 @@ def _choose(fits: _WindowFits, x: FloatArray, p: FloatArray, low: float, high: f
 
 
 # --- the edge ----------------------------------------------------------------------------
-def _right_edge(x: FloatArray, p: FloatArray, noise: float | None) -> tuple[_Choice, float,
-                                                                            bool, list[str]]:  # fmt: skip
+def _right_edge(
+    x: FloatArray, p: FloatArray, noise: float | None
+) -> tuple[_Choice, float, bool, list[str]]:
     """The right-hand edge of a trace with increasing x (the left edge is mirrored first)."""
     peak = float(np.max(p))
     if not peak > 0:
@@ -451,12 +489,17 @@ def _right_edge(x: FloatArray, p: FloatArray, noise: float | None) -> tuple[_Cho
     if in_contact.size == 0:
         raise EdgeFitError("no node is in contact: every pressure is within the noise")
     if in_contact.size == 1:
-        raise EdgeFitError("a single node is in contact: an edge needs several nodes in "
-                           "contact next to it", int(in_contact[0]))  # fmt: skip
+        raise EdgeFitError(
+            "a single node is in contact: an edge needs several nodes in contact next to it",
+            int(in_contact[0]),
+        )
     first, last = int(in_contact[0]), int(in_contact[-1])
     if last == x.size - 1:
-        raise EdgeFitError("the contact reaches the end of the trace: the edge is not in the "
-                           "data (no node beyond it is out of contact)", last)  # fmt: skip
+        raise EdgeFitError(
+            "the contact reaches the end of the trace: the edge is not in the "
+            "data (no node beyond it is out of contact)",
+            last,
+        )
     width = x[last] - x[first]
     beyond = np.arange(last + 1, min(last + 3, x.size))
     low = x[max(last - 1, first)]
@@ -538,8 +581,9 @@ def _right_edge(x: FloatArray, p: FloatArray, noise: float | None) -> tuple[_Cho
     return chosen, scatter, keep, notes
 
 
-def fit_edge(x: FloatArray, p: FloatArray, side: Side, P: float,
-             noise: float | None = None) -> EdgeFit:  # fmt: skip
+def fit_edge(
+    x: FloatArray, p: FloatArray, side: Side, P: float, noise: float | None = None
+) -> EdgeFit:
     """Fit one edge of one load's pressure trace.
 
     Parameters
@@ -579,8 +623,11 @@ def fit_edge(x: FloatArray, p: FloatArray, side: Side, P: float,
         raise
     dropped = int(np.sum(~nodes & (p != 0)))  # zeros beyond the contact are collinear anyway
     if dropped:
-        notes.insert(0, f"{dropped} points lying on straight lines between their neighbours "
-                     "(a path report interpolating between nodes) were left out")  # fmt: skip
+        notes.insert(
+            0,
+            f"{dropped} points lying on straight lines between their neighbours "
+            "(a path report interpolating between nodes) were left out",
+        )
     window = (float(xs[chosen.row].min()), float(xs[chosen.row].max()))
     x_edge = chosen.a
     if side == "left":

@@ -125,16 +125,18 @@ class Traces:
             except (TypeError, ValueError):
                 raise InputError("traces", f"{name} must be an array of numbers") from None
             if array.ndim != 1:
-                raise InputError("traces", f"{name} must be 1-D (one entry per node per load)",
-                                 array.shape)  # fmt: skip
+                raise InputError(
+                    "traces", f"{name} must be 1-D (one entry per node per load)", array.shape
+                )
             columns[name] = array
         sizes = {name: array.size for name, array in columns.items()}
         if side is not None:
             side = list(side)
             sizes["side"] = len(side)
         if len(set(sizes.values())) != 1:
-            raise InputError("traces", f"P, x, p{', side' if side else ''} must have one length",
-                             sizes)  # fmt: skip
+            raise InputError(
+                "traces", f"P, x, p{', side' if side else ''} must have one length", sizes
+            )
         rows = np.arange(columns["P"].size)
         return _assemble(columns["P"], columns["x"], columns["p"], side, rows, ARRAYS)
 
@@ -149,8 +151,14 @@ def read_traces(path: str | Path, *, loads: Sequence[float] | None = None) -> Tr
     """
     path = Path(path)
     text = _read_text(path)
-    first = next((line for line in text.splitlines()
-                  if line.strip() and not line.lstrip().startswith(("#", "*"))), "")  # fmt: skip
+    first = next(
+        (
+            line
+            for line in text.splitlines()
+            if line.strip() and not line.lstrip().startswith(("#", "*"))
+        ),
+        "",
+    )
     if "," in first:
         return _read_csv(path, text)
     return _read_report(path, text, loads)
@@ -202,15 +210,18 @@ def _read_csv(path: Path, text: str) -> Traces:
                 sides = []
             continue
         if len(fields) != len(header):
-            raise InputError("traces", f"{path}: line {number}: {len(fields)} fields, the header "
-                             f"has {len(header)}")  # fmt: skip
+            raise InputError(
+                "traces",
+                f"{path}: line {number}: {len(fields)} fields, the header has {len(header)}",
+            )
         for name in COLUMNS:
             field = fields[index[name]]
             try:
                 value = float(field)
             except ValueError:
-                raise InputError("traces", f"{path}: line {number}: column {name}: {field!r} is "
-                                 "not a number") from None  # fmt: skip
+                raise InputError(
+                    "traces", f"{path}: line {number}: column {name}: {field!r} is not a number"
+                ) from None
             values[name].append(value)
         if sides is not None:
             sides.append(fields[index["side"]])
@@ -219,8 +230,14 @@ def _read_csv(path: Path, text: str) -> Traces:
         raise InputError("traces", f"{path}: no header row (columns P, x and p)")
     if not rows:
         raise InputError("traces", f"{path}: no data rows after the header")
-    return _assemble(np.array(values["P"]), np.array(values["x"]), np.array(values["p"]),
-                     sides, np.array(rows), str(path))  # fmt: skip
+    return _assemble(
+        np.array(values["P"]),
+        np.array(values["x"]),
+        np.array(values["p"]),
+        sides,
+        np.array(rows),
+        str(path),
+    )
 
 
 _LOAD_IN_HEADER = re.compile(r"P\s*=\s*([-+0-9.eE]+)")
@@ -247,16 +264,23 @@ def _read_report(path: Path, text: str, loads: Sequence[float] | None) -> Traces
             if blocks and not blocks[-1]["rows"]:
                 blocks[-1]["header"] = header
             continue
-        if not blocks or blocks[-1]["header"] != header or (
-            blocks[-1]["rows"] and blocks[-1]["width"] != len(numbers)
+        if (
+            not blocks
+            or blocks[-1]["header"] != header
+            or (blocks[-1]["rows"] and blocks[-1]["width"] != len(numbers))
         ):
             if blocks and blocks[-1]["rows"] and blocks[-1]["header"] == header:
-                raise InputError("traces", f"{path}: line {number}: {len(numbers)} numbers, the "
-                                 f"rows above have {blocks[-1]['width']}")  # fmt: skip
+                raise InputError(
+                    "traces",
+                    f"{path}: line {number}: {len(numbers)} numbers, the "
+                    f"rows above have {blocks[-1]['width']}",
+                )
             blocks.append({"header": header, "rows": [], "values": [], "width": len(numbers)})
         if len(numbers) < 2:
-            raise InputError("traces", f"{path}: line {number}: a row needs the position and "
-                             "at least one pressure")  # fmt: skip
+            raise InputError(
+                "traces",
+                f"{path}: line {number}: a row needs the position and at least one pressure",
+            )
         blocks[-1]["rows"].append(number)
         blocks[-1]["values"].append(numbers)
     blocks = [block for block in blocks if block["rows"]]
@@ -278,13 +302,19 @@ def _read_report(path: Path, text: str, loads: Sequence[float] | None) -> Traces
             try:
                 found += [float(value) for value in named]
             except ValueError:
-                raise InputError("traces", f"{path}: line {block['rows'][0]}: the loads in the "
-                                 f"header ({', '.join(named)}) are not numbers") from None  # fmt: skip
+                raise InputError(
+                    "traces",
+                    f"{path}: line {block['rows'][0]}: the loads in the "
+                    f"header ({', '.join(named)}) are not numbers",
+                ) from None
         loads = found
     loads = list(loads)
     if len(loads) != len(columns):
-        raise InputError("traces", f"{path}: {len(columns)} pressure columns but {len(loads)} "
-                         "loads given: give one load per pressure column")  # fmt: skip
+        raise InputError(
+            "traces",
+            f"{path}: {len(columns)} pressure columns but {len(loads)} "
+            "loads given: give one load per pressure column",
+        )
     P, x, p, rows = [], [], [], []
     for (block, j), load in zip(columns, loads, strict=True):
         table = np.array(block["values"], dtype=np.float64)
@@ -292,13 +322,25 @@ def _read_report(path: Path, text: str, loads: Sequence[float] | None) -> Traces
         x.append(table[:, 0])
         p.append(table[:, j])
         rows.append(np.array(block["rows"]))
-    return _assemble(np.concatenate(P), np.concatenate(x), np.concatenate(p), None,
-                     np.concatenate(rows), str(path))  # fmt: skip
+    return _assemble(
+        np.concatenate(P),
+        np.concatenate(x),
+        np.concatenate(p),
+        None,
+        np.concatenate(rows),
+        str(path),
+    )
 
 
 # --- checks --------------------------------------------------------------------------------------
-def _assemble(P: FloatArray, x: FloatArray, p: FloatArray, side: Sequence[str] | None,
-              rows: NDArray[np.intp], source: str) -> Traces:  # fmt: skip
+def _assemble(
+    P: FloatArray,
+    x: FloatArray,
+    p: FloatArray,
+    side: Sequence[str] | None,
+    rows: NDArray[np.intp],
+    source: str,
+) -> Traces:
     """Group rows into traces by (P, side), checking every value where it stands."""
     word = "line" if source != ARRAYS else "row"
 
@@ -309,39 +351,50 @@ def _assemble(P: FloatArray, x: FloatArray, p: FloatArray, side: Sequence[str] |
         bad = ~np.isfinite(column)
         if bad.any():
             row = int(np.flatnonzero(bad)[0])
-            raise InputError("traces", f"{at(row)}: column {name}: {float(column[row])!r} is not a "
-                             "finite number")  # fmt: skip
+            raise InputError(
+                "traces", f"{at(row)}: column {name}: {float(column[row])!r} is not a finite number"
+            )
     if (P <= 0).any():
         row = int(np.flatnonzero(P <= 0)[0])
         raise InputError("traces", f"{at(row)}: P = {P[row]:.6g}: the load must be > 0")
     if side is not None:
         for row, value in enumerate(side):
             if value not in SIDES:
-                raise InputError("traces", f"{at(row)}: side {value!r}: must be 'right' or "
-                                 "'left'")  # fmt: skip
+                raise InputError("traces", f"{at(row)}: side {value!r}: must be 'right' or 'left'")
     groups: dict[tuple[float, str | None], list[int]] = {}
     for row in range(P.size):
         groups.setdefault((float(P[row]), side[row] if side is not None else None), []).append(row)
     traces = []
-    for (load, which), members in sorted(groups.items(), key=lambda item: (item[0][0],
-                                                                            str(item[0][1]))):  # fmt: skip
+    for (load, which), members in sorted(
+        groups.items(), key=lambda item: (item[0][0], str(item[0][1]))
+    ):
         members_ = np.array(members)
-        trace = Trace(P=load, x=x[members_], p=p[members_], side=which,  # type: ignore[arg-type]
-                      rows=rows[members_], source=source)  # fmt: skip
+        trace = Trace(
+            P=load,
+            x=x[members_],
+            p=p[members_],
+            side=which,  # type: ignore[arg-type]
+            rows=rows[members_],
+            source=source,
+        )
         _check_trace(trace)
         traces.append(trace)
     if len({trace.P for trace in traces}) < 2:
         only = traces[0]
-        raise InputError("traces", f"{only.where()}: the data hold one load only; the contact "
-                         "law a(P) needs traces at two or more loads")  # fmt: skip
+        raise InputError(
+            "traces",
+            f"{only.where()}: the data hold one load only; the contact "
+            "law a(P) needs traces at two or more loads",
+        )
     return Traces(tuple(traces), source)
 
 
 def _check_trace(trace: Trace) -> None:
     x, p = trace.x, trace.p
     if x.size < MIN_NODES:
-        raise InputError("traces", f"{trace.where()}: {x.size} nodes; a trace needs at least "
-                         f"{MIN_NODES}")  # fmt: skip
+        raise InputError(
+            "traces", f"{trace.where()}: {x.size} nodes; a trace needs at least {MIN_NODES}"
+        )
     step = np.diff(x)
     if not (step > 0).all():
         node = int(np.flatnonzero(~(step > 0))[0]) + 1
@@ -353,8 +406,7 @@ def _check_trace(trace: Trace) -> None:
         )
     peak = float(p.max())
     if not peak > 0:
-        raise InputError("traces", f"{trace.where()}: no node is in contact (no positive "
-                         "pressure)")  # fmt: skip
+        raise InputError("traces", f"{trace.where()}: no node is in contact (no positive pressure)")
     limit = max(NEGATIVE_NOISE * pressure_noise(x, p), NEGATIVE_FRACTION * peak)
     if (p < -limit).any():
         node = int(np.argmin(p))
@@ -366,8 +418,11 @@ def _check_trace(trace: Trace) -> None:
         )
     if int(np.sum(p > 0)) == 1:
         node = int(np.argmax(p))
-        raise InputError("traces", f"{trace.where(node)}: the only node in contact; an edge "
-                         "needs several nodes in contact next to it")  # fmt: skip
+        raise InputError(
+            "traces",
+            f"{trace.where(node)}: the only node in contact; an edge "
+            "needs several nodes in contact next to it",
+        )
 
 
 def _word(trace: Trace) -> str:

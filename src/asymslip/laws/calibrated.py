@@ -100,20 +100,24 @@ class CalibratedEdge:
     #: The array core reads b_exact = a(P_K) only from symmetric laws; a calibrated edge is not.
     symmetric = False
 
-    def __init__(self, law: CalibratedLaw, side: Side, points: _Points, *,
-                 cubic_ends: bool = False) -> None:  # fmt: skip
+    def __init__(
+        self, law: CalibratedLaw, side: Side, points: _Points, *, cubic_ends: bool = False
+    ) -> None:
         self.law = law
         self.side = side
         self.points = points
         u = np.log(points.P)
         self._positions = LogLogCurve(u, np.log(points.a), cubic_ends=cubic_ends)
-        self._multipliers = LogLogCurve(u, np.log(points.L_I), cubic_ends=cubic_ends,
-                                        monotone=False)  # fmt: skip
+        self._multipliers = LogLogCurve(
+            u, np.log(points.L_I), cubic_ends=cubic_ends, monotone=False
+        )
 
     def __repr__(self) -> str:
         low, high = self.load_range
-        return (f"CalibratedEdge({self.side}, {self.points.P.size} loads in [{low:g}, {high:g}] "
-                f"from {self.law.source})")  # fmt: skip
+        return (
+            f"CalibratedEdge({self.side}, {self.points.P.size} loads in [{low:g}, {high:g}] "
+            f"from {self.law.source})"
+        )
 
     # --- a(P) -------------------------------------------------------------------------------
     def half_width(self, P: ArrayLike) -> FloatArray:
@@ -154,8 +158,9 @@ class CalibratedEdge:
         L_I is the calibrated multiplier, not (19).  The array core takes a1, a2, a2 - a1,
         L_I, dP/da = 1/a'(P) and dL_I/dP from here.
         """
-        P1, dP = np.broadcast_arrays(np.asarray(P1, dtype=np.float64),
-                                     np.asarray(dP, dtype=np.float64))  # fmt: skip
+        P1, dP = np.broadcast_arrays(
+            np.asarray(P1, dtype=np.float64), np.asarray(dP, dtype=np.float64)
+        )
         P2 = P1 + dP
         found1 = np.isfinite(P1) & (P1 > 0)
         found2 = found1 & np.isfinite(P2) & (dP >= 0)
@@ -168,7 +173,10 @@ class CalibratedEdge:
             return np.where(found, values, np.nan)[()]
 
         return LawState(
-            P1=P1[()], P2=P2[()], a1=mark(a1, found1), a2=mark(a1 + da, found2),
+            P1=P1[()],
+            P2=P2[()],
+            a1=mark(a1, found1),
+            a2=mark(a1 + da, found2),
             da=mark(da, found2),
             L_I1=mark(self.normal_multiplier(safe1), found1),
             L_I2=mark(self.normal_multiplier(safe2), found2),
@@ -176,8 +184,9 @@ class CalibratedEdge:
             load_slope2=mark(1.0 / self.half_width_slope(safe2), found2),
             L_I_slope1=mark(self.normal_multiplier_slope(safe1), found1),
             L_I_slope2=mark(self.normal_multiplier_slope(safe2), found2),
-            found1=found1[()], found2=found2[()],
-        )  # fmt: skip
+            found1=found1[()],
+            found2=found2[()],
+        )
 
     # --- the multipliers --------------------------------------------------------------------
     def normal_multiplier(self, P: ArrayLike) -> FloatArray:
@@ -205,8 +214,9 @@ class CalibratedEdge:
         (AS3): 2 (lam + pi eta w/8) / (pi sqrt(w) a'(P)).
         """
         P = np.asarray(P, dtype=np.float64)
-        return shear_edge_multiplier_asymmetric(lam, eta, self.contact_width(P),
-                                                self.half_width_slope(P))  # fmt: skip
+        return shear_edge_multiplier_asymmetric(
+            lam, eta, self.contact_width(P), self.half_width_slope(P)
+        )
 
     def moment_factor(self, P: ArrayLike) -> FloatArray:
         """f = (pi sqrt w/2) L_I a'(P) = 1 + (4/w) dM_c/dP (AS4).
@@ -215,8 +225,9 @@ class CalibratedEdge:
         b_exact = a(P_K) would exist); L_II/L_I = (lam + pi eta w/8)/f.
         """
         P = np.asarray(P, dtype=np.float64)
-        return edge_moment_factor(self.contact_width(P), self.normal_multiplier(P),
-                                  self.half_width_slope(P))  # fmt: skip
+        return edge_moment_factor(
+            self.contact_width(P), self.normal_multiplier(P), self.half_width_slope(P)
+        )
 
     # --- range, warnings, error -------------------------------------------------------------
     @property
@@ -237,21 +248,30 @@ class CalibratedEdge:
     def extrapolation_note(self, label: str) -> str:
         """The warning for a load state outside the calibrated loads."""
         low, high = self.law.common_range if self.law.other_edge(self.side) else self.load_range
-        return (f"{label} is outside the calibrated loads [{low:.6g}, {high:.6g}] "
-                f"({self.law.source}): the {self.side} edge's a(P) and L_I(P) there are the end "
-                "power laws, extrapolated")  # fmt: skip
+        return (
+            f"{label} is outside the calibrated loads [{low:.6g}, {high:.6g}] "
+            f"({self.law.source}): the {self.side} edge's a(P) and L_I(P) there are the end "
+            "power laws, extrapolated"
+        )
 
     def load_warnings(self, P1: float, P2: float) -> list[str]:
         """Messages for load states outside the calibrated loads, and the standing caveats."""
-        notes = [self.extrapolation_note(label) for label, P in (("P1", P1), ("P2", P2))
-                 if bool(self.outside_range(P))]  # fmt: skip
+        notes = [
+            self.extrapolation_note(label)
+            for label, P in (("P1", P1), ("P2", P2))
+            if bool(self.outside_range(P))
+        ]
         if self.law.other_edge(self.side) is None:
-            notes.append(f"only the {self.side} edge was calibrated: the contact is taken as "
-                         "symmetric about the origin for the width in L_II")  # fmt: skip
+            notes.append(
+                f"only the {self.side} edge was calibrated: the contact is taken as "
+                "symmetric about the origin for the width in L_II"
+            )
         if self.points.P.size < MIN_LOADS_FOR_REFITS:
-            notes.append(f"the {self.side} edge has {self.points.P.size} calibrated loads: the "
-                         "error of its fit between them cannot be estimated (only the data's "
-                         "own errors are propagated)")  # fmt: skip
+            notes.append(
+                f"the {self.side} edge has {self.points.P.size} calibrated loads: the "
+                "error of its fit between them cannot be estimated (only the data's "
+                "own errors are propagated)"
+            )
         return notes
 
     def error_of(self, quantity: Callable[[CalibratedEdge], ArrayLike]) -> FloatArray:
@@ -309,10 +329,13 @@ class CalibratedLaw:
         """The law of a calibration saved by ``Calibration.save`` (``calibrate --out``)."""
         return cls(Calibration.load(path))
 
-    def _build(self, points: dict[Side, _Points], *,
-               cubic_ends: bool = False) -> dict[Side, CalibratedEdge]:  # fmt: skip
-        return {side: CalibratedEdge(self, side, values, cubic_ends=cubic_ends)
-                for side, values in points.items()}  # fmt: skip
+    def _build(
+        self, points: dict[Side, _Points], *, cubic_ends: bool = False
+    ) -> dict[Side, CalibratedEdge]:
+        return {
+            side: CalibratedEdge(self, side, values, cubic_ends=cubic_ends)
+            for side, values in points.items()
+        }
 
     def _variant(self, points: dict[Side, _Points], *, cubic_ends: bool) -> CalibratedLaw:
         variant = object.__new__(CalibratedLaw)
@@ -359,9 +382,12 @@ class CalibratedLaw:
         right, left = self._edges["right"], self._edges["left"]
         P = np.asarray(P, dtype=np.float64)
         return edge_multiplier_balance(
-            right.contact_width(P), right.normal_multiplier(P), right.half_width_slope(P),
-            left.normal_multiplier(P), left.half_width_slope(P),
-        )  # fmt: skip
+            right.contact_width(P),
+            right.normal_multiplier(P),
+            right.half_width_slope(P),
+            left.normal_multiplier(P),
+            left.half_width_slope(P),
+        )
 
     # --- error --------------------------------------------------------------------------------
     @cached_property
@@ -415,8 +441,15 @@ class CalibratedLaw:
         return ERROR_SAFETY_FACTOR * fit + np.sqrt(data)
 
 
-def _moved_law(law: CalibratedLaw, points: dict[Side, _Points], side: Side, values: _Points,
-               name: str, k: int, error: float) -> tuple[CalibratedLaw, float] | None:  # fmt: skip
+def _moved_law(
+    law: CalibratedLaw,
+    points: dict[Side, _Points],
+    side: Side,
+    values: _Points,
+    name: str,
+    k: int,
+    error: float,
+) -> tuple[CalibratedLaw, float] | None:
     for fraction in (1.0, -1.0, 0.5, -0.5, 0.25, -0.25, 0.125, -0.125):
         moved = values.moved(name, k, fraction * error)
         if name == "a" and not (np.all(np.diff(moved.a) > 0) and np.all(moved.a > 0)):
@@ -437,21 +470,34 @@ def _points_of(calibration: Calibration, side: Side) -> _Points:
     columns = calibration.columns(side)
     P, a = columns["P"], columns["a"]
     if P.size < MIN_LOADS:
-        raise InputError("calibration", f"{calibration.source}: the {side} edge has {P.size} "
-                         f"load(s); its law a(P) needs at least {MIN_LOADS}")  # fmt: skip
+        raise InputError(
+            "calibration",
+            f"{calibration.source}: the {side} edge has {P.size} "
+            f"load(s); its law a(P) needs at least {MIN_LOADS}",
+        )
     if not np.all(a > 0):
         k = int(np.flatnonzero(~(a > 0))[0])
-        raise InputError("calibration", f"{calibration.source}: the {side} edge at P = "
-                         f"{P[k]:.6g} is not beyond the origin x = {calibration.origin:.6g}")  # fmt: skip
+        raise InputError(
+            "calibration",
+            f"{calibration.source}: the {side} edge at P = "
+            f"{P[k]:.6g} is not beyond the origin x = {calibration.origin:.6g}",
+        )
     step = np.diff(a)
     if not np.all(step > 0):
         k = int(np.flatnonzero(~(step > 0))[0])
         errors = columns["a_error"]
         resolved = -step[k] > errors[k] + errors[k + 1]
-        why = ("it recedes: a receding edge is outside the model (the state-2 contact must "
-               "contain the state-1 contact near the edge)") if resolved else (
-               "the change is within the fits' errors: the loads are too close together for "
-               "the mesh near this edge")  # fmt: skip
+        why = (
+            (
+                "it recedes: a receding edge is outside the model (the state-2 contact must "
+                "contain the state-1 contact near the edge)"
+            )
+            if resolved
+            else (
+                "the change is within the fits' errors: the loads are too close together for "
+                "the mesh near this edge"
+            )
+        )
         raise InputError(
             "calibration",
             f"{calibration.source}: the {side} edge does not advance between P = {P[k]:.6g} "
