@@ -15,6 +15,7 @@ computed here by Newton's method on the closed forms.
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -167,6 +168,7 @@ def test_21_misses_the_exact_stick_zone_at_first_order_on_a_rotating_contact(pat
 LOADS = (80.0, 90.0, 100.0, 105.0, 110.0, 120.0)
 
 
+@functools.cache
 def _calibrated(
     path: str, nodes: int = 200, noise: float = 0.0
 ) -> tuple[CalibratedLaw, ExactEdges]:

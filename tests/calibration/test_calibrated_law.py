@@ -11,6 +11,7 @@ contact), and the array core ``slip_zone``, which takes the law through ``cycle_
 
 from __future__ import annotations
 
+import functools
 import itertools
 
 import numpy as np
@@ -33,6 +34,7 @@ MU = 0.1
 CYCLE = (100.0, 0.0, 105.0, 1.0)  # P1, Q1, P2, Q2: the paper's Fig. 5 cycle, lam = 0.2
 
 
+@functools.cache
 def _law(name: str, kind: str, nodes: int, noise: float, seed: int, loads=LOADS) -> CalibratedLaw:
     rng = np.random.default_rng(seed)
     law = LAWS[name]
@@ -77,7 +79,12 @@ def _check_stick_boundaries(name: str, calibrated: CalibratedLaw, eta_sigma2: fl
 
 @pytest.mark.parametrize(
     ("name", "kind", "nodes", "noise"),
-    [(name, "uniform", 50, 0.0) for name in LAWS] + [(name, "graded", 200, 0.01) for name in LAWS],
+    [
+        ("hertz", "uniform", 50, 0.0),
+        ("flat-rounded", "graded", 200, 0.01),
+        ("power-1.5", "graded", 200, 0.01),
+        ("power-3", "uniform", 50, 0.0),
+    ],
 )
 def test_the_stick_boundary_lies_within_the_propagated_error_of_the_law_s_own(
     name, kind, nodes, noise

@@ -85,6 +85,9 @@ MIN_WINDOW = 4
 #: Windows reach at most this fraction of the contact width from the edge (the comparison
 #: windows included): beyond it the edge expansion is not what the fit is about.
 MAX_WINDOW_FRACTION = 0.5
+#: Windows (the comparison windows included) hold at most this many nodes: a trace finer than
+#: that near the edge (a solver's) has more than the fit needs, and the cost grows with it.
+MAX_WINDOW_NODES = 240
 #: A node is in contact when its pressure exceeds this many noise standard deviations.
 CONTACT_THRESHOLD = 3.0
 #: Pressure noise is never taken below this fraction of the peak pressure (rounding).
@@ -512,7 +515,7 @@ def _right_edge(
 
     def variant(end: int) -> _Choice | None:
         reach = x[end] - x[first : end + 1]
-        available = int(np.sum(reach <= MAX_WINDOW_FRACTION * width))
+        available = min(int(np.sum(reach <= MAX_WINDOW_FRACTION * width)), MAX_WINDOW_NODES)
         sizes = _window_sizes(available)
         if not sizes:
             return None
