@@ -192,5 +192,19 @@ def test_a_receding_edge_is_refused_as_outside_the_model():
     shift = {P: 0.1 * (P - 90.0) for P in loads}  # the centre moves faster than the edge grows
     p = np.concatenate([hertz.pressure(x - shift[P], P) for P in loads])
     traces = Traces.from_arrays(np.repeat(loads, x.size), np.tile(x, len(loads)), p)
+    calibration = calibrate(traces)
+    assert any("left edge does not advance" in w and "recedes" in w for w in calibration.warnings)
     with pytest.raises(InputError, match="the left edge does not advance .* it recedes"):
-        CalibratedLaw(calibrate(traces))
+        CalibratedLaw(calibration)
+
+
+@pytest.mark.parametrize(("call", "words"), [
+    (lambda edge: edge.half_width(-1.0), "P: must be > 0"),
+    (lambda edge: edge.normal_multiplier(np.nan), "P: must be finite"),
+    (lambda edge: edge.shear_multiplier(0.0, 0.2, 0.0), "P: must be > 0"),
+    (lambda edge: edge.half_width_growth(100.0, -1.0), "dP: must be >= 0"),
+])  # fmt: skip
+def test_loads_a_law_cannot_take_are_refused_by_name(call, words):
+    edge = _law("hertz", "uniform", 50, 0.0, seed=3).for_edge("right")
+    with pytest.raises(InputError, match=words):
+        call(edge)

@@ -357,12 +357,19 @@ def _centre_at_smallest_load(right: tuple[EdgeFit, ...], left: tuple[EdgeFit, ..
 def _advance_warning(side: Side, edge: tuple[EdgeFit, ...], origin: float) -> str:
     """Words when the edge does not move outwards as the load grows (empty if it does)."""
     for before, after in zip(edge, edge[1:], strict=False):
-        if not after.position(origin) > before.position(origin):
+        step = after.position(origin) - before.position(origin)
+        if not step > 0:
+            why = (
+                "it recedes, which is outside the model (the state-2 contact must contain the "
+                "state-1 contact near the edge)"
+                if -step > before.a_error + after.a_error
+                else "the change is within the fits' errors: the loads are too close together "
+                "for the mesh near this edge"
+            )
             return (
                 f"the {side} edge does not advance as the load grows: a = "
                 f"{before.position(origin):.6g} +- {before.a_error:.2g} at P = {before.P:.6g}, "
-                f"{after.position(origin):.6g} +- {after.a_error:.2g} at P = {after.P:.6g}; the "
-                "method needs an edge that advances (a receding edge is outside the model), and "
-                "within the errors the loads are too close together for this mesh"
+                f"{after.position(origin):.6g} +- {after.a_error:.2g} at P = {after.P:.6g}; {why}; "
+                "the law a(P) cannot be built from these loads"
             )
     return ""

@@ -45,7 +45,7 @@ from asymslip_gen.asymmetric_edges import (
 
 from ..calibration.calibration import Calibration
 from ..calibration.traces import SIDES, Side
-from ..errors import InputError
+from ..errors import InputError, as_float_array, positive
 from .base import BoolArray, LawState
 from .roots import invert_increasing
 from .table import ERROR_SAFETY_FACTOR, LogLogCurve
@@ -126,15 +126,18 @@ class CalibratedEdge:
 
     def half_width_slope(self, P: ArrayLike) -> FloatArray:
         """a'(P) = (a/P) d(log a)/d(log P), > 0."""
-        P = np.asarray(P, dtype=np.float64)
+        P = positive("P", P)
         s, ds = self._positions.evaluate(np.log(P))
         return np.exp(s) * ds / P
 
     def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:
         """a(P1 + dP) - a(P1), free of cancellation however small dP/P1 is."""
-        P1 = np.asarray(P1, dtype=np.float64)
+        P1 = positive("P1", P1)
         u1 = np.log(P1)
-        increment = self._positions.increment(u1, np.log1p(np.asarray(dP, dtype=np.float64) / P1))
+        change = as_float_array("dP", dP)
+        if not np.all(change >= 0):
+            raise InputError("dP", "must be >= 0 (the growth from P1 to P1 + dP)")
+        increment = self._positions.increment(u1, np.log1p(change / P1))
         return np.exp(self._positions.evaluate(u1, 0)[0]) * np.expm1(increment)
 
     def load(self, a: ArrayLike) -> FloatArray:
@@ -195,7 +198,7 @@ class CalibratedEdge:
 
     def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
         """dL_I/dP = (L_I/P) d(log L_I)/d(log P), for the validity measure (26)."""
-        P = np.asarray(P, dtype=np.float64)
+        P = positive("P", P)
         s, ds = self._multipliers.evaluate(np.log(P))
         return np.exp(s) * ds / P
 
@@ -462,7 +465,8 @@ def _moved_law(
 
 
 def _log(P: ArrayLike) -> FloatArray:
-    return np.log(np.asarray(P, dtype=np.float64))
+    """log P, refusing loads that are not finite and > 0 (one InputError, no NumPy warning)."""
+    return np.log(positive("P", P))
 
 
 def _points_of(calibration: Calibration, side: Side) -> _Points:
