@@ -29,6 +29,7 @@ from numpy.typing import NDArray
 
 from ..errors import InputError
 from ..files.atomic import atomic_write
+from ..laws.calibrated import CalibratedLaw
 from .edge_fit import EdgeFit, EdgeFitError, fit_edge
 from .traces import SIDES, Side, Traces
 
@@ -88,6 +89,11 @@ class Calibration:
             "L_I": np.array([fit.L_I for fit in fits]),
             "L_I_error": np.array([fit.L_I_error for fit in fits]),
         }
+
+    def law(self) -> CalibratedLaw:
+        """Each edge's law a(P), L_I(P) from this calibration (refused if an edge does not
+        advance or has fewer than 2 loads): ``Calibration.load(path).law()``."""
+        return CalibratedLaw(self)
 
     # --- JSON ----------------------------------------------------------------------------------
     def to_dict(self) -> dict[str, object]:

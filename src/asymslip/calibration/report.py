@@ -26,10 +26,8 @@ def checks(calibration: Calibration) -> dict[str, object]:
     built>"}``.  Loads outside an edge's calibrated range are left out of that edge's lists;
     the balance needs both edges.
     """
-    from ..laws.calibrated import CalibratedLaw  # the law is built on this package
-
     try:
-        law = CalibratedLaw(calibration)
+        law = calibration.law()
     except InputError as error:
         return {"law": error.rule}
     low, high = law.common_range

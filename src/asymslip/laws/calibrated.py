@@ -1,8 +1,8 @@
 """The contact law of a calibrated contact: each edge with its own a(P) and L_I(P) from data.
 
-A :class:`~asymslip.calibration.Calibration` holds, per edge and per load, the edge's distance
-a from a fixed origin and its multiplier L_I, each with an error.  :class:`CalibratedLaw`
-turns them into one law per edge (:meth:`CalibratedLaw.for_edge`), which is what the paper's
+A calibration (:class:`asymslip.calibration.Calibration`) holds, per edge and per load, the
+edge's distance a from a fixed origin and its multiplier L_I, each with an error.
+:class:`CalibratedLaw` turns them into one law per edge (:meth:`CalibratedLaw.for_edge`), which is what the paper's
 method needs at that edge:
 
 * a(P): the table law's monotone cubic fit of log a against log P
@@ -32,7 +32,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
-from pathlib import Path
+from typing import Protocol
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -43,14 +43,30 @@ from asymslip_gen.asymmetric_edges import (
     shear_edge_multiplier_asymmetric,
 )
 
-from ..calibration.calibration import Calibration
-from ..calibration.traces import SIDES, Side
 from ..errors import InputError, as_float_array, positive
-from .base import BoolArray, LawState
+from .base import BoolArray, LawState, Side
 from .roots import invert_increasing
 from .table import ERROR_SAFETY_FACTOR, LogLogCurve
 
 FloatArray = NDArray[np.float64]
+SIDES: tuple[Side, Side] = ("right", "left")
+
+
+class CalibrationData(Protocol):
+    """What the law needs of a calibration (:class:`asymslip.calibration.Calibration`).
+
+    The law does not import the calibration package, which sits above the laws (it reads
+    files and fits traces); any object with these members will do.
+    """
+
+    source: str
+    origin: float
+
+    @property
+    def sides(self) -> tuple[Side, ...]: ...
+
+    def columns(self, side: Side) -> dict[str, FloatArray]: ...
+
 
 #: The fewest loads an edge law can be fitted through (a power law through two points).
 MIN_LOADS = 2
@@ -89,6 +105,10 @@ class CalibratedEdge:
     Obtained from :meth:`CalibratedLaw.for_edge`.  Distances a (and the stick boundary b the
     paper's formulas give from them) are measured from the calibration's origin along this
     edge's outward direction.  Every method broadcasts over arrays of loads.
+
+    Not a :class:`~asymslip.laws.base.ContactLaw` on purpose: that class's defaults compute
+    L_I from a(P) by (19), which does not hold at an edge of an asymmetric contact; every
+    quantity here is this edge's own, and a caller that needs something else fails loudly.
     """
 
     name = "calibrated"
@@ -99,6 +119,8 @@ class CalibratedEdge:
     exact_stick_boundary_exists = False
     #: The array core reads b_exact = a(P_K) only from symmetric laws; a calibrated edge is not.
     symmetric = False
+    #: Every load > 0 has an a(P) (beyond the calibrated loads, extrapolated and flagged).
+    range_note = ""
 
     def __init__(
         self, law: CalibratedLaw, side: Side, points: _Points, *, cubic_ends: bool = False
@@ -297,8 +319,9 @@ class CalibratedLaw:
     Parameters
     ----------
     calibration
-        From :func:`~asymslip.calibration.calibrate` or :meth:`Calibration.load`.  Each edge
-        with data needs at least 2 loads, and must advance (a increasing) with the load.
+        From :func:`~asymslip.calibration.calibrate` or
+        :meth:`~asymslip.calibration.Calibration.load` (whose :meth:`law` builds this).  Each
+        edge with data needs at least 2 loads, and must advance (a increasing) with the load.
 
     Examples
     --------
@@ -320,17 +343,12 @@ class CalibratedLaw:
     #: The two edges have their own laws (the array core evaluates each).
     symmetric = False
 
-    def __init__(self, calibration: Calibration) -> None:
+    def __init__(self, calibration: CalibrationData) -> None:
         self.calibration = calibration
         self.source = calibration.source
         self.origin = calibration.origin
         points = {side: _points_of(calibration, side) for side in calibration.sides}
         self._edges = self._build(points)
-
-    @classmethod
-    def from_file(cls, path: str | Path) -> CalibratedLaw:
-        """The law of a calibration saved by ``Calibration.save`` (``calibrate --out``)."""
-        return cls(Calibration.load(path))
 
     def _build(
         self, points: dict[Side, _Points], *, cubic_ends: bool = False
@@ -469,7 +487,7 @@ def _log(P: ArrayLike) -> FloatArray:
     return np.log(positive("P", P))
 
 
-def _points_of(calibration: Calibration, side: Side) -> _Points:
+def _points_of(calibration: CalibrationData, side: Side) -> _Points:
     """One edge's points, checked: enough loads, an advancing edge, positive distances."""
     columns = calibration.columns(side)
     P, a = columns["P"], columns["a"]
