@@ -2,8 +2,8 @@
 
 A calibration (:class:`asymslip.calibration.Calibration`) holds, per edge and per load, the
 edge's distance a from a fixed origin and its multiplier L_I, each with an error.
-:class:`CalibratedLaw` turns them into one law per edge (:meth:`CalibratedLaw.for_edge`), which is what the paper's
-method needs at that edge:
+:class:`CalibratedLaw` turns them into one law per edge (:meth:`CalibratedLaw.for_edge`),
+which is what the paper's method needs at that edge:
 
 * a(P): the table law's monotone cubic fit of log a against log P
   (:class:`~asymslip.laws.table.LogLogCurve`), through the calibrated points: increasing,
