@@ -357,6 +357,40 @@ register_quantity(Quantity(
 ))  # fmt: skip
 
 
+# Beyond the paper: the edges of an asymmetric contact (derivations/asymmetric_edge_multipliers.py)
+# as transcribed from its statements AS1-AS6.  The problem's values stand in for w and the
+# slopes: the formulas are arithmetic, any positive width and slopes exercise them.
+def shear_multiplier_asymmetric(lam, eta, w, da_dP):
+    """AS3: L_II = 2 (lam + pi eta w/8) / (pi sqrt(w) a'(P))."""
+    return 2 * (lam + pi * eta * w / 8) / (pi * mpmath.sqrt(w) * da_dP)
+
+
+def normal_multiplier_asymmetric(w, dP_da, dMc_da):
+    """AS1: L_I = (2/(pi sqrt w)) (dP/da + (4/w) dM_c/da)."""
+    return 2 / (pi * mpmath.sqrt(w)) * (dP_da + 4 * dMc_da / w)
+
+
+register_quantity(Quantity(
+    "asymmetric_edges.shear_edge_multiplier_asymmetric", ("lam", "eta", "w=a1", "da_dP"),
+    shear_multiplier_asymmetric, ("20", "21"),
+))  # fmt: skip
+register_quantity(Quantity(
+    "asymmetric_edges.normal_edge_multiplier_asymmetric",
+    ("w=a2", "dP_da=dP_da1", "dMc_da=dP_da1"), normal_multiplier_asymmetric, ("19",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "asymmetric_edges.edge_moment_factor", ("w=a1", "L_I=L_I1", "da_dP"),
+    lambda w, L_I, da_dP: pi * mpmath.sqrt(w) * L_I * da_dP / 2, ("19", "21"),
+))  # fmt: skip
+register_quantity(Quantity(
+    "asymmetric_edges.edge_multiplier_balance",
+    ("w=a2", "L_I_right=L_I1", "da_dP_right=da_dP", "L_I_left=L_I2", "da_dP_left=da_dP"),
+    lambda w, L_I_right, da_dP_right, L_I_left, da_dP_left: pi * mpmath.sqrt(w) / 4
+    * (L_I_right * da_dP_right + L_I_left * da_dP_left),
+    ("19",),
+))  # fmt: skip
+
+
 # ---------------------------------------------------------------------------------------------
 # Section 2.2: validity measures and first-order forms
 # ---------------------------------------------------------------------------------------------

@@ -230,6 +230,19 @@ def _tension(draw: Draw) -> Points:
             "E_star": draw.log_uniform(1.0, 1e3)}  # fmt: skip
 
 
+def _asymmetric_edges(draw: Draw) -> Points:
+    """One edge of an asymmetric contact: width, slopes and multipliers of both edges > 0; the
+    moment of the increments about the centre within +-20 % of the load's (so L_I > 0)."""
+    points = draw.law()
+    points["w"] = draw.log_uniform(0.01, 200.0)
+    points["da_dP"] = draw.log_uniform(1e-4, 1e2)
+    points["dMc_da"] = points["dP_da"] * points["w"] * draw.uniform(-0.2, 0.2)
+    for side in ("right", "left"):
+        points[f"L_I_{side}"] = draw.log_uniform(1e-2, 1e3)
+        points[f"da_dP_{side}"] = draw.log_uniform(1e-4, 1e2)
+    return points
+
+
 #: Function name -> how to draw points inside its documented domain.
 DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     # corrective_slip, validity: one steady partial-slip cycle
@@ -250,6 +263,11 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "corrective_stick_slip_zone_width": _cycle,
     "hertz_stick_boundary_corrective_stick": _cycle,
     "hertz_slip_zone_width_corrective_stick": _cycle,
+    # asymmetric_edges
+    "shear_edge_multiplier_asymmetric": _asymmetric_edges,
+    "normal_edge_multiplier_asymmetric": _asymmetric_edges,
+    "edge_moment_factor": _asymmetric_edges,
+    "edge_multiplier_balance": _asymmetric_edges,
     # edge_multipliers
     "normal_edge_multiplier": _law,
     "shear_edge_multiplier": _law,

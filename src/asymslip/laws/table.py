@@ -70,10 +70,16 @@ _FRITSCH_CARLSON_RADIUS = 3.0
 _END_SLOPE_FLOOR = 0.25
 
 
-def _node_slopes(u: FloatArray, v: FloatArray) -> FloatArray:
-    """Slopes dv/du at the points: three-point parabolas, then Fritsch-Carlson limiting."""
+def _node_slopes(u: FloatArray, v: FloatArray, monotone: bool = True) -> FloatArray:
+    """Slopes dv/du at the points: three-point parabolas, then Fritsch-Carlson limiting.
+
+    Two points give the secant at both.  ``monotone=False`` keeps the parabolas' slopes as they
+    are (for data that need not increase, e.g. L_I(P)).
+    """
     h = np.diff(u)
     secant = np.diff(v) / h
+    if u.size == 2:
+        return np.full(2, secant[0])
     slope = np.empty_like(u)
     # Interior: derivative of the parabola through the point and its two neighbours, a convex
     # combination of the two secants (so positive for increasing data).
@@ -81,6 +87,8 @@ def _node_slopes(u: FloatArray, v: FloatArray) -> FloatArray:
     # Ends: derivative of the parabola through the first (last) three points, at the end.
     slope[0] = ((2 * h[0] + h[1]) * secant[0] - h[0] * secant[1]) / (h[0] + h[1])
     slope[-1] = ((2 * h[-1] + h[-2]) * secant[-1] - h[-1] * secant[-2]) / (h[-1] + h[-2])
+    if not monotone:
+        return slope
     slope[0] = max(slope[0], _END_SLOPE_FLOOR * secant[0])
     slope[-1] = max(slope[-1], _END_SLOPE_FLOOR * secant[-1])
     for k in range(secant.size):
@@ -92,15 +100,22 @@ def _node_slopes(u: FloatArray, v: FloatArray) -> FloatArray:
     return slope
 
 
-class _LogLogCurve:
+class LogLogCurve:
     """Piecewise cubic s(u) = log a at u = log P, continued linearly beyond the ends.
 
     Piece 0 is the left continuation, pieces 1..n-1 the cubics between the points, piece n
     the right continuation; piece j is c0 + c1 t + c2 t^2 + c3 t^3 with t = u - base[j].
+
+    The same fit serves any positive quantity of the load (``v`` = log y at ``u`` = log P, at
+    least two points, u increasing): with ``monotone=True`` (the contact law) v must increase
+    and the fit is strictly increasing; with ``monotone=False`` (e.g. L_I(P), which may fall)
+    the Fritsch-Carlson limiting is left out and v may go either way.
     """
 
-    def __init__(self, u: FloatArray, v: FloatArray, *, cubic_ends: bool = False) -> None:
-        slope = _node_slopes(u, v)
+    def __init__(
+        self, u: FloatArray, v: FloatArray, *, cubic_ends: bool = False, monotone: bool = True
+    ) -> None:
+        slope = _node_slopes(u, v, monotone)
         self.cubic_ends = cubic_ends
         h = np.diff(u)
         secant = np.diff(v) / h
@@ -113,7 +128,8 @@ class _LogLogCurve:
         self.c1 = np.concatenate([slope[:1], slope[:-1], slope[-1:]])
         self.c2 = np.concatenate([zero, c2, zero])
         self.c3 = np.concatenate([zero, c3, zero])
-        self._check_increasing(h)
+        if monotone:
+            self._check_increasing(h)
 
     def _check_increasing(self, h: FloatArray) -> None:
         # s'(t) = c1 + 2 c2 t + 3 c3 t^2 on each cubic piece: its minimum is at an end or at
@@ -180,6 +196,10 @@ class _LogLogCurve:
             far = self.evaluate(v2, 0, k2)[0] - self.evaluate(v1, 0, k1)[0]
             out[crossing] = np.where(k2 == k1 + 1, across_one, far)
         return out.reshape(shape) if shape else out[0]
+
+
+#: The name the fit had before it served other quantities than a(P).
+_LogLogCurve = LogLogCurve
 
 
 def _validated_points(P: ArrayLike, a: ArrayLike,
@@ -250,7 +270,7 @@ class TableLaw(ContactLaw):
     ) -> None:
         self.P, self.a = _validated_points(P, a, _lines)
         self.source = source
-        self._curve = _LogLogCurve(np.log(self.P), np.log(self.a), cubic_ends=_cubic_ends)
+        self._curve = LogLogCurve(np.log(self.P), np.log(self.a), cubic_ends=_cubic_ends)
 
     def __repr__(self) -> str:
         return f"TableLaw({self.P.size} points from {self.source}, P in [{self.P[0]:g}, " \

@@ -1,0 +1,104 @@
+"""What ``asymslip calibrate`` prints: the calibration per edge and load, and its checks.
+
+:func:`checks` gives, at each calibrated load, each edge's moment factor f (AS4: 1 when the
+contact's rotation does not change along the path, so that (21) and b_exact = a(P_K) would
+hold) and the two edges' balance (AS6: exactly 1 for consistent data whatever the moment), each
+with its propagated error; :func:`format_calibration` the text table.  Both build the
+calibrated law, so they also say when it cannot be built (an edge that does not advance).
+
+Runtime needs NumPy only.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import InputError
+from .calibration import Calibration
+from .traces import SIDES
+
+
+def checks(calibration: Calibration) -> dict[str, object]:
+    """The law-level checks at every calibrated load, for ``--json`` (key ``checks``).
+
+    ``{"P": [...], "right": {"moment_factor": [...], "moment_factor_error": [...]}, "left":
+    {...}, "balance": [...], "balance_error": [...]}``, or ``{"law": "<why it cannot be
+    built>"}``.  Loads outside an edge's calibrated range are left out of that edge's lists;
+    the balance needs both edges.
+    """
+    try:
+        law = calibration.law()
+    except InputError as error:
+        return {"law": error.rule}
+    low, high = law.common_range
+    loads = calibration.loads
+    loads = loads[(loads >= low) & (loads <= high)]
+    result: dict[str, object] = {"P": loads.tolist()}
+    for side in calibration.sides:
+
+        def factor(fitted, side=side):
+            return fitted.for_edge(side).moment_factor(loads)
+
+        result[side] = {
+            "moment_factor": np.asarray(factor(law)).tolist(),
+            "moment_factor_error": np.asarray(law.error_of(factor)).tolist(),
+        }
+    if len(calibration.sides) == 2:
+        result["balance"] = np.asarray(law.multiplier_balance(loads)).tolist()
+        result["balance_error"] = np.asarray(
+            law.error_of(lambda fitted: fitted.multiplier_balance(loads))
+        ).tolist()
+    return result
+
+
+def format_calibration(calibration: Calibration) -> str:
+    """The calibration as text: per edge and load, a, L_I, their errors and the window."""
+    lines = [
+        f"calibration of {calibration.source}: {calibration.loads.size} loads; distances a "
+        f"from x = {calibration.origin:.6g}"
+        + (
+            " (one edge only: the contact is taken as symmetric about it)"
+            if calibration.symmetric_about_origin
+            else ""
+        ),
+    ]
+    header = (
+        f"{'P':>12} {'a':>12} {'a_error':>9} {'L_I':>12} {'L_I_error':>9}  "
+        f"{'window x':>25} {'nodes':>5}"
+    )
+    for side in SIDES:
+        fits = calibration.fits(side)
+        if not fits:
+            continue
+        lines += ["", f"{side} edge", header]
+        for fit in fits:
+            window = f"{fit.window[0]:.6g} .. {fit.window[1]:.6g}"
+            lines.append(
+                f"{fit.P:12.6g} {fit.position(calibration.origin):12.6g} {fit.a_error:9.2g} "
+                f"{fit.L_I:12.6g} {fit.L_I_error:9.2g}  {window:>25} {fit.nodes:5d}"
+            )
+            lines += [f"{'':12} note: {note}" for note in fit.notes]
+    found = checks(calibration)
+    lines.append("")
+    if "law" in found:
+        lines.append(f"the law a(P), L_I(P) cannot be built: {found['law']}")
+    else:
+        loads = found["P"]
+        for side in calibration.sides:
+            values = found[side]
+            pairs = ", ".join(
+                f"{f:.4g} +- {e:.2g}"
+                for f, e in zip(values["moment_factor"], values["moment_factor_error"], strict=True)
+            )
+            lines.append(
+                f"{side} edge moment factor f (1 without rotation) at P = "
+                f"{', '.join(f'{P:g}' for P in loads)}: {pairs}"
+            )
+        if "balance" in found:
+            pairs = ", ".join(
+                f"{f:.6g} +- {e:.2g}"
+                for f, e in zip(found["balance"], found["balance_error"], strict=True)
+            )
+            lines.append(f"balance of the two edges (exactly 1 for consistent data): {pairs}")
+    lines += [f"warning: {warning}" for warning in calibration.warnings]
+    return "\n".join(lines)

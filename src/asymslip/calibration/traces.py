@@ -1,0 +1,429 @@
+"""Contact-pressure traces: nodal pressures p at positions x, one trace per load P.
+
+Read from a long-format CSV (``read_traces``), from the tabular report a finite-element package
+writes for a surface path (``read_fe_report``: e.g. an Abaqus ``.rpt`` of XY data, one pressure
+column per load), or given from Python (:meth:`Traces.from_arrays`).  Every data error is one
+:class:`~asymslip.errors.InputError` naming where the bad value is -- the file line (1-based)
+for a file, the row (0-based) for arrays -- and what is wrong with it.
+
+Long format
+-----------
+A header row naming the columns ``P``, ``x`` and ``p`` (any order, other columns ignored), then
+one row per node per load.  Within a load the rows must come in increasing x (the order an FE
+path is written in).  An optional ``side`` column (``right`` or ``left``) marks traces that hold
+only the part of the contact next to that edge, when only one edge was exported; without it
+each load's trace spans the whole contact and gives both edges.  Blank lines and lines starting
+with ``#`` are skipped.
+
+Runtime needs NumPy only.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..errors import InputError
+from .edge_fit import pressure_noise
+
+FloatArray = NDArray[np.float64]
+Side = Literal["right", "left"]
+SIDES: tuple[Side, Side] = ("right", "left")
+
+#: The columns a long-format file must have.
+COLUMNS = ("P", "x", "p")
+#: A pressure below -max(this many noise standard deviations, NEGATIVE_FRACTION of the peak
+#: pressure of its load) is refused: finite-element results may dip slightly below zero at
+#: open nodes, but not by more than their scatter.
+NEGATIVE_NOISE = 5.0
+NEGATIVE_FRACTION = 0.01
+#: Fewer nodes than this in one trace cannot hold an edge with nodes on both sides.
+MIN_NODES = 3
+
+
+@dataclass(frozen=True)
+class Trace:
+    """The nodal pressures of one load (one edge's part of the contact when ``side`` is set).
+
+    ``rows`` gives, for each node, the file line (1-based) it came from, or its row in the
+    arrays (0-based); ``source`` names the file or says ``arrays``.
+    """
+
+    P: float
+    x: FloatArray
+    p: FloatArray
+    side: Side | None
+    rows: NDArray[np.intp]
+    source: str
+
+    @property
+    def from_file(self) -> bool:
+        return self.source != ARRAYS
+
+    def where(self, node: int | None = None) -> str:
+        """``traces.csv: line 17`` (or ``lines 2-41`` for the whole trace), or the array rows."""
+        word = "line" if self.from_file else "row"
+        if node is None:
+            span = f"{word}s {self.rows.min()}-{self.rows.max()}"
+        else:
+            span = f"{word} {self.rows[node]}"
+        return f"{self.source}: {span} (P = {self.P:.6g}{self._side_text()})"
+
+    def _side_text(self) -> str:
+        return f", side {self.side}" if self.side else ""
+
+    def sides(self) -> tuple[Side, ...]:
+        """The edges this trace holds."""
+        return (self.side,) if self.side else SIDES
+
+
+ARRAYS = "arrays"
+
+
+@dataclass(frozen=True)
+class Traces:
+    """All traces of one data set, ordered by load (then side)."""
+
+    traces: tuple[Trace, ...]
+    source: str
+
+    @property
+    def loads(self) -> FloatArray:
+        """The distinct loads, increasing."""
+        return np.unique([trace.P for trace in self.traces])
+
+    def __len__(self) -> int:
+        return len(self.traces)
+
+    @classmethod
+    def from_arrays(
+        cls,
+        P: ArrayLike,
+        x: ArrayLike,
+        p: ArrayLike,
+        side: Sequence[str] | None = None,
+    ) -> Traces:
+        """Long-format data from Python: one entry per node per load (rows as in the file).
+
+        Parameters
+        ----------
+        P, x, p
+            Loads, node positions and pressures, 1-D and of one length.
+        side
+            Optional ``"right"``/``"left"`` per row, when a trace holds only one edge.
+        """
+        columns = {}
+        for name, values in (("P", P), ("x", x), ("p", p)):
+            try:
+                array = np.asarray(values, dtype=np.float64)
+            except (TypeError, ValueError):
+                raise InputError("traces", f"{name} must be an array of numbers") from None
+            if array.ndim != 1:
+                raise InputError(
+                    "traces", f"{name} must be 1-D (one entry per node per load)", array.shape
+                )
+            columns[name] = array
+        sizes = {name: array.size for name, array in columns.items()}
+        if side is not None:
+            side = list(side)
+            sizes["side"] = len(side)
+        if len(set(sizes.values())) != 1:
+            raise InputError(
+                "traces", f"P, x, p{', side' if side else ''} must have one length", sizes
+            )
+        rows = np.arange(columns["P"].size)
+        return _assemble(columns["P"], columns["x"], columns["p"], side, rows, ARRAYS)
+
+
+# --- reading -------------------------------------------------------------------------------------
+def read_traces(path: str | Path, *, loads: Sequence[float] | None = None) -> Traces:
+    """Read pressure traces from a long-format CSV, or from an FE report.
+
+    A file whose first data line has commas is read as CSV (columns ``P, x, p``, optional
+    ``side``); otherwise as a whitespace-separated FE report (:func:`read_fe_report`), which
+    needs ``loads`` unless its column headers name them.
+    """
+    path = Path(path)
+    text = _read_text(path)
+    first = next(
+        (
+            line
+            for line in text.splitlines()
+            if line.strip() and not line.lstrip().startswith(("#", "*"))
+        ),
+        "",
+    )
+    if "," in first:
+        return _read_csv(path, text)
+    return _read_report(path, text, loads)
+
+
+def read_fe_report(path: str | Path, loads: Sequence[float] | None = None) -> Traces:
+    """Read the tabular report an FE package writes for a surface path.
+
+    The format is whitespace-separated columns under a header line: the first column is the
+    position along the path (x or arc length), each further column the contact pressure
+    (CPRESS) at one load.  Several such blocks may follow each other (one report appended per
+    load, for instance); lines starting with ``*`` and blank lines are skipped, as are lines
+    of text between blocks.  The loads are given in the order of the pressure columns, or read
+    from headers that contain ``P=<number>``.
+    """
+    path = Path(path)
+    return _read_report(path, _read_text(path), loads)
+
+
+def _read_text(path: Path) -> str:
+    try:
+        return path.read_text()
+    except (OSError, UnicodeDecodeError) as error:
+        raise InputError("traces", f"cannot read {path}: {error}") from None
+
+
+def _read_csv(path: Path, text: str) -> Traces:
+    header: list[str] | None = None
+    index: dict[str, int] = {}
+    values: dict[str, list[float]] = {name: [] for name in COLUMNS}
+    sides: list[str] | None = None
+    rows: list[int] = []
+    for number, line in enumerate(text.splitlines(), start=1):
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        fields = [field.strip() for field in line.split(",")]
+        if header is None:
+            header = fields
+            missing = [name for name in COLUMNS if name not in header]
+            if missing:
+                raise InputError(
+                    "traces",
+                    f"{path}: line {number}: the header has no column {' or '.join(missing)} "
+                    f"(it must name the columns P, x and p; found {', '.join(header)})",
+                )
+            index = {name: header.index(name) for name in COLUMNS}
+            if "side" in header:
+                index["side"] = header.index("side")
+                sides = []
+            continue
+        if len(fields) != len(header):
+            raise InputError(
+                "traces",
+                f"{path}: line {number}: {len(fields)} fields, the header has {len(header)}",
+            )
+        for name in COLUMNS:
+            field = fields[index[name]]
+            try:
+                value = float(field)
+            except ValueError:
+                raise InputError(
+                    "traces", f"{path}: line {number}: column {name}: {field!r} is not a number"
+                ) from None
+            values[name].append(value)
+        if sides is not None:
+            sides.append(fields[index["side"]])
+        rows.append(number)
+    if header is None:
+        raise InputError("traces", f"{path}: no header row (columns P, x and p)")
+    if not rows:
+        raise InputError("traces", f"{path}: no data rows after the header")
+    return _assemble(
+        np.array(values["P"]),
+        np.array(values["x"]),
+        np.array(values["p"]),
+        sides,
+        np.array(rows),
+        str(path),
+    )
+
+
+_LOAD_IN_HEADER = re.compile(r"P\s*=\s*([-+0-9.eE]+)")
+
+
+def _numbers(line: str) -> list[float] | None:
+    try:
+        return [float(token) for token in line.split()]
+    except ValueError:
+        return None
+
+
+def _read_report(path: Path, text: str, loads: Sequence[float] | None) -> Traces:
+    """Blocks of numeric rows (x, p1, p2, ...) under header lines."""
+    blocks: list[dict] = []
+    header = ""
+    for number, line in enumerate(text.splitlines(), start=1):
+        stripped = line.strip()
+        if not stripped or stripped.startswith("*"):
+            continue
+        numbers = _numbers(stripped)
+        if numbers is None:
+            header = stripped
+            if blocks and not blocks[-1]["rows"]:
+                blocks[-1]["header"] = header
+            continue
+        if (
+            not blocks
+            or blocks[-1]["header"] != header
+            or (blocks[-1]["rows"] and blocks[-1]["width"] != len(numbers))
+        ):
+            if blocks and blocks[-1]["rows"] and blocks[-1]["header"] == header:
+                raise InputError(
+                    "traces",
+                    f"{path}: line {number}: {len(numbers)} numbers, the "
+                    f"rows above have {blocks[-1]['width']}",
+                )
+            blocks.append({"header": header, "rows": [], "values": [], "width": len(numbers)})
+        if len(numbers) < 2:
+            raise InputError(
+                "traces",
+                f"{path}: line {number}: a row needs the position and at least one pressure",
+            )
+        blocks[-1]["rows"].append(number)
+        blocks[-1]["values"].append(numbers)
+    blocks = [block for block in blocks if block["rows"]]
+    if not blocks:
+        raise InputError("traces", f"{path}: no rows of numbers (position, pressure, ...) found")
+    columns = [(block, j) for block in blocks for j in range(1, block["width"])]
+    if loads is None:
+        found: list[float] = []
+        for block in blocks:
+            # One 'P=<number>' per pressure column, in order, anywhere in the block's header.
+            named = _LOAD_IN_HEADER.findall(block["header"])
+            if len(named) != block["width"] - 1:
+                raise InputError(
+                    "traces",
+                    f"{path}: line {block['rows'][0]}: the pressure columns do not say their load "
+                    "(no 'P=<number>' per column in the header): give the loads, one per "
+                    "pressure column",
+                )
+            try:
+                found += [float(value) for value in named]
+            except ValueError:
+                raise InputError(
+                    "traces",
+                    f"{path}: line {block['rows'][0]}: the loads in the "
+                    f"header ({', '.join(named)}) are not numbers",
+                ) from None
+        loads = found
+    loads = list(loads)
+    if len(loads) != len(columns):
+        raise InputError(
+            "traces",
+            f"{path}: {len(columns)} pressure columns but {len(loads)} "
+            "loads given: give one load per pressure column",
+        )
+    P, x, p, rows = [], [], [], []
+    for (block, j), load in zip(columns, loads, strict=True):
+        table = np.array(block["values"], dtype=np.float64)
+        P.append(np.full(table.shape[0], float(load)))
+        x.append(table[:, 0])
+        p.append(table[:, j])
+        rows.append(np.array(block["rows"]))
+    return _assemble(
+        np.concatenate(P),
+        np.concatenate(x),
+        np.concatenate(p),
+        None,
+        np.concatenate(rows),
+        str(path),
+    )
+
+
+# --- checks --------------------------------------------------------------------------------------
+def _assemble(
+    P: FloatArray,
+    x: FloatArray,
+    p: FloatArray,
+    side: Sequence[str] | None,
+    rows: NDArray[np.intp],
+    source: str,
+) -> Traces:
+    """Group rows into traces by (P, side), checking every value where it stands."""
+    word = "line" if source != ARRAYS else "row"
+
+    def at(row: int) -> str:
+        return f"{source}: {word} {rows[row]}"
+
+    for name, column in (("P", P), ("x", x), ("p", p)):
+        bad = ~np.isfinite(column)
+        if bad.any():
+            row = int(np.flatnonzero(bad)[0])
+            raise InputError(
+                "traces", f"{at(row)}: column {name}: {float(column[row])!r} is not a finite number"
+            )
+    if (P <= 0).any():
+        row = int(np.flatnonzero(P <= 0)[0])
+        raise InputError("traces", f"{at(row)}: P = {P[row]:.6g}: the load must be > 0")
+    if side is not None:
+        for row, value in enumerate(side):
+            if value not in SIDES:
+                raise InputError("traces", f"{at(row)}: side {value!r}: must be 'right' or 'left'")
+    groups: dict[tuple[float, str | None], list[int]] = {}
+    for row in range(P.size):
+        groups.setdefault((float(P[row]), side[row] if side is not None else None), []).append(row)
+    traces = []
+    for (load, which), members in sorted(
+        groups.items(), key=lambda item: (item[0][0], str(item[0][1]))
+    ):
+        members_ = np.array(members)
+        trace = Trace(
+            P=load,
+            x=x[members_],
+            p=p[members_],
+            side=which,  # type: ignore[arg-type]
+            rows=rows[members_],
+            source=source,
+        )
+        _check_trace(trace)
+        traces.append(trace)
+    if len({trace.P for trace in traces}) < 2:
+        only = traces[0]
+        raise InputError(
+            "traces",
+            f"{only.where()}: the data hold one load only; the contact "
+            "law a(P) needs traces at two or more loads",
+        )
+    return Traces(tuple(traces), source)
+
+
+def _check_trace(trace: Trace) -> None:
+    x, p = trace.x, trace.p
+    if x.size < MIN_NODES:
+        raise InputError(
+            "traces", f"{trace.where()}: {x.size} nodes; a trace needs at least {MIN_NODES}"
+        )
+    step = np.diff(x)
+    if not (step > 0).all():
+        node = int(np.flatnonzero(~(step > 0))[0]) + 1
+        raise InputError(
+            "traces",
+            f"{trace.where(node)}: x = {x[node]:.6g} does not exceed x = {x[node - 1]:.6g} of the "
+            f"node before it ({_word(trace)} {trace.rows[node - 1]}): x must increase within a "
+            "load (write each load's nodes in order along the surface)",
+        )
+    peak = float(p.max())
+    if not peak > 0:
+        raise InputError("traces", f"{trace.where()}: no node is in contact (no positive pressure)")
+    limit = max(NEGATIVE_NOISE * pressure_noise(x, p), NEGATIVE_FRACTION * peak)
+    if (p < -limit).any():
+        node = int(np.argmin(p))
+        raise InputError(
+            "traces",
+            f"{trace.where(node)}: p = {p[node]:.6g} at x = {x[node]:.6g}: a negative pressure "
+            f"beyond the noise of this trace (more negative than -{limit:.3g}); a contact "
+            "pressure cannot pull",
+        )
+    if int(np.sum(p > 0)) == 1:
+        node = int(np.argmax(p))
+        raise InputError(
+            "traces",
+            f"{trace.where(node)}: the only node in contact; an edge "
+            "needs several nodes in contact next to it",
+        )
+
+
+def _word(trace: Trace) -> str:
+    return "line" if trace.from_file else "row"
