@@ -118,13 +118,33 @@ def stick_boundary_denominator() -> sympy.Expr:
 
 
 @functools.cache
-def slip_zone_width() -> sympy.Expr:
+def slip_zone_width_in_coefficients() -> sympy.Expr:
     """a1 - b from (17) with a2 = a1 + da: -C2 da / (C1 + C2), da an exact factor."""
     width = sympy.factor(a1 - stick_boundary_in_coefficients().subs(a2, a1 + da))
     numerator, _ = sympy.fraction(width)
     assert sympy.Mul.make_args(numerator).count(da) == 1, "da must factor out of a1 - b"
     assert width.free_symbols == {coefficient1, coefficient2, da}
-    return width.subs(proportional_coefficients(growth=da))
+    return width
+
+
+@functools.cache
+def slip_zone_width() -> sympy.Expr:
+    """The width on the proportional path, (22)."""
+    return slip_zone_width_in_coefficients().subs(proportional_coefficients(growth=da))
+
+
+@functools.cache
+def slip_zone_width_from_multipliers() -> sympy.Expr:
+    """The width of (17) in the four multipliers themselves, for edges whose L_II does not
+    follow (21) (an asymmetric contact's, derivations/asymmetric_edge_multipliers.py)."""
+    return slip_zone_width_in_coefficients().subs(load_coefficients())
+
+
+@functools.cache
+def stick_boundary_denominator_from_multipliers() -> sympy.Expr:
+    """C1 + C2 in the four multipliers."""
+    _, denominator = sympy.fraction(stick_boundary_in_coefficients())
+    return denominator.subs(load_coefficients())
 
 
 def _paper_bracket(sign: int, a_i: sympy.Expr) -> sympy.Expr:
@@ -248,6 +268,30 @@ def derive() -> Derivation:
         summary="Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) on a proportional path.",
         doc="(17) has no root where it vanishes; the validating API refuses such input.  "
         "Positive for a steady partial-slip state.",
+        module="corrective_slip",
+        returns="C1 + C2 [force/length^(5/2)].",
+    )
+    d.emit(
+        name="slip_zone_width_from_multipliers",
+        args=arguments(mu, da, L_I1, L_I2, L_II1, L_II2),
+        expr=slip_zone_width_from_multipliers(),
+        equations=("17",),
+        summary="Width a1 - b of (17) from the four edge multipliers, cancellation-free.",
+        doc="-C2 da/(C1 + C2) with C1 = mu L_I1 + L_II1, C2 = mu L_I2 - L_II2: (17) with a2 = "
+        "a1 + da, for edges whose shear multiplier is known by itself rather than through (21) "
+        "(an asymmetric or calibrated contact).  Forward slip (L_II2 > mu L_I2); for backward "
+        "slip pass -L_II1, -L_II2.",
+        module="corrective_slip",
+        returns="a1 - b, same units as da.",
+    )
+    d.emit(
+        name="stick_boundary_denominator_from_multipliers",
+        args=arguments(mu, L_I1, L_I2, L_II1, L_II2),
+        expr=stick_boundary_denominator_from_multipliers(),
+        equations=("17",),
+        summary="Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) from the multipliers.",
+        doc="(17) has no root where it vanishes, and no steady partial-slip state where it is "
+        "negative.",
         module="corrective_slip",
         returns="C1 + C2 [force/length^(5/2)].",
     )

@@ -37,6 +37,8 @@ CONDITIONING_EXCEPTIONS = {
     "paper_stick_boundary_error": "W2 minus the dP^2 term of (22): terms of both signs cancel",
     "paper_stick_boundary_error_from_multiplier": "as paper_stick_boundary_error",
     "slip_zone_width": "a1 - b is proportional to lam + pi eta a2/4 - mu",
+    "slip_zone_width_from_multipliers": "proportional to mu L_I2 - L_II2, which cancels as the "
+    "edge approaches the no-slip limit",
     "relative_slip_zone_measure": "|a1 - b|/a1, proportional to lam + pi eta a2/4 - mu",
     "hertz slip_zone_width, end to end from (P1, dP)": "a1 - b, as slip_zone_width",
     "slip_zone_growth_measure": "proportional to |1 - lam/mu - pi eta a1/(4 mu)|",

@@ -22,8 +22,10 @@ from asymslip_gen.asymmetric_edges import (
 from asymslip_gen.corrective_slip import (
     dislocation_density,
     slip_zone_width,
+    slip_zone_width_from_multipliers,
     stick_boundary,
     stick_boundary_denominator,
+    stick_boundary_denominator_from_multipliers,
     stick_boundary_proportional,
 )
 from asymslip_gen.corrective_stick import (
@@ -183,11 +185,13 @@ __all__ = [
     "slip_zone_growth_measure",
     "slip_zone_width",
     "slip_zone_width_first_order",
+    "slip_zone_width_from_multipliers",
     "slip_zone_width_second_coefficient",
     "slip_zone_width_second_order",
     "slip_zone_width_second_order_from_multiplier",
     "stick_boundary",
     "stick_boundary_denominator",
+    "stick_boundary_denominator_from_multipliers",
     "stick_boundary_proportional",
     "stick_boundary_second_order",
     "stick_ratio_first_order",

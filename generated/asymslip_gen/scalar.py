@@ -29,6 +29,8 @@ __all__ = [
     "edge_multiplier_balance",
     "stick_boundary_proportional",
     "stick_boundary_denominator",
+    "slip_zone_width_from_multipliers",
+    "stick_boundary_denominator_from_multipliers",
     "slip_zone_width",
     "stick_boundary",
     "dislocation_density",
@@ -304,6 +306,76 @@ def stick_boundary_denominator(
     tmp1 = 4 * mu
     tmp2 = math.pi * eta
     return (1 / 4) * L_I1 * (a1 * tmp2 + tmp0 + tmp1) - 1 / 4 * L_I2 * (a2 * tmp2 + tmp0 - tmp1)
+
+
+def slip_zone_width_from_multipliers(
+    mu: float, da: float, L_I1: float, L_I2: float, L_II1: float, L_II2: float
+) -> float:
+    """Width a1 - b of (17) from the four edge multipliers, cancellation-free.
+
+    -C2 da/(C1 + C2) with C1 = mu L_I1 + L_II1, C2 = mu L_I2 - L_II2: (17) with a2 = a1 + da,
+    for edges whose shear multiplier is known by itself rather than through (21) (an asymmetric
+    or calibrated contact).  Forward slip (L_II2 > mu L_I2); for backward slip pass -L_II1,
+    -L_II2.  One value at a time, as
+    ``asymslip_gen.corrective_slip.slip_zone_width_from_multipliers``.
+
+    Implements Eq. (17) of the paper; derived in ``derivations/section2_calibrations.py``.
+
+    Parameters
+    ----------
+    mu : float
+        Coefficient of friction, mu > 0.
+    da : float
+        Growth of the contact half-width a2 - a1 > 0, passed in directly so that callers who
+        know it accurately keep every digit [length].
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_I2 : float
+        Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    L_II1 : float
+        Shear edge multiplier L_II at load state 1 (5), either sign [force/length^(5/2)].
+    L_II2 : float
+        Shear edge multiplier L_II at load state 2 (5), either sign [force/length^(5/2)].
+
+    Returns
+    -------
+    float
+        a1 - b, same units as da.
+    """
+    tmp0 = L_I2 * mu - L_II2
+    return -da * tmp0 / (L_I1 * mu + L_II1 + tmp0)
+
+
+def stick_boundary_denominator_from_multipliers(
+    mu: float, L_I1: float, L_I2: float, L_II1: float, L_II2: float
+) -> float:
+    """Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) from the multipliers.
+
+    (17) has no root where it vanishes, and no steady partial-slip state where it is negative.
+    One value at a time, as
+    ``asymslip_gen.corrective_slip.stick_boundary_denominator_from_multipliers``.
+
+    Implements Eq. (17) of the paper; derived in ``derivations/section2_calibrations.py``.
+
+    Parameters
+    ----------
+    mu : float
+        Coefficient of friction, mu > 0.
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_I2 : float
+        Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    L_II1 : float
+        Shear edge multiplier L_II at load state 1 (5), either sign [force/length^(5/2)].
+    L_II2 : float
+        Shear edge multiplier L_II at load state 2 (5), either sign [force/length^(5/2)].
+
+    Returns
+    -------
+    float
+        C1 + C2 [force/length^(5/2)].
+    """
+    return L_I1 * mu + L_I2 * mu + L_II1 - L_II2
 
 
 def slip_zone_width(

@@ -82,6 +82,30 @@ double asymslip_stick_boundary_denominator(
     return (1.0/4.0)*L_I1*(a1*tmp2 + tmp0 + tmp1) - 1.0/4.0*L_I2*(a2*tmp2 + tmp0 - tmp1);
 }
 
+/* Width a1 - b of (17) from the four edge multipliers, cancellation-free. See asymslip_gen.h. */
+double asymslip_slip_zone_width_from_multipliers(
+    double mu,
+    double da,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2)
+{
+    const double tmp0 = L_I2*mu - L_II2;
+    return -da*tmp0/(L_I1*mu + L_II1 + tmp0);
+}
+
+/* Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) from the multipliers. See asymslip_gen.h. */
+double asymslip_stick_boundary_denominator_from_multipliers(
+    double mu,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2)
+{
+    return L_I1*mu + L_I2*mu + L_II1 - L_II2;
+}
+
 /* Width a1 - b of the slip zone inside the load-state-1 contact. See asymslip_gen.h. */
 double asymslip_slip_zone_width(
     double mu,

@@ -196,6 +196,65 @@ double asymslip_stick_boundary_denominator(
     double L_I2);
 
 /**
+ * Width a1 - b of (17) from the four edge multipliers, cancellation-free.
+ *
+ * -C2 da/(C1 + C2) with C1 = mu L_I1 + L_II1, C2 = mu L_I2 - L_II2: (17) with a2 = a1 +
+ * da, for edges whose shear multiplier is known by itself rather than through (21) (an
+ * asymmetric or calibrated contact). Forward slip (L_II2 > mu L_I2); for backward slip
+ * pass -L_II1, -L_II2.
+ *
+ * Implements Eq. (17) of the paper; derived in derivations/section2_calibrations.py.
+ *
+ * Arguments:
+ *   mu     Coefficient of friction, mu > 0.
+ *   da     Growth of the contact half-width a2 - a1 > 0, passed in directly so that
+ *          callers who know it accurately keep every digit [length].
+ *   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   L_I2   Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+ *   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+ *          [force/length^(5/2)].
+ *   L_II2  Shear edge multiplier L_II at load state 2 (5), either sign
+ *          [force/length^(5/2)].
+ *
+ * Returns:
+ *   a1 - b, same units as da.
+ */
+double asymslip_slip_zone_width_from_multipliers(
+    double mu,
+    double da,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2);
+
+/**
+ * Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) from the multipliers.
+ *
+ * (17) has no root where it vanishes, and no steady partial-slip state where it is
+ * negative.
+ *
+ * Implements Eq. (17) of the paper; derived in derivations/section2_calibrations.py.
+ *
+ * Arguments:
+ *   mu     Coefficient of friction, mu > 0.
+ *   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   L_I2   Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+ *   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+ *          [force/length^(5/2)].
+ *   L_II2  Shear edge multiplier L_II at load state 2 (5), either sign
+ *          [force/length^(5/2)].
+ *
+ * Returns:
+ *   C1 + C2 [force/length^(5/2)].
+ */
+double asymslip_stick_boundary_denominator_from_multipliers(
+    double mu,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2);
+
+/**
  * Width a1 - b of the slip zone inside the load-state-1 contact.
  *
  * (22) rewritten with a2 = a1 + da and factored so that da multiplies the whole

@@ -28,6 +28,8 @@ module asymslip_gen
     public :: asymslip_edge_multiplier_balance
     public :: asymslip_stick_boundary_proportional
     public :: asymslip_stick_boundary_denominator
+    public :: asymslip_slip_zone_width_from_multipliers
+    public :: asymslip_stick_boundary_denominator_from_multipliers
     public :: asymslip_slip_zone_width
     public :: asymslip_stick_boundary
     public :: asymslip_dislocation_density
@@ -103,6 +105,8 @@ module asymslip_gen
     public :: asymslip_edge_multiplier_balance_c
     public :: asymslip_stick_boundary_proportional_c
     public :: asymslip_stick_boundary_denominator_c
+    public :: asymslip_slip_zone_width_from_multipliers_c
+    public :: asymslip_stick_boundary_denominator_from_multipliers_c
     public :: asymslip_slip_zone_width_c
     public :: asymslip_stick_boundary_c
     public :: asymslip_dislocation_density_c
@@ -417,6 +421,83 @@ contains
         real(c_double) :: asymslip_result
         asymslip_result = asymslip_stick_boundary_denominator(mu, lam, eta, a1, a2, L_I1, L_I2)
     end function asymslip_stick_boundary_denominator_c
+
+    !> Width a1 - b of (17) from the four edge multipliers, cancellation-free.
+    !!
+    !! -C2 da/(C1 + C2) with C1 = mu L_I1 + L_II1, C2 = mu L_I2 - L_II2: (17) with a2 = a1 +
+    !! da, for edges whose shear multiplier is known by itself rather than through (21) (an
+    !! asymmetric or calibrated contact). Forward slip (L_II2 > mu L_I2); for backward slip
+    !! pass -L_II1, -L_II2.
+    !!
+    !! Implements Eq. (17) of the paper; derived in derivations/section2_calibrations.py.
+    !!
+    !! Arguments:
+    !!   mu     Coefficient of friction, mu > 0.
+    !!   da     Growth of the contact half-width a2 - a1 > 0, passed in directly so that
+    !!          callers who know it accurately keep every digit [length].
+    !!   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    !!   L_I2   Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    !!   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+    !!          [force/length^(5/2)].
+    !!   L_II2  Shear edge multiplier L_II at load state 2 (5), either sign
+    !!          [force/length^(5/2)].
+    !!
+    !! Returns:
+    !!   a1 - b, same units as da.
+    elemental function asymslip_slip_zone_width_from_multipliers(mu, da, L_I1, L_I2, L_II1, &
+            L_II2) result(asymslip_result)
+        real(c_double), intent(in) :: mu, da, L_I1, L_I2, L_II1, L_II2
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0
+        tmp0 = L_I2*mu - L_II2
+        asymslip_result = -da*tmp0/(L_I1*mu + L_II1 + tmp0)
+    end function asymslip_slip_zone_width_from_multipliers
+
+    !> C binding of asymslip_slip_zone_width_from_multipliers (scalar arguments by value).
+    function asymslip_slip_zone_width_from_multipliers_c(mu, da, L_I1, L_I2, L_II1, L_II2) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_slip_zone_width_from_multipliers")
+        real(c_double), value, intent(in) :: mu, da, L_I1, L_I2, L_II1, L_II2
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_slip_zone_width_from_multipliers(mu, da, L_I1, L_I2, L_II1, &
+                L_II2)
+    end function asymslip_slip_zone_width_from_multipliers_c
+
+    !> Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) from the multipliers.
+    !!
+    !! (17) has no root where it vanishes, and no steady partial-slip state where it is
+    !! negative.
+    !!
+    !! Implements Eq. (17) of the paper; derived in derivations/section2_calibrations.py.
+    !!
+    !! Arguments:
+    !!   mu     Coefficient of friction, mu > 0.
+    !!   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    !!   L_I2   Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    !!   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+    !!          [force/length^(5/2)].
+    !!   L_II2  Shear edge multiplier L_II at load state 2 (5), either sign
+    !!          [force/length^(5/2)].
+    !!
+    !! Returns:
+    !!   C1 + C2 [force/length^(5/2)].
+    elemental function asymslip_stick_boundary_denominator_from_multipliers(mu, L_I1, L_I2, &
+            L_II1, L_II2) result(asymslip_result)
+        real(c_double), intent(in) :: mu, L_I1, L_I2, L_II1, L_II2
+        real(c_double) :: asymslip_result
+        asymslip_result = L_I1*mu + L_I2*mu + L_II1 - L_II2
+    end function asymslip_stick_boundary_denominator_from_multipliers
+
+    !> C binding of asymslip_stick_boundary_denominator_from_multipliers (scalar arguments by
+    !! value).
+    function asymslip_stick_boundary_denominator_from_multipliers_c(mu, L_I1, L_I2, L_II1, L_II2) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_stick_boundary_denominator_from_multipliers")
+        real(c_double), value, intent(in) :: mu, L_I1, L_I2, L_II1, L_II2
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_stick_boundary_denominator_from_multipliers(mu, L_I1, L_I2, &
+                L_II1, L_II2)
+    end function asymslip_stick_boundary_denominator_from_multipliers_c
 
     !> Width a1 - b of the slip zone inside the load-state-1 contact.
     !!

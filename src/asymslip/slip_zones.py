@@ -163,11 +163,20 @@ def _slip_direction(mu: FloatArray, L_I2: FloatArray, L_II2: FloatArray) -> Floa
 
 
 def _shear_multipliers(
-    state: LawState, mu: FloatArray, lam: FloatArray, eta: FloatArray, kernels: ModuleType
+    law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta: FloatArray,
+    kernels: ModuleType,
 ) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """L_II1, L_II2 of (21) and the slip direction of one edge (in its own frame)."""
-    L_II1 = kernels.shear_edge_multiplier_proportional(lam, eta, state.a1, state.L_I1)
-    L_II2 = kernels.shear_edge_multiplier_proportional(lam, eta, state.a2, state.L_I2)
+    """L_II1, L_II2 and the slip direction of one edge (in its own frame).
+
+    By (21) for a symmetric contact; an edge that knows its own shear multiplier (an
+    asymmetric contact's, AS3 of derivations/asymmetric_edge_multipliers.py) gives it itself.
+    """
+    own = getattr(law, "shear_multiplier", None)
+    if own is not None:
+        L_II1, L_II2 = own(state.P1, lam, eta), own(state.P2, lam, eta)
+    else:
+        L_II1 = kernels.shear_edge_multiplier_proportional(lam, eta, state.a1, state.L_I1)
+        L_II2 = kernels.shear_edge_multiplier_proportional(lam, eta, state.a2, state.L_I2)
     return L_II1, L_II2, _slip_direction(mu, state.L_I2, L_II2)
 
 
@@ -180,6 +189,9 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
     slips = direction != 0
     orientation = _where(slips, direction, 1.0)
     lam_o, eta_o = orientation * lam, orientation * eta
+    if hasattr(law, "shear_multiplier"):
+        return _edge_with_own_multipliers(law, state, mu, lam, eta, dP, verdict, side, shear,
+                                          slips, orientation, kernels)  # fmt: skip
     # (22), the paper's headline, and its cancellation-free width a1 - b.
     paper_width = _where(slips, kernels.slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, L_I2),
                          0.0)  # fmt: skip
@@ -236,7 +248,15 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
         gap = abs(values[key] - b)
         disagree = disagree | _where(slips & (gap > own + accuracy + rounding), bit, 0)
     disagree = disagree | _where(slips & (other_direction == 0), OTHER_EDGE_STICKS, 0)
-    # What the asymptotic solution can answer at this edge.
+    return _finish_edge(law, state, mu, verdict, side, values, denominator, slips, disagree)
+
+
+def _finish_edge(law: ContactLaw, state: LawState, mu: FloatArray, verdict: Verdict, side: Side,
+                 values: dict[str, FloatArray], denominator: FloatArray, slips: ArrayLike,
+                 disagree: ArrayLike) -> EdgeValues:  # fmt: skip
+    """What the asymptotic solution can answer at this edge (the rules), and the warnings."""
+    L_I1, L_I2, L_II1, L_II2 = values["L_I1"], values["L_I2"], values["L_II1"], values["L_II2"]
+    b, a2 = values["b"], values["a2"]
     scale = 2 * mu * (L_I1 + L_I2) + abs(L_II1) + abs(L_II2)
     tolerance = _DENOMINATOR_TOLERANCE * scale
     verdict.require("denominator", ~slips | (denominator > tolerance) if not
@@ -244,8 +264,7 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
                     mu, side=side, denominator=denominator)  # fmt: skip
     verdict.require("b_range", (b > 0) & (b <= a2), None, side=side, b=b,
                     eq25=values["eq25"], eq24=values["eq24"], eq27=values["eq27"])  # fmt: skip
-    checked = ("b", "slip_zone_width", "b_paper", "b_first_order", "b_corrective_stick", "L_II1",
-               "L_II2", *MEASURE_KEYS)  # fmt: skip
+    checked = ("b", "slip_zone_width", "b_first_order", "L_II1", "L_II2", *MEASURE_KEYS)
     total = sum(values[key] for key in checked)
     if not (finite(total).all() if _is_array(total) else finite(total)):
         for key in checked:
@@ -257,6 +276,52 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
     flags = flags | _where(law.extrapolated(state.P1), EXTRAPOLATED_P1, 0)
     flags = flags | _where(law.extrapolated(state.P2), EXTRAPOLATED_P2, 0)
     return EdgeValues(values, flags)
+
+
+def _edge_with_own_multipliers(law: ContactLaw, state: LawState, mu: FloatArray,
+                               lam: FloatArray, eta: FloatArray,
+                               dP: FloatArray, verdict: Verdict, side: Side,
+                               shear: tuple[FloatArray, FloatArray, FloatArray],
+                               slips: ArrayLike, orientation: ArrayLike,
+                               kernels: ModuleType) -> EdgeValues:  # fmt: skip
+    """An edge whose multipliers are its own (an asymmetric or calibrated contact).
+
+    b is (17) in the edge's own L_I and L_II: (21), and so (22), do not hold at an edge of an
+    asymmetric contact (AS3, AS4), and neither do the second-order b2, the corrective-stick
+    (40) or a(P_K) (AS7): those are reported as missing (NaN, null in JSON).  The first-order
+    b is the first-order term of (17), which is (28) with lambda/mu + pi eta a1/(4 mu)
+    replaced by the edge's own L_II1/(mu L_I1).  Stated accuracy: first order,
+    2 (da/a1) |a1 - b|: (17) with AS3 agrees with an exact asymmetric solution to second order
+    in dP without tension, but with bulk tension its dP^2 term is the one erratum 22-T finds
+    spurious for symmetric contacts, and no correction is derived for asymmetric ones.
+    """
+    a1, a2, da, L_I1, L_I2 = state.a1, state.a2, state.da, state.L_I1, state.L_I2
+    L_II1, L_II2, direction = shear
+    L_II1_o, L_II2_o = orientation * L_II1, orientation * L_II2
+    width = _where(slips, kernels.slip_zone_width_from_multipliers(mu, da, L_I1, L_I2, L_II1_o,
+                                                                    L_II2_o), 0.0)  # fmt: skip
+    b = a1 - width
+    denominator = kernels.stick_boundary_denominator_from_multipliers(mu, L_I1, L_I2, L_II1_o,
+                                                                       L_II2_o)  # fmt: skip
+    worst_slope = _maximum(state.a_slope1, state.a_slope2)
+    worst_multiplier_slope = _maximum(abs(state.L_I_slope1), abs(state.L_I_slope2))
+    ratio = L_II1_o / L_I1  # the edge's own lambda + pi eta a1/4
+    first_order = a1 * kernels.stick_ratio_first_order(mu, ratio, 0.0, a1, dP, state.a_slope1)
+    missing = np.full(np.shape(a1), np.nan) if _is_array(a1) else np.nan
+    values = {
+        "a1": a1, "a2": a2, "lam": lam, "eta": eta, "L_I1": L_I1, "L_I2": L_I2,
+        "L_II1": L_II1, "L_II2": L_II2, "b": b,
+        "slip_zone_width": width, "b_accuracy": 2 * da / a1 * abs(width), "b_paper": missing,
+        "b_first_order": _where(slips, first_order, a1), "b_exact": missing,
+        "b_corrective_stick": missing, "slip_direction": direction, "P_K": missing,
+        "paper_width": missing,
+        "eq24": kernels.contact_growth_measure(dP, worst_slope, a1),
+        "eq25": abs(width) / a1,
+        "eq26": kernels.multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),
+        "eq27": _where(slips, kernels.slip_zone_growth_measure(mu, ratio, 0.0, a1, dP,
+                                                               worst_slope), 0.0),
+    }  # fmt: skip
+    return _finish_edge(law, state, mu, verdict, side, values, denominator, slips, 0)
 
 
 def _check_law(verdict: Verdict, state: LawState, law: ContactLaw) -> None:
@@ -329,7 +394,8 @@ def _evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike,
         states["left"] = states["right"]
     # One cycle on Python floats uses the math kernels (NumPy's per-call cost would dominate).
     kernels = scalar_kernels if scalar is float and shape == () else asymslip_gen
-    shear = {side: _shear_multipliers(states[side], mu, sign * lam, eta, kernels)
+    shear = {side: _shear_multipliers(law.for_edge(side), states[side], mu, sign * lam, eta,
+                                      kernels)
              for side, sign in (("right", 1.0), ("left", -1.0))}  # fmt: skip
     edges: dict[str, EdgeValues] = {}
     for side, sign, other in (("right", 1.0, "left"), ("left", -1.0, "right")):

@@ -311,6 +311,23 @@ register_quantity(Quantity(
     ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2"),
     stick_boundary_denominator_17, ("17", "21"),
 ))  # fmt: skip
+def width_17(mu, da, L_I1, L_I2, L_II1, L_II2):
+    """a1 - b of (17) as printed, with a2 = a1 + da (exact at 50 digits)."""
+    a1 = mpmath.mpf(1)  # (17) is translation-invariant: any a1
+    a2 = a1 + da
+    c1, c2 = mu * L_I1 + L_II1, mu * L_I2 - L_II2
+    return a1 - (c2 * a2 + c1 * a1) / (c2 + c1)
+
+
+register_quantity(Quantity(
+    "corrective_slip.slip_zone_width_from_multipliers",
+    ("mu", "da", "L_I1", "L_I2", "L_II1", "L_II2"), width_17, ("17",),
+))  # fmt: skip
+register_quantity(Quantity(
+    "corrective_slip.stick_boundary_denominator_from_multipliers",
+    ("mu", "L_I1", "L_I2", "L_II1", "L_II2"),
+    lambda mu, L_I1, L_I2, L_II1, L_II2: mu * (L_I1 + L_I2) + L_II1 - L_II2, ("17",),
+))  # fmt: skip
 register_quantity(Quantity(
     "corrective_slip.slip_zone_width",
     ("mu", "lam", "eta", "a1", "da", "L_I1", "L_I2"),

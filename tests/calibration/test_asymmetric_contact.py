@@ -247,11 +247,6 @@ def test_two_different_slip_zones_agree_with_the_exact_ones_within_the_stated_er
     assert abs(widths["left"] / widths["right"] - 1) > 0.3  # two different slip zones
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="the array core computes L_II by (21); it should call "
-    "the edge's shear_multiplier (AS3) when the law has one (lead: wire it)",
-)
 def test_the_array_core_gives_each_calibrated_edge_its_own_slip_zone():
     law, edges = _calibrated("moment growing with P")
     P1, P2 = 100.0, 105.0

@@ -248,6 +248,8 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     # corrective_slip, validity: one steady partial-slip cycle
     "stick_boundary_proportional": _cycle,
     "stick_boundary_denominator": _cycle,
+    "slip_zone_width_from_multipliers": _cycle,
+    "stick_boundary_denominator_from_multipliers": _cycle,
     "slip_zone_width": _cycle,
     "stick_boundary": _cycle,
     "dislocation_density": _in_slip_zone,
