@@ -414,7 +414,9 @@ class SlipZoneResult:
     Fields are floats for one cycle and arrays for many.  Lengths are in the units of the
     law's parameters.  ``b`` is measured from the contact centre along the edge's outward
     direction (for the left edge, the distance of the left stick boundary from the centre).
-    ``b_exact`` is None (NaN in arrays) where no exact solution exists (eta != 0).
+    ``b_exact`` is None (NaN in arrays) where no exact solution exists (eta != 0, an
+    asymmetric contact); so are ``b_paper``, ``b_corrective_stick`` and ``P_K``-based values
+    for an edge with its own multipliers (a calibrated contact), where they are not derived.
     ``errors`` is None when every element is valid; with ``invalid="mark"`` it lists each
     element's reason (None where valid) and the invalid elements' numbers are NaN.
     """
@@ -430,10 +432,10 @@ class SlipZoneResult:
     b: FloatArray | float
     slip_zone_width: FloatArray | float
     b_accuracy: FloatArray | float
-    b_paper: FloatArray | float
+    b_paper: FloatArray | float | None
     b_first_order: FloatArray | float
     b_exact: FloatArray | float | None
-    b_corrective_stick: FloatArray | float
+    b_corrective_stick: FloatArray | float | None
     slip_direction: FloatArray | float
     validity: dict[str, FloatArray | float]
     warning_flags: NDArray[np.int64] | int = field(repr=False)
@@ -468,8 +470,9 @@ def _edge_result(evaluation: Evaluation, side: str, scalar: bool,
     if scalar:
         numbers = {key: float(values[key]) for key in NUMBER_KEYS}
         numbers["slip_direction"] = int(numbers["slip_direction"])
-        if numbers["b_exact"] != numbers["b_exact"]:  # NaN: no exact solution
-            numbers["b_exact"] = None
+        for key, value in numbers.items():  # NaN: an estimate that does not exist here
+            if value != value:
+                numbers[key] = None
         validity = {key: float(values[key]) for key in MEASURE_KEYS}
         flags: NDArray[np.int64] | int = int(edge.flags)
     else:

@@ -10,15 +10,16 @@ contact laws (:mod:`.laws`).
 
 from __future__ import annotations
 
+import os
 import sys
 from collections.abc import Sequence
 
 from ..errors import InputError
-from . import derive, figure, slip_zone, sweep, traction
+from . import calibrate, derive, figure, slip_zone, solve, sweep, traction
 from .laws import OPTION_OF
 from .parser import Parser
 
-COMMANDS = (slip_zone, traction, figure, derive, sweep)
+COMMANDS = (slip_zone, traction, solve, calibrate, figure, derive, sweep)
 
 
 def build_parser() -> Parser:
@@ -47,3 +48,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("asymslip: interrupted; nothing partial was written", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        # The reader went away (`asymslip ... | head`): stop quietly, as Unix tools do.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 141

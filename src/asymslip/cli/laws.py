@@ -32,6 +32,12 @@ def _table(args: argparse.Namespace) -> ContactLaw:
     return TableLaw.from_csv(args.table)
 
 
+def _calibrated(args: argparse.Namespace) -> ContactLaw:
+    from ..calibration import Calibration
+
+    return Calibration.load(args.calibration).law()
+
+
 def _module(args: argparse.Namespace) -> ContactLaw:
     from ..laws.module_law import ModuleLaw
 
@@ -48,6 +54,8 @@ LAWS: dict[str, LawEntry] = {
                       "punch h = A |x|^n, n >= 1"),
     "table": LawEntry(("table",), _table, "a(P) fitted to a CSV of (P, a) points"),
     "module": LawEntry(("module",), _module, "a law module written by `asymslip derive`"),
+    "calibrated": LawEntry(("calibration",), _calibrated,
+                           "each edge's own law from `asymslip calibrate --out FILE.json`"),
 }  # fmt: skip
 
 #: API parameter name -> the option that sets it, for error messages.
@@ -60,6 +68,9 @@ OPTION_OF = {
     "check_a": "--check-a", "cases": "CASES", "chunk_rows": "--chunk-rows", "workers": "--workers",
     "cycle": "the load cycle (--P1 --Q1 --P2 --Q2 --sigma1 --sigma2 --mu)",
     "figure": "figure", "derive": "derive", "P": "--P1/--P2",
+    "calibration": "--calibration", "traces": "TRACES", "origin": "--origin", "noise": "--noise",
+    "loads": "--loads", "path": "--path", "profile": "--profile", "elements": "--elements",
+    "steps": "--steps",
 }  # fmt: skip
 
 
@@ -81,7 +92,9 @@ def add_law_options(parser: argparse.ArgumentParser) -> None:
     group.add_argument("--module", type=Path, metavar="FILE.py",
                        help="module law: a file written by `asymslip derive`")
     group.add_argument("--param", action="append", metavar="NAME=VALUE",
-                       help="module law: a parameter value (repeat for each)")  # fmt: skip
+                       help="module law (or solve --profile): a parameter value (repeat)")
+    group.add_argument("--calibration", type=Path, metavar="FILE.json",
+                       help="calibrated law: a file written by `asymslip calibrate --out`")
 
 
 def build_law(args: argparse.Namespace) -> ContactLaw:

@@ -1,0 +1,51 @@
+"""``asymslip calibrate``: each edge's law a(P) and multiplier L_I from nodal pressure traces."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+from .parser import number
+
+
+def register(commands: argparse._SubParsersAction) -> None:
+    calibrate = commands.add_parser(
+        "calibrate",
+        help="calibrate each contact edge from pressure traces (e.g. from a finite-element run)",
+        description="Read nodal contact pressures in long format (columns P, x, p; optional "
+        "side; one row per node per load, two or more loads) or an FE path report (x or arc "
+        "length and CPRESS, with --loads), fit each edge's position a and multiplier L_I of "
+        "(4) near the edge with the next term of the expansion, and build each edge's law "
+        "a(P), L_I(P) with error estimates.  Use the saved calibration with --law calibrated "
+        "--calibration FILE.json in slip-zone, traction and sweep.",
+    )
+    calibrate.add_argument("traces", type=Path, metavar="TRACES", help="the pressure traces")
+    calibrate.add_argument("--loads", type=number, nargs="+", metavar="P",
+                           help="the load of each trace of an FE report (in file order)")
+    calibrate.add_argument("--origin", type=number, metavar="X",
+                           help="the point b and a are measured from (default: the contact "
+                           "centre at the smallest load)")  # fmt: skip
+    calibrate.add_argument("--noise", type=number, metavar="S",
+                           help="the pressure noise, if known (default: estimated from the data)")
+    calibrate.add_argument("--json", action="store_true", help="print one JSON object")
+    calibrate.add_argument("--out", type=Path, metavar="FILE.json",
+                           help="save the calibration (for --law calibrated --calibration)")
+    calibrate.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..calibration import calibrate, read_traces
+    from ..calibration.report import checks, format_calibration
+
+    traces = read_traces(args.traces, loads=args.loads)
+    calibration = calibrate(traces, noise=args.noise, origin=args.origin)
+    if args.out is not None:
+        calibration.save(args.out)
+        print(f"wrote {args.out}", file=sys.stderr)
+    if args.json:
+        print(json.dumps(calibration.to_dict() | {"checks": checks(calibration)}, indent=2))
+    else:
+        print(format_calibration(calibration))
+    return 0
