@@ -103,3 +103,18 @@ def test_calibrate_refuses_a_single_load_naming_the_file(tmp_path, capsys):
     assert main(["calibrate", str(traces)]) == 2
     error = capsys.readouterr().err.strip().splitlines()
     assert len(error) == 1 and "one.csv" in error[0]
+
+
+def test_traction_and_slip_with_the_calibrated_law_match_the_hertz_law(hertz_traces, tmp_path,
+                                                                       capsys):  # fmt: skip
+    saved = tmp_path / "cal.json"
+    assert main(["calibrate", str(hertz_traces), "--out", str(saved)]) == 0
+    capsys.readouterr()
+    x = ["--x", "11.3", "11.5"]
+    law = ["--law", "calibrated", "--calibration", str(saved)]
+    calibrated = run_json(capsys, "traction", *law, *FIG5, *x)
+    hertz = run_json(capsys, "traction", *HERTZ, *FIG5, *x)
+    assert calibrated["q_diff"] == pytest.approx(hertz["q_diff"], rel=1e-3)
+    slip = run_json(capsys, "slip", *law, "--E-star", "1", *FIG5, *x)
+    assert slip["slip"] == pytest.approx(run_json(capsys, "slip", *HERTZ, *FIG5, *x)["slip"],
+                                         rel=1e-3)  # fmt: skip

@@ -232,6 +232,7 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
         "slip_direction": direction,
         "P_K": P_K,
         "paper_width": paper_width,
+        "b_consistent": a1 - paper_width,  # (17)/(22): the b for which (15) solves (12)
         "eq24": kernels.contact_growth_measure(dP, worst_slope, a1),
         "eq25": abs(width) / a1,
         "eq26": kernels.multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),
@@ -314,7 +315,7 @@ def _edge_with_own_multipliers(law: ContactLaw, state: LawState, mu: FloatArray,
         "slip_zone_width": width, "b_accuracy": 2 * da / a1 * abs(width), "b_paper": missing,
         "b_first_order": _where(slips, first_order, a1), "b_exact": missing,
         "b_corrective_stick": missing, "slip_direction": direction, "P_K": missing,
-        "paper_width": missing,
+        "paper_width": missing, "b_consistent": b,  # b is (17) in the edge's own multipliers
         "eq24": kernels.contact_growth_measure(dP, worst_slope, a1),
         "eq25": abs(width) / a1,
         "eq26": kernels.multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),

@@ -145,7 +145,7 @@ def traction_difference(
     q = _edge_values(evaluation, edge)
     points, outward = _positions(x, edge, q["a2"])
     if stick_boundary == "consistent":
-        b = q["b_paper"]  # (17)/(22): the b for which the density (15) solves (12)
+        b = q["b_consistent"]  # (17)/(22): the b for which the density (15) solves (12)
     elif stick_boundary == "exact":
         if np.isnan(q["b_exact"]):
             raise InputError("b", "the exact stick boundary a(P_K) does not exist for this "
@@ -226,14 +226,14 @@ def slip_displacement(
     direction = q["slip_direction"]
     # Along the edge's outward direction, then back to the global x (the left edge's outward
     # direction is -x, which flips the sign of a displacement measured along x).
-    along = direction * slip_on_loading(outward, q["b_paper"], q["a1"], mu, q["L_I1"], q["L_I2"],
-                                        direction * q["L_II1"], direction * q["L_II2"],
-                                        E_star)  # fmt: skip
+    along = direction * slip_on_loading(outward, q["b_consistent"], q["a1"], mu, q["L_I1"],
+                                        q["L_I2"], direction * q["L_II1"],
+                                        direction * q["L_II2"], E_star)  # fmt: skip
     global_sign = 1.0 if edge == "right" else -1.0
     return SlipResult(
         edge=edge,
         x=points.tolist(),
         slip=(global_sign * np.asarray(along, dtype=float)).tolist(),
-        b=q["b_paper"],
+        b=q["b_consistent"],
         warnings=warning_texts(int(evaluation.edges[edge].flags), law.for_edge(edge)),
     )

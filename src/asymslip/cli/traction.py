@@ -83,7 +83,8 @@ def run_traction(args: argparse.Namespace) -> int:
 
 def run_slip(args: argparse.Namespace) -> int:
     law = build_law(args)
-    result = slip_displacement(law, build_cycle(args), args.mu, args.x, edge=args.edge)
+    result = slip_displacement(law, build_cycle(args), args.mu, args.x, E_star=args.E_star,
+                               edge=args.edge)  # fmt: skip
     if args.json:
         print(json.dumps(result.to_dict(), indent=2))
         return 0
