@@ -258,8 +258,8 @@ def test_csv_with_extra_columns_comments_and_any_column_order_reads_like_the_arr
     [
         ("P,b\n1,1\n2,2\n3,3\n4,4\n", r"^table: .*line 1: the header has no column a"),
         ("load,a\n1,1\n2,2\n3,3\n4,4\n", r"^table: .*line 1: the header has no column P\b"),
-        ("P,a\n1,1\n2,2\n3,x3\n4,4\n", r"^table: .*line 4: column a: 'x3' is not a number"),
-        ("P,a\n1,1\n2,2\n\n3,3,9\n", r"^table: .*line 5: 3 fields, the header has 2"),
+        ("P,a\n1,1\n2,2\n3,x3\n4,4\n", r"^table: .*line 4: a: 'x3' is not a number"),
+        ("P,a\n1,1\n2,2\n\n3,3,9\n", r"^table: .*line 5: line has 3 fields, the header has 2"),
         ("P,a\n1,1\n2,2\n3,3\n", r"^table: .*: needs at least 4 points .*\(got 3\)"),
         ("P,a\n1,1\n2,2\n3,2\n4,4\n",
          r"^table: .*: a: table values must be strictly increasing \(line 4 does not exceed "
@@ -271,7 +271,7 @@ def test_csv_with_extra_columns_comments_and_any_column_order_reads_like_the_arr
         ("P,a\n0,1\n1,2\n2,3\n4,4\n", r"^table: .*: P: table values must be > 0 \(line 2\)"),
         ("# comment\nP,a\n\n1,1\n2,nan\n3,3\n4,4\n",
          r"^table: .*: a: table values must be finite \(not inf or nan; line 5\)"),
-        ("# only a comment\n", r"^table: .*no header row"),
+        ("# only a comment\n", r"^table: .*has no header"),
     ],
 )
 def test_bad_table_files_are_refused_with_the_line_and_the_rule(tmp_path, text, message):

@@ -176,17 +176,23 @@ class ContactLaw(abc.ABC):
             a2 = a1 + da
         return self._state_from_half_widths(P1, P2, a1, a2, da, found1, found2)
 
+    def quantities_at(self, a: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """dP/da, L_I and dL_I/dP at half-widths a, for a cycle's two states.
+
+        Laws whose three share costly parts (the rounded flat's corner angle) override it.
+        """
+        slope = self.load_slope(a)
+        return (slope, self.normal_multiplier_at(a, slope),
+                self.normal_multiplier_slope_at(a, slope))  # fmt: skip
+
     def _state_from_half_widths(self, P1: FloatArray, P2: FloatArray, a1: FloatArray,
                                 a2: FloatArray, da: FloatArray, found1: BoolArray,
                                 found2: BoolArray) -> LawState:  # fmt: skip
         """The multipliers and slopes at known half-widths (NaN where a load has no a)."""
         with np.errstate(all="ignore"):  # unfound elements are NaN and marked, not warned
-            safe1, safe2 = np.where(found1, a1, 1.0), np.where(found2, a2, 1.0)
-            slope1, slope2 = self.load_slope(safe1), self.load_slope(safe2)
-            L_I1 = self.normal_multiplier_at(safe1, slope1)
-            L_I2 = self.normal_multiplier_at(safe2, slope2)
-            L_I_slope1 = self.normal_multiplier_slope_at(safe1, slope1)
-            L_I_slope2 = self.normal_multiplier_slope_at(safe2, slope2)
+            (slope1, L_I1, L_I_slope1), (slope2, L_I2, L_I_slope2) = (
+                self.quantities_at(np.where(found, a, self.stand_in_half_width))
+                for a, found in ((a1, found1), (a2, found2)))  # fmt: skip
 
         def mark(values: ArrayLike, found: BoolArray) -> FloatArray:
             return np.where(found, values, np.nan)
@@ -198,6 +204,9 @@ class ContactLaw(abc.ABC):
             L_I_slope1=mark(L_I_slope1, found1), L_I_slope2=mark(L_I_slope2, found2),
             found1=np.asarray(found1), found2=np.asarray(found2),
         )  # fmt: skip
+
+    #: A half-width where the law is defined, evaluated in place of a load it cannot carry.
+    stand_in_half_width: float = 1.0
 
     # --- the rest ------------------------------------------------------------------------------
     #: Appended to the message for a load the law cannot carry (a user law's known range).

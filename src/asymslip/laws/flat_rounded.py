@@ -26,7 +26,7 @@ from asymslip_gen.flat_rounded import (
 from asymslip_gen.hertz import hertz_half_width
 
 from ..errors import as_float_array, positive, require
-from .base import BoolArray, ContactLaw, FloatArray, LawState
+from .base import BoolArray, ContactLaw, FloatArray
 from .roots import (
     QUADRATURE_LIMIT,
     gauss_integral,
@@ -165,32 +165,17 @@ class FlatRoundedLaw(ContactLaw):
         require(change >= 0, "dP", "must be >= 0", change)
         return self.cycle_state(start, change).da
 
-    def _state_from_half_widths(self, P1, P2, a1, a2, da, found1, found2) -> LawState:  # noqa: ANN001
-        """Multipliers and slopes at both half-widths from one chord and angle each."""
-        values = []
-        for a, found in ((a1, found1), (a2, found2)):
-            with np.errstate(all="ignore"):
-                safe = np.where(found, a, self.c + 1.0)
-                chord = flat_rounded_chord(safe, self.c)
-                angle = flat_rounded_corner_angle(chord, self.c)
-                parameters = (safe, self.c, self.R, self.E_star, angle)
-                values.append([
-                    flat_rounded_load_slope_at_angle(*parameters),
-                    flat_rounded_normal_edge_multiplier_at_angle(*parameters),
-                    flat_rounded_normal_edge_multiplier_slope_at_angle(*parameters, chord),
-                ])  # fmt: skip
-        (slope1, L_I1, L_I_slope1), (slope2, L_I2, L_I_slope2) = values
+    def quantities_at(self, a: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """dP/da, L_I and dL_I/dP from one chord and one corner angle."""
+        chord = flat_rounded_chord(a, self.c)
+        parameters = (a, self.c, self.R, self.E_star, flat_rounded_corner_angle(chord, self.c))
+        return (flat_rounded_load_slope_at_angle(*parameters),
+                flat_rounded_normal_edge_multiplier_at_angle(*parameters),
+                flat_rounded_normal_edge_multiplier_slope_at_angle(*parameters, chord))
 
-        def mark(value: FloatArray, found: BoolArray) -> FloatArray:
-            return np.where(found, value, np.nan)
-
-        return LawState(
-            P1=P1, P2=P2, a1=mark(a1, found1), a2=mark(a2, found2), da=mark(da, found2),
-            L_I1=mark(L_I1, found1), L_I2=mark(L_I2, found2),
-            load_slope1=mark(slope1, found1), load_slope2=mark(slope2, found2),
-            L_I_slope1=mark(L_I_slope1, found1), L_I_slope2=mark(L_I_slope2, found2),
-            found1=np.asarray(found1), found2=np.asarray(found2),
-        )  # fmt: skip
+    @property
+    def stand_in_half_width(self) -> float:  # type: ignore[override]
+        return self.c + 1.0
 
     def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
         chord = flat_rounded_chord(a, self.c)

@@ -57,6 +57,7 @@ from asymslip_gen.edge_multipliers import normal_edge_multiplier
 from asymslip_gen.table_law import normal_edge_multiplier_slope_loglog
 
 from ..errors import InputError, as_float_array
+from ..files.reader import read_table
 from .base import BoolArray, ContactLaw, FloatArray, LawState
 
 #: The columns a table file must have (header row, any order; other columns are ignored).
@@ -280,45 +281,16 @@ class TableLaw(ContactLaw):
     def from_csv(cls, path: str | Path) -> TableLaw:
         """Read a table with a header row naming the columns ``P`` and ``a`` (comma-separated).
 
-        Other columns are ignored; blank lines and lines starting with ``#`` are skipped.
+        Other columns are ignored; blank lines and lines starting with ``#`` are skipped; an
+        error names the file line as an editor counts it (:func:`asymslip.files.read_table`).
         """
         path = Path(path)
-        try:
-            text = path.read_text()
-        except (OSError, UnicodeDecodeError) as error:
-            raise InputError("table", f"cannot read {path}: {error}") from None
-        header: list[str] | None = None
-        columns: dict[str, list[float]] = {name: [] for name in COLUMNS}
-        lines: list[int] = []
-        for number, line in enumerate(text.splitlines(), start=1):
-            if not line.strip() or line.lstrip().startswith("#"):
-                continue
-            fields = [field.strip() for field in line.split(",")]
-            if header is None:
-                header = fields
-                missing = [name for name in COLUMNS if name not in header]
-                if missing:
-                    raise InputError(
-                        "table",
-                        f"{path}: line {number}: the header has no column "
-                        f"{' or '.join(missing)} (it must name the columns P and a; "
-                        f"found {', '.join(header)})",
-                    )
-                index = {name: header.index(name) for name in COLUMNS}
-                continue
-            if len(fields) != len(header):
-                raise InputError("table", f"{path}: line {number}: {len(fields)} fields, "
-                                 f"the header has {len(header)}")  # fmt: skip
-            for name in COLUMNS:
-                field = fields[index[name]]
-                try:
-                    columns[name].append(float(field))
-                except ValueError:
-                    raise InputError("table", f"{path}: line {number}: column {name}: "
-                                     f"{field!r} is not a number") from None  # fmt: skip
-            lines.append(number)
-        if header is None:
-            raise InputError("table", f"{path}: no header row (columns P and a)")
+        table = read_table(path, required=COLUMNS, option="table")
+        if table.errors:
+            row, message = next(iter(table.errors.items()))
+            raise InputError("table", f"{path}: line {int(table.line[row])}: {message}")
+        columns = {name: table.values[name] for name in COLUMNS}
+        lines = table.line.tolist()
         try:
             return cls(columns["P"], columns["a"], source=str(path), _lines=lines)
         except InputError as error:  # name the file too: the table option is a path
