@@ -5,7 +5,9 @@ by hand below in plain NumPy (``paper_*`` functions), independently of the SymPy
 and compared with the generated kernels.  Where a hand transcription would subtract nearly
 equal numbers (a2 - a1, a1 - b), it is rationalised by hand with (29) and says so.  Precision
 claims and the higher-order discrepancies beyond the paper are checked against mpmath at 50
-digits, from the paper's formulas written out again in mpmath.
+digits, from the paper's formulas written out again in mpmath.  Property tests draw their
+inputs as arrays (``tests/sampling.py``: every corner of the input box, then 50,000 random
+points) and evaluate each kernel once on all of them.
 """
 
 from __future__ import annotations
@@ -15,9 +17,6 @@ import math
 import mpmath
 import numpy as np
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from asymslip_gen.corrective_slip import stick_boundary_proportional
 from asymslip_gen.corrective_stick import (
     corrective_stick_slip_zone_width,
@@ -37,6 +36,7 @@ from asymslip_gen.method_agreement import (
     corrective_stick_discrepancy_third_order,
     hertz_slip_zone_width_first_order,
 )
+from tests.sampling import assert_within, draw, log_uniform, uniform
 
 RTOL = 1e-12
 PI = math.pi
@@ -161,13 +161,28 @@ def paper_22_stick_boundary(mu, lam, eta, a1, a2, L1, L2):
 
 # The paper's case is lam >= mu: forward slip at the right-hand edge during loading, b <= a1.
 # dP/P1 <= 0.2 keeps (32) reasonable and P_K = P1 (1 - eps (r - 1)/2) > 0 for r <= 6.
-loads = st.floats(1e-2, 1e4)
-relative_changes = st.floats(1e-6, 0.2)
-frictions = st.floats(0.05, 1.0)
-slope_ratios = st.floats(1.0, 6.0)  # r = lam/mu
-radii = st.floats(1e-2, 1e3)
-moduli = st.floats(1e-2, 1e3)
-tension_terms = st.floats(-1.0, 3.0)  # t = pi eta a1 / (4 mu)
+LOAD = log_uniform(1e-2, 1e4)  # P1
+RELATIVE_CHANGE = log_uniform(1e-6, 0.2)  # eps = dP/P1
+FRICTION = log_uniform(0.05, 1.0)  # mu
+SLOPE_RATIO = uniform(1.0, 6.0)  # r = lam/mu
+RADIUS = log_uniform(1e-2, 1e3)  # R
+MODULUS = log_uniform(1e-2, 1e3)  # E*
+TENSION_TERM = uniform(-1.0, 3.0)  # t = pi eta a1 / (4 mu)
+
+# The Hertzian cycles of Section 3, with and without bulk tension.
+HERTZ_CYCLE = {"P1": LOAD, "eps": RELATIVE_CHANGE, "mu": FRICTION, "r": SLOPE_RATIO,
+               "R": RADIUS, "E": MODULUS}  # fmt: skip
+TENSION_CYCLE = {**HERTZ_CYCLE, "t": TENSION_TERM}
+
+
+def hertz_cycles(ranges=HERTZ_CYCLE, **changed):
+    """Samples of ``ranges`` (entries replaced by ``changed``), with dP = eps P1 and lam = r mu,
+    and with eta = 4 mu t/(pi a1) when a tension term t is drawn."""
+    c = draw(**{**ranges, **changed})
+    c["dP"], c["lam"] = c["eps"] * c["P1"], c["r"] * c["mu"]
+    if "t" in c:
+        c["eta"] = _eta(c["t"], c["mu"], paper_29_half_width(c["P1"], c["R"], c["E"]))
+    return c
 
 
 def _eta(t, mu, a1):
@@ -178,42 +193,44 @@ def _close(actual, expected, rtol=RTOL):
     assert actual == pytest.approx(expected, rel=rtol, abs=0), (actual, expected)
 
 
+def _args(c, names):
+    return tuple(c[name] for name in names.split())
+
+
 # ---------------------------------------------------------------- Section 3.1: exact solution
 
 
-@settings(max_examples=200, deadline=None)
-@given(loads, relative_changes, frictions, slope_ratios, st.floats(-1.0, 1.0))
-def test_permanent_stick_load_is_eq33_on_the_proportional_path(P1, eps, mu, r, q1):
-    dP, lam = eps * P1, r * mu
-    Q1 = q1 * mu * P1  # state 1 below sliding, |Q1| <= mu P1
+def test_permanent_stick_load_is_eq33_on_the_proportional_path():
+    c = hertz_cycles({"P1": LOAD, "eps": RELATIVE_CHANGE, "mu": FRICTION, "r": SLOPE_RATIO,
+                      "q1": uniform(-1.0, 1.0)})  # fmt: skip
+    P1, dP, lam, mu = _args(c, "P1 dP lam mu")
+    Q1 = c["q1"] * mu * P1  # state 1 below sliding, |Q1| <= mu P1
     expected = paper_33_permanent_stick_load(P1, P1 + dP, Q1, Q1 + lam * dP, mu)
-    _close(permanent_stick_load(P1, dP, lam, mu), expected)
+    assert_within(permanent_stick_load(P1, dP, lam, mu), expected, rtol=RTOL, inputs=c)
 
 
-@settings(max_examples=200, deadline=None)
-@given(loads, relative_changes, frictions, slope_ratios, radii, moduli)
-def test_exact_stick_boundary_is_eq34(P1, eps, mu, r, R, E):
-    dP, lam = eps * P1, r * mu
+def test_exact_stick_boundary_is_eq34():
+    c = hertz_cycles()
+    P1, dP, lam, mu, R, E = _args(c, "P1 dP lam mu R E")
     expected = paper_34_stick_boundary(P1, P1 + dP, 0.0, lam * dP, mu, R, E)
-    _close(hertz_stick_boundary_exact(P1, dP, lam, mu, R, E), expected)
+    assert_within(hertz_stick_boundary_exact(P1, dP, lam, mu, R, E), expected, rtol=RTOL,
+                  inputs=c)  # fmt: skip
 
 
-@settings(max_examples=200, deadline=None)
-@given(loads, st.floats(0.2, 0.5), frictions, st.floats(1.0, 3.0), radii, moduli)
-def test_eq35_is_exact_not_an_approximation_at_large_load_change(P1, eps, mu, r, R, E):
+def test_eq35_is_exact_not_an_approximation_at_large_load_change():
     # Erratum: the paper obtains (35) "using the approximations (32)"; at dP/P1 up to 0.5 the
     # hand-transcribed (35) still equals (34) to rounding.
-    dP, lam = eps * P1, r * mu
+    c = hertz_cycles(eps=uniform(0.2, 0.5), r=uniform(1.0, 3.0))
+    P1, dP, lam, mu, R, E = _args(c, "P1 dP lam mu R E")
     from_34 = paper_34_stick_boundary(P1, P1 + dP, 0.0, lam * dP, mu, R, E)
-    _close(paper_35_stick_boundary(P1, dP, lam, mu, R, E), from_34, rtol=1e-13)
+    assert_within(paper_35_stick_boundary(P1, dP, lam, mu, R, E), from_34, rtol=1e-13, inputs=c)
 
 
-@settings(max_examples=200, deadline=None)
-@given(loads, relative_changes, frictions, slope_ratios, radii, moduli)
-def test_exact_slip_zone_width_is_eq35(P1, eps, mu, r, R, E):
-    dP, lam = eps * P1, r * mu
-    expected = paper_35_slip_zone_width(P1, dP, lam, mu, R, E)
-    _close(hertz_slip_zone_width_exact(P1, dP, lam, mu, R, E), expected)
+def test_exact_slip_zone_width_is_eq35():
+    c = hertz_cycles()
+    args = _args(c, "P1 dP lam mu R E")
+    assert_within(hertz_slip_zone_width_exact(*args), paper_35_slip_zone_width(*args),
+                  rtol=RTOL, inputs=c)  # fmt: skip
 
 
 @pytest.mark.parametrize("lam", [0.1000001, 0.2, 0.35, 1.0])
@@ -246,59 +263,54 @@ def test_eq36_is_the_first_order_term_of_the_exact_slip_zone(eps):
 # ---------------------------------------------------------------- Section 3.2: corrective stick
 
 
-@settings(max_examples=200, deadline=None)
-@given(frictions, slope_ratios, tension_terms, st.floats(1e-2, 1e2))
-def test_shear_intensity_rate_is_eq39(mu, r, t, a):
-    lam, eta = r * mu, _eta(t, mu, a)
+def test_shear_intensity_rate_is_eq39():
+    c = draw(mu=FRICTION, r=SLOPE_RATIO, t=TENSION_TERM, a=log_uniform(1e-2, 1e2))
+    a, lam = c["a"], c["r"] * c["mu"]
+    eta = _eta(c["t"], c["mu"], a)
     # The two terms of (39) cancel when lam + pi eta a/4 = 0: rounding is relative to them.
     scale = abs(lam) / (PI * np.sqrt(2 * a)) + abs(eta) / 4 * np.sqrt(a / 2)
-    difference = shear_intensity_rate(lam, eta, a) - paper_39_intensity_rate(lam, eta, a)
-    assert abs(difference) <= RTOL * scale
+    assert_within(shear_intensity_rate(lam, eta, a), paper_39_intensity_rate(lam, eta, a),
+                  atol=RTOL * scale, inputs=c)  # fmt: skip
 
 
-@settings(max_examples=200, deadline=None)
-@given(
-    frictions, slope_ratios, tension_terms, st.floats(1e-2, 1e2), st.floats(1e-6, 0.1),
-    st.floats(1e-2, 1e3), st.floats(1e-6, 1e2),
-)  # fmt: skip
-def test_corrective_stick_width_is_eq40(mu, r, t, a1, da_ratio, L_I1, dP):
-    lam, eta, da = r * mu, _eta(t, mu, a1), da_ratio * a1
+def test_corrective_stick_width_is_eq40():
+    c = draw(mu=FRICTION, r=SLOPE_RATIO, t=TENSION_TERM, a1=log_uniform(1e-2, 1e2),
+             da_ratio=log_uniform(1e-6, 0.1), L_I1=log_uniform(1e-2, 1e3),
+             dP=log_uniform(1e-6, 1e2))  # fmt: skip
+    mu, a1, L_I1, dP = _args(c, "mu a1 L_I1 dP")
+    lam, eta, da = c["r"] * mu, _eta(c["t"], mu, a1), c["da_ratio"] * a1
     width = corrective_stick_slip_zone_width(mu, lam, eta, a1, da, L_I1, dP)
     # The terms of (40) may cancel (d1 = 0 is a valid answer): rounding is relative to them.
     scale = size_of_40_terms(mu, lam, eta, a1, da, L_I1, dP)
-    assert abs(width - paper_40_width(mu, lam, eta, a1, da, L_I1, dP)) <= RTOL * scale
+    assert_within(width, paper_40_width(mu, lam, eta, a1, da, L_I1, dP), atol=RTOL * scale,
+                  inputs=c)  # fmt: skip
 
 
-@settings(max_examples=200, deadline=None)
-@given(loads, relative_changes, frictions, slope_ratios, tension_terms, radii, moduli)
-def test_hertz_corrective_stick_boundary_is_eq41(P1, eps, mu, r, t, R, E):
-    dP, lam = eps * P1, r * mu
-    eta = _eta(t, mu, paper_29_half_width(P1, R, E))
-    expected = paper_41_stick_boundary(P1, dP, lam, eta, mu, R, E)
-    _close(hertz_stick_boundary_corrective_stick(P1, dP, lam, eta, mu, R, E), expected)
+def test_hertz_corrective_stick_boundary_is_eq41():
+    c = hertz_cycles(TENSION_CYCLE)
+    args = _args(c, "P1 dP lam eta mu R E")
+    assert_within(hertz_stick_boundary_corrective_stick(*args), paper_41_stick_boundary(*args),
+                  rtol=RTOL, inputs=c)  # fmt: skip
 
 
-@settings(max_examples=200, deadline=None)
-@given(loads, relative_changes, frictions, slope_ratios, tension_terms, radii, moduli)
-def test_hertz_corrective_stick_width_is_eq41(P1, eps, mu, r, t, R, E):
-    dP, lam = eps * P1, r * mu
-    eta = _eta(t, mu, paper_29_half_width(P1, R, E))
-    width = hertz_slip_zone_width_corrective_stick(P1, dP, lam, eta, mu, R, E)
-    scale = size_of_41_terms(P1, dP, lam, eta, mu, R, E)
-    assert abs(width - paper_41_width(P1, dP, lam, eta, mu, R, E)) <= RTOL * scale
+def test_hertz_corrective_stick_width_is_eq41():
+    c = hertz_cycles(TENSION_CYCLE)
+    args = _args(c, "P1 dP lam eta mu R E")
+    # The two terms of a1 - b may cancel: rounding is relative to their size.
+    assert_within(hertz_slip_zone_width_corrective_stick(*args), paper_41_width(*args),
+                  atol=RTOL * size_of_41_terms(*args), inputs=c)  # fmt: skip
 
 
-@settings(max_examples=100, deadline=None)
-@given(loads, relative_changes, frictions, slope_ratios, tension_terms, radii, moduli)
-def test_hertz_corrective_stick_width_is_generic_eq40_with_eq31(P1, eps, mu, r, t, R, E):
-    dP, lam = eps * P1, r * mu
+def test_hertz_corrective_stick_width_is_generic_eq40_with_eq31():
+    c = hertz_cycles(TENSION_CYCLE)
+    P1, dP, lam, eta, mu, R, E = _args(c, "P1 dP lam eta mu R E")
     a1 = paper_29_half_width(P1, R, E)
-    eta = _eta(t, mu, a1)
     generic = corrective_stick_slip_zone_width(
         mu, lam, eta, a1, paper_29_growth(P1, dP, R, E), paper_31_multiplier(a1, R, E), dP
     )
     hertz = hertz_slip_zone_width_corrective_stick(P1, dP, lam, eta, mu, R, E)
-    assert abs(hertz - generic) <= RTOL * size_of_41_terms(P1, dP, lam, eta, mu, R, E)
+    assert_within(hertz, generic, atol=RTOL * size_of_41_terms(P1, dP, lam, eta, mu, R, E),
+                  inputs=c)  # fmt: skip
 
 
 def test_hertz_corrective_stick_width_keeps_precision_at_lam_equal_mu():
@@ -349,29 +361,25 @@ def test_eq44_is_the_first_order_term_of_eq41_with_tension(eps):
     assert relative < 2 * eps
 
 
-@settings(max_examples=200, deadline=None)
-@given(loads, relative_changes, frictions, slope_ratios, tension_terms, radii, moduli)
-def test_first_order_width_is_eq44(P1, eps, mu, r, t, R, E):
-    dP, lam = eps * P1, r * mu
-    eta = _eta(t, mu, paper_29_half_width(P1, R, E))
-    expected = paper_44_slip_zone_width(P1, dP, lam, eta, mu, R, E)
-    width = hertz_slip_zone_width_first_order(P1, dP, lam, eta, mu, R, E)
+def test_first_order_width_is_eq44():
+    c = hertz_cycles(TENSION_CYCLE)
+    P1, dP, lam, eta, mu, R, E = args = _args(c, "P1 dP lam eta mu R E")
     # (lam/mu + t - 1) may vanish: rounding is relative to the size of its terms.
-    scale = paper_29_half_width(P1, R, E) * (lam / mu + abs(t) + 1) * dP / (4 * P1)
-    assert abs(width - expected) <= RTOL * scale
+    scale = paper_29_half_width(P1, R, E) * (lam / mu + abs(c["t"]) + 1) * dP / (4 * P1)
+    assert_within(hertz_slip_zone_width_first_order(*args), paper_44_slip_zone_width(*args),
+                  atol=RTOL * scale, inputs=c)  # fmt: skip
 
 
 # ---------------------------------------------------------------- Section 3.3: corrective slip
 
 
-@settings(max_examples=200, deadline=None)
-@given(loads, relative_changes, frictions, st.floats(1.01, 6.0), radii, moduli)
-def test_first_order_width_is_eq45_at_eta_zero(P1, eps, mu, r, R, E):
-    dP, lam = eps * P1, r * mu
+def test_first_order_width_is_eq45_at_eta_zero():
+    c = hertz_cycles(r=uniform(1.01, 6.0))
+    P1, dP, lam, mu, R, E = _args(c, "P1 dP lam mu R E")
     a1 = paper_29_half_width(P1, R, E)
     ratio = hertz_slip_zone_width_first_order(P1, dP, lam, 0.0, mu, R, E) / a1
     # (45) is a ratio near 1 formed by hand: compare to a few units in the last place of 1.
-    assert abs((1 - ratio) - paper_45_stick_ratio(P1, dP, lam, mu)) <= 1e-15
+    assert_within(1 - ratio, paper_45_stick_ratio(P1, dP, lam, mu), atol=1e-15, inputs=c)
 
 
 def test_eq45_equals_eq36_and_eq44_at_eta_zero():
