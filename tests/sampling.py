@@ -78,10 +78,12 @@ def draw(samples: int = SAMPLES, seed: int = SEED, **ranges: Range) -> dict[str,
     rng = np.random.default_rng([seed, zlib.crc32(",".join(names).encode())])
     corner_bits = (np.arange(2 ** len(names))[:, None] >> np.arange(len(names))) & 1
     return {
-        name: np.concatenate([
-            np.where(corner_bits[:, j] == 1, ranges[name].high, ranges[name].low),
-            ranges[name].sample(rng, samples),
-        ])  # fmt: skip
+        name: np.concatenate(
+            [
+                np.where(corner_bits[:, j] == 1, ranges[name].high, ranges[name].low),
+                ranges[name].sample(rng, samples),
+            ]
+        )  # fmt: skip
         for j, name in enumerate(names)
     }
 

@@ -91,9 +91,11 @@ def test_dislocation_density_is_eq15_across_the_slip_zone():
     x = b + c["where"] * (c["a2"] - b)
     args = (x, b, c["a1"], c["mu"], c["L_I1"], c["L_I2"], c["L_II1"], c["L_II2"], c["E_star"])
     # (15) is a sum of two square-root terms of either sign: rounding is relative to them.
-    scale = (c["mu"] * (c["L_I1"] + c["L_I2"]) + abs(c["L_II1"]) + abs(c["L_II2"])) / c[
-        "E_star"
-    ] * np.sqrt(c["a2"] - b)
+    scale = (
+        (c["mu"] * (c["L_I1"] + c["L_I2"]) + abs(c["L_II1"]) + abs(c["L_II2"]))
+        / c["E_star"]
+        * np.sqrt(c["a2"] - b)
+    )
     assert_within(gen.dislocation_density(*args), paper.eq15(*args), rtol=RTOL,
                   atol=RTOL * scale, inputs=c)  # fmt: skip
 
@@ -106,7 +108,8 @@ def test_dislocation_density_vanishes_in_the_stick_zone():
 
 def test_edge_multipliers_are_eq19_eq20_eq21():
     c = draw(a=log_uniform(0.1, 10.0), dP_da=log_uniform(0.01, 100), dQ_da=uniform(-100, 100),
-             dsigma_da=uniform(-10, 10), lam=uniform(-3.0, 3.0), eta=uniform(-0.05, 0.05))  # fmt: skip
+             dsigma_da=uniform(-10, 10), lam=uniform(-3.0, 3.0),
+             eta=uniform(-0.05, 0.05))  # fmt: skip
     a = c["a"]
     L_I = gen.normal_edge_multiplier(a, c["dP_da"])
     assert_within(L_I, paper.eq19(a, c["dP_da"]), rtol=RTOL, inputs=c, what="(19)")
@@ -122,8 +125,9 @@ def test_edge_multipliers_are_eq19_eq20_eq21():
 
 
 def test_validity_measures_are_eq24_to_eq27():
-    c = well_conditioned_cycles(dP=log_uniform(1e-3, 10), da_dP=log_uniform(1e-3, 10),
-                                dL_I_dP=uniform(-1, 1))
+    c = well_conditioned_cycles(
+        dP=log_uniform(1e-3, 10), da_dP=log_uniform(1e-3, 10), dL_I_dP=uniform(-1, 1)
+    )
     mu, lam, eta, a1, dP, da_dP = (c[k] for k in ("mu", "lam", "eta", "a1", "dP", "da_dP"))
     assert_within(gen.contact_growth_measure(dP, da_dP, a1), paper.eq24(dP, da_dP, a1),
                   rtol=RTOL, inputs=c, what="(24)")  # fmt: skip
@@ -147,8 +151,11 @@ def test_first_order_stick_ratio_is_eq28():
     args = tuple(c[k] for k in ("mu", "lam", "eta", "a1", "dP", "da_dP"))
     # (28) is 1 - X with X a sum of terms that can cancel (lam/mu - 1 near lam = mu): the
     # transcription's rounding error is set by the size of the terms, not of the result.
-    terms = c["dP"] * c["da_dP"] / (2 * c["a1"]) * (
-        abs(c["lam"] / c["mu"]) + abs(np.pi * c["a1"] / 4 * c["eta"] / c["mu"]) + 1
+    terms = (
+        c["dP"]
+        * c["da_dP"]
+        / (2 * c["a1"])
+        * (abs(c["lam"] / c["mu"]) + abs(np.pi * c["a1"] / 4 * c["eta"] / c["mu"]) + 1)
     )
     assert_within(gen.stick_ratio_first_order(*args), paper.eq28(*args), rtol=RTOL,
                   atol=4e-16 * (1 + terms), inputs=c, what="(28)")  # fmt: skip

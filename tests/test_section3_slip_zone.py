@@ -17,6 +17,7 @@ import math
 import mpmath
 import numpy as np
 import pytest
+
 from asymslip_gen.corrective_slip import stick_boundary_proportional
 from asymslip_gen.corrective_stick import (
     corrective_stick_slip_zone_width,

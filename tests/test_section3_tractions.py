@@ -2,7 +2,9 @@
 
 The oracles are the paper's equations transcribed by hand below: (47)-(48) piecewise in plain
 NumPy, and (49) with the density (15) evaluated by mpmath principal-value quadrature (never the
-closed form).  Hypothesis draws valid inputs; agreement is to 1e-12 of the natural scale of each
+closed form).  Inputs are drawn as arrays (``tests/sampling.py``: every corner of the input box,
+then 50,000 random points) where the reference is NumPy, and by Hypothesis, a few dozen at a
+time, where it is an mpmath quadrature; agreement is to 1e-12 of the natural scale of each
 quantity (stated per test: the generated forms are sums of terms that partly cancel).
 """
 
@@ -23,6 +25,7 @@ from asymslip_gen.tractions import (
     hertz_shear_traction_difference,
     shear_traction_difference,
 )
+from tests.sampling import assert_within, draw, log_uniform, uniform
 
 DPS = 25  # ample for a 1e-12 comparison; principal values get twice this
 EPS = np.finfo(float).eps
@@ -38,7 +41,7 @@ def real(low: float, high: float) -> st.SearchStrategy[float]:
 
 def eq29_half_width(P, R, E_star):
     """a^2 = 4 P R / (pi E*)."""
-    return math.sqrt(4 * P * R / (math.pi * E_star))
+    return np.sqrt(4 * P * R / (np.pi * E_star))
 
 
 def eq33_permanent_stick_load(P1, dP, lam, mu):
@@ -50,9 +53,8 @@ def eq33_permanent_stick_load(P1, dP, lam, mu):
 def eq48_pressure(x, P, R, E_star):
     """p(x, P) = 2P/(pi a^2) sqrt(a^2 - x^2) inside the contact |x| < a, 0 outside."""
     a = eq29_half_width(P, R, E_star)
-    if abs(x) >= a:
-        return 0.0
-    return 2 * P / (math.pi * a**2) * math.sqrt(a**2 - x**2)
+    inside = np.abs(x) < a
+    return np.where(inside, 2 * P / (np.pi * a**2) * np.sqrt(np.where(inside, a**2 - x**2, 0)), 0)
 
 
 def edge_allowance(x, P, R, E_star):
@@ -65,11 +67,8 @@ def edge_allowance(x, P, R, E_star):
         eq29_half_width(P, R, E_star) ** 2 - x**2,
         8 * EPS * (eq29_half_width(P, R, E_star) ** 2 + x**2),
     )
-    return (
-        E_star
-        / (2 * R)
-        * (math.sqrt(max(0.0, radicand + spread)) - math.sqrt(max(0.0, radicand - spread)))
-    )
+    upper, lower = np.maximum(0.0, radicand + spread), np.maximum(0.0, radicand - spread)
+    return E_star / (2 * R) * (np.sqrt(upper) - np.sqrt(lower))
 
 
 def eq47_traction_difference(x, P1, dP, P_K, mu, R, E_star):
@@ -81,11 +80,11 @@ def eq47_traction_difference(x, P1, dP, P_K, mu, R, E_star):
     def p(P):
         return eq48_pressure(x, P, R, E_star)
 
-    if x < b:
-        return mu * (p(P2) + p(P1) - 2 * p(P_K))
-    if x < a1:
-        return mu * (p(P2) + p(P1))
-    return mu * p(P2)
+    return np.select(
+        [x < b, x < a1],
+        [mu * (p(P2) + p(P1) - 2 * p(P_K)), mu * (p(P2) + p(P1))],
+        default=mu * p(P2),
+    )
 
 
 def eq15_density(t, c):
@@ -192,34 +191,29 @@ def position(c: dict[str, float], zone: str, fraction: float) -> float:
 # --- (48) and (47) -------------------------------------------------------------------------------
 
 
-@settings(max_examples=300, deadline=None)
-@given(real(-2.0, 2.0), real(1.0, 1e3), real(0.1, 10.0), real(0.1, 10.0))
-def test_hertz_pressure_is_eq48_and_zero_outside_the_contact(ratio, P, R, E_star):
-    x = ratio * eq29_half_width(P, R, E_star)
+def test_hertz_pressure_is_eq48_and_zero_outside_the_contact():
+    c = draw(ratio=uniform(-2.0, 2.0), P=log_uniform(1.0, 1e3), R=log_uniform(0.1, 10.0),
+             E_star=log_uniform(0.1, 10.0))  # fmt: skip
+    P, R, E_star = c["P"], c["R"], c["E_star"]
+    x = c["ratio"] * eq29_half_width(P, R, E_star)
     expected = eq48_pressure(x, P, R, E_star)
-    allowance = 1e-12 * expected + edge_allowance(x, P, R, E_star)
-    assert abs(hertz_pressure(x, P, R, E_star) - expected) <= allowance
+    assert np.count_nonzero(expected == 0) > 1000  # both outside and inside were drawn
+    assert_within(hertz_pressure(x, P, R, E_star), expected, rtol=1e-12,
+                  atol=edge_allowance(x, P, R, E_star), inputs=c)  # fmt: skip
 
 
 @pytest.mark.parametrize("zone", ["0 < x < b", "b < x < a1", "a1 < x < a2"])
-@settings(max_examples=200, deadline=None)
-@given(
-    fraction=real(0.0, 0.999),
-    P1=real(1.0, 1e3),
-    relative_dP=real(1e-3, 0.2),
-    mu=real(0.05, 1.0),
-    lam_over_mu=real(1.05, 5.0),
-    R=real(0.1, 10.0),
-    E_star=real(0.1, 10.0),
-)
-def test_exact_difference_is_eq47_piecewise(
-    zone, fraction, P1, relative_dP, mu, lam_over_mu, R, E_star
-):
-    dP = relative_dP * P1
-    P_K = eq33_permanent_stick_load(P1, dP, lam_over_mu * mu, mu)
+def test_exact_difference_is_eq47_piecewise(zone):
+    c = draw(fraction=uniform(0.0, 0.999), P1=log_uniform(1.0, 1e3),
+             relative_dP=log_uniform(1e-3, 0.2), mu=log_uniform(0.05, 1.0),
+             lam_over_mu=uniform(1.05, 5.0), R=log_uniform(0.1, 10.0),
+             E_star=log_uniform(0.1, 10.0))  # fmt: skip
+    P1, mu, R, E_star = c["P1"], c["mu"], c["R"], c["E_star"]
+    dP = c["relative_dP"] * P1
+    P_K = eq33_permanent_stick_load(P1, dP, c["lam_over_mu"] * mu, mu)
     ends = [0.0, *(eq29_half_width(P, R, E_star) for P in (P_K, P1, P1 + dP))]
     index = ["0 < x < b", "b < x < a1", "a1 < x < a2"].index(zone)
-    x = ends[index] + (ends[index + 1] - ends[index]) * fraction
+    x = ends[index] + (ends[index + 1] - ends[index]) * c["fraction"]
     expected = eq47_traction_difference(x, P1, dP, P_K, mu, R, E_star)
     # (47) subtracts pressures of size p(0, P2): rounding is relative to that, plus the
     # square-root sensitivity of each pressure at its own edge.
@@ -228,7 +222,7 @@ def test_exact_difference_is_eq47_piecewise(
         weight * edge_allowance(x, P, R, E_star) for weight, P in ((1, P1 + dP), (1, P1), (2, P_K))
     )
     got = hertz_shear_traction_difference(x, P1, dP, P_K, mu, R, E_star)
-    assert abs(got - expected) <= 1e-12 * scale + mu * edges
+    assert_within(got, expected, atol=1e-12 * scale + mu * edges, inputs=c)
 
 
 def test_exact_difference_vanishes_beyond_the_contact_without_warnings():
@@ -274,43 +268,35 @@ def fig5_like_state(b_shift: float) -> dict[str, float]:
     return c
 
 
-@st.composite
-def consistent_state(draw: st.DrawFn) -> dict[str, float]:
-    """A proportional cycle with lam > mu, so that b of (17) lies inside a1, and b = b17."""
-    a1 = draw(real(0.5, 20.0))
-    mu = draw(real(0.05, 1.0))
-    lam = mu * draw(real(1.1, 4.0))
-    L_I1 = draw(real(0.1, 10.0))
-    L_I2 = L_I1 * draw(real(0.95, 1.05))
-    c = {
-        "a1": a1,
-        "a2": a1 * (1 + draw(real(1e-3, 0.1))),
-        "mu": mu,
-        "L_I1": L_I1,
-        "L_I2": L_I2,
-        "L_II1": lam * L_I1,
-        "L_II2": lam * L_I2,
-        "E_star": 1.0,
-    }
-    c["b"] = float(
-        stick_boundary(c["mu"], c["a1"], c["a2"], c["L_I1"], c["L_I2"], c["L_II1"], c["L_II2"])
-    )
+def consistent_states(**more) -> dict[str, np.ndarray]:
+    """A proportional cycle with lam > mu, so that b of (17) lies inside a1, and b = b17.
+
+    Arrays, with the further inputs ``more`` drawn alongside.
+    """
+    c = draw(a1=log_uniform(0.5, 20.0), mu=log_uniform(0.05, 1.0), lam_over_mu=uniform(1.1, 4.0),
+             L_I1=log_uniform(0.1, 10.0), multiplier_ratio=uniform(0.95, 1.05),
+             relative_growth=log_uniform(1e-3, 0.1), **more)  # fmt: skip
+    lam = c["mu"] * c["lam_over_mu"]
+    c["a2"] = c["a1"] * (1 + c["relative_growth"])
+    c["L_I2"] = c["L_I1"] * c["multiplier_ratio"]
+    c["L_II1"], c["L_II2"], c["E_star"] = lam * c["L_I1"], lam * c["L_I2"], 1.0
+    c["b"] = stick_boundary(c["mu"], c["a1"], c["a2"], c["L_I1"], c["L_I2"], c["L_II1"],
+                            c["L_II2"])  # fmt: skip
     return c
 
 
-@settings(max_examples=200, deadline=None)
-@given(c=consistent_state(), fraction=real(0.0, 0.99))
-def test_with_consistent_b_the_slip_zone_carries_mu_p2_plus_mu_p1(c, fraction):
-    x = c["b"] + (c["a2"] - c["b"]) * fraction
+def test_with_consistent_b_the_slip_zone_carries_mu_p2_plus_mu_p1():
+    c = consistent_states(fraction=uniform(0.0, 0.99))
+    x = c["b"] + (c["a2"] - c["b"]) * c["fraction"]
     # (8) and (11): q2 - q1 = mu p2 + mu p1 with the asymptotes (4).
-    expected = c["mu"] * c["L_I2"] * math.sqrt(c["a2"] - x) + c["mu"] * c["L_I1"] * math.sqrt(
-        max(0.0, c["a1"] - x)
+    expected = c["mu"] * c["L_I2"] * np.sqrt(c["a2"] - x) + c["mu"] * c["L_I1"] * np.sqrt(
+        np.maximum(0.0, c["a1"] - x)
     )
     # b17 itself is rounded to ~eps * a2; the edge term K (b - b17)/(2 sqrt(a2 - x)) turns that
-    # rounding into the second allowance.
+    # rounding into the absolute allowance.
     K = c["mu"] * (c["L_I1"] + c["L_I2"]) + c["L_II1"] - c["L_II2"]
-    allowance = 1e-12 * expected + 4e-16 * abs(K) * c["a2"] / math.sqrt(c["a2"] - x)
-    assert abs(closed_form(x, c) - expected) <= allowance
+    assert_within(closed_form(x, c), expected, rtol=1e-12,
+                  atol=4e-16 * abs(K) * c["a2"] / np.sqrt(c["a2"] - x), inputs=c)  # fmt: skip
 
 
 @pytest.mark.parametrize("b_shift", [-1e-2, -3e-5, 2e-3])
@@ -365,7 +351,12 @@ def test_slip_is_the_integral_of_eq15_from_the_stick_boundary(zone, c, fraction)
     assert abs(slip(x, c) - reference) <= 1e-12 * max(abs(reference), scale)
 
 
-@settings(max_examples=100, deadline=None)
-@given(c=edge_state(), fraction=real(0.0, 1.0))
-def test_slip_is_zero_in_the_stick_zone(c, fraction):
-    assert slip(c["b"] * fraction, c) == 0.0
+def test_slip_is_zero_in_the_stick_zone():
+    c = draw(a1=log_uniform(0.5, 20.0), relative_growth=log_uniform(1e-3, 0.1),
+             b_shift=uniform(0.0, 3.0), mu=log_uniform(0.05, 1.0), L_I1=log_uniform(0.1, 10.0),
+             multiplier_ratio=uniform(0.9, 1.1), L_II1=uniform(-5.0, 5.0),
+             L_II2=uniform(-5.0, 5.0), E_star=log_uniform(0.1, 100.0),
+             fraction=uniform(0.0, 1.0))  # fmt: skip
+    da = c["a1"] * c["relative_growth"]  # the states of edge_state(), as arrays
+    c.update(a2=c["a1"] + da, b=c["a1"] - da * c["b_shift"], L_I2=c["L_I1"] * c["multiplier_ratio"])
+    assert_within(slip(c["b"] * c["fraction"], c), 0.0, inputs=c)
