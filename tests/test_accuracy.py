@@ -73,7 +73,10 @@ CONDITIONING_EXCEPTIONS = {
 
 @pytest.fixture(scope="module")
 def results() -> dict[str, harness.QuantityResult]:
-    return {result.quantity.name: result for result in harness.run(SAMPLES, SEED)}
+    # Condition numbers only where an error is over 1e-12: the verdicts below are the same as
+    # with every kappa computed (checked: every quantity, this seed), in a third of the time.
+    runs = harness.run(SAMPLES, SEED, every_condition=False)
+    return {result.quantity.name: result for result in runs}
 
 
 def _checked(results: dict[str, harness.QuantityResult], name: str) -> harness.QuantityResult:
@@ -98,8 +101,8 @@ def test_error_above_1e_12_is_explained_by_conditioning(results, name):
 @pytest.mark.parametrize("name", list(QUANTITIES))
 def test_well_conditioned_samples_meet_1e_12_relative(results, name):
     result = _checked(results, name)
-    # Condition numbers are computed for every sample except quadrature references, where
-    # they are computed only for samples over the target (nan otherwise: those meet it).
+    # Condition numbers are computed only for samples over the target (nan otherwise: those
+    # meet it, so they count here as the well-conditioned samples they may be).
     errors = [
         error
         for error, kappa in zip(result.errors, result.conditions, strict=True)
@@ -125,7 +128,7 @@ def test_slip_zone_widths_keep_1e_12_relative_at_dP_over_P1_of_1e_12():
     # the conditioning tests' business, not this one's.
     widths = harness.run(
         SAMPLES, SEED, select="slip_zone_width", relative_load_change=1e-12,
-        near_cancellation_share=0.0,
+        near_cancellation_share=0.0, every_condition=False,
     )  # fmt: skip
     checked = {
         r.quantity.name: max(
