@@ -1,4 +1,8 @@
-"""The command line: the API's numbers, --json keys, one-line errors with exit status 2."""
+"""The command line: the API's numbers, --json keys, one-line errors with exit status 2.
+
+Commands run in this process through ``main`` (what the console script and ``python -m
+asymslip`` call, with argparse's exits caught); one test runs ``python -m asymslip`` itself.
+"""
 
 from __future__ import annotations
 
@@ -13,6 +17,16 @@ from asymslip.cli import main
 
 FIG5 = ["--law", "hertz", "--R", "1", "--E-star", "1", "--mu", "0.1", "--P1", "100", "--Q1", "0",
         "--P2", "105", "--Q2", "1"]  # fmt: skip
+def run(arguments, capsys) -> subprocess.CompletedProcess:
+    """``asymslip *arguments`` in this process: exit status, stdout and stderr."""
+    try:
+        status = main(list(arguments))
+    except SystemExit as exit:  # argparse: --help, and errors in the options themselves
+        status = exit.code
+    captured = capsys.readouterr()
+    return subprocess.CompletedProcess(arguments, status, captured.out, captured.err)
+
+
 KEYS = ["a1", "a2", "lam", "eta", "L_I1", "L_I2", "L_II1", "L_II2", "b", "slip_zone_width",
         "b_accuracy", "b_paper", "b_first_order", "b_exact", "b_corrective_stick",
         "slip_direction", "validity", "warnings"]  # fmt: skip
@@ -55,25 +69,36 @@ def test_slip_zone_table_names_every_quantity(capsys):
         (["--E-star", "-1"], "--E-star"),
     ],
 )
-def test_bad_input_gives_one_line_naming_the_option_and_exit_status_2(change, option):
+def test_bad_input_gives_one_line_naming_the_option_and_exit_status_2(change, option, capsys):
     arguments = list(FIG5)
     index = arguments.index(change[0])
     arguments[index + 1] = change[1]
-    completed = subprocess.run(
-        [sys.executable, "-m", "asymslip", "slip-zone", *arguments],
-        capture_output=True, text=True,
-    )  # fmt: skip
+    completed = run(["slip-zone", *arguments], capsys)
     assert completed.returncode == 2
     lines = completed.stderr.strip().splitlines()
     assert len(lines) == 1 and option in lines[0], completed.stderr
-    assert "Traceback" not in completed.stderr
+    assert completed.stdout == ""
 
 
-def test_every_command_has_help():
-    for command in ([], ["slip-zone"]):
-        completed = subprocess.run([sys.executable, "-m", "asymslip", *command, "--help"],
-                                   capture_output=True, text=True)  # fmt: skip
-        assert completed.returncode == 0 and "usage:" in completed.stdout
+def test_python_dash_m_asymslip_exits_with_the_status_and_the_one_line_of_main():
+    arguments = list(FIG5)
+    arguments[arguments.index("--mu") + 1] = "-1"
+    completed = subprocess.run([sys.executable, "-m", "asymslip", "slip-zone", *arguments],
+                               capture_output=True, text=True)  # fmt: skip
+    assert completed.returncode == 2
+    assert completed.stderr.startswith("asymslip: error: --mu: must be > 0")
+    assert len(completed.stderr.strip().splitlines()) == 1 and "Traceback" not in completed.stderr
+
+
+@pytest.mark.parametrize(
+    "command",
+    [[], ["slip-zone"], ["traction"], ["figure"], ["derive"], ["sweep"]],
+    ids=lambda command: " ".join(command) or "asymslip",
+)
+def test_every_command_has_help(command, capsys):
+    completed = run([*command, "--help"], capsys)
+    assert completed.returncode == 0 and completed.stdout.startswith("usage: ")
+    assert completed.stderr == ""
 
 
 def test_traction_json_gives_the_paper_fig5_errors_at_the_centre_and_near_the_edge(capsys):
@@ -91,9 +116,8 @@ def test_traction_json_gives_the_paper_fig5_errors_at_the_centre_and_near_the_ed
     assert errors[1] == pytest.approx(0.0041, abs=1e-4)
 
 
-def test_traction_refuses_a_point_at_or_beyond_the_edge():
-    completed = subprocess.run([sys.executable, "-m", "asymslip", "traction", *FIG5, "--x", "12"],
-                               capture_output=True, text=True)  # fmt: skip
+def test_traction_refuses_a_point_at_or_beyond_the_edge(capsys):
+    completed = run(["traction", *FIG5, "--x", "12"], capsys)
     assert completed.returncode == 2
     assert completed.stderr.startswith("asymslip: error: --x: must be < a2")
 
@@ -130,9 +154,8 @@ def test_every_built_in_law_reports_the_same_keys_and_an_exact_stick_boundary(la
         (["--law", "power", "--A", "-1", "--n", "2", "--E-star", "1"], "--A"),
     ],
 )
-def test_missing_or_invalid_law_parameters_name_their_option(law_options, option):
+def test_missing_or_invalid_law_parameters_name_their_option(law_options, option, capsys):
     cycle = ["--mu", "0.1", "--P1", "100", "--Q1", "0", "--P2", "105", "--Q2", "1"]
-    completed = subprocess.run([sys.executable, "-m", "asymslip", "slip-zone", *law_options,
-                                *cycle], capture_output=True, text=True)  # fmt: skip
+    completed = run(["slip-zone", *law_options, *cycle], capsys)
     assert completed.returncode == 2
     assert completed.stderr.startswith(f"asymslip: error: {option}:"), completed.stderr
