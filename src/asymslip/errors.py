@@ -1,4 +1,15 @@
-"""The error raised for invalid physical input, and the checks that raise it."""
+"""The error raised for invalid physical input, and the checks that raise it.
+
+Examples
+--------
+>>> from asymslip.errors import InputError, positive
+>>> positive("mu", [0.3, -0.1])
+Traceback (most recent call last):
+    ...
+asymslip.errors.InputError: mu: must be > 0 (got -0.1; at element 1)
+>>> isinstance(InputError("P1", "must be finite"), ValueError)
+True
+"""
 
 from __future__ import annotations
 

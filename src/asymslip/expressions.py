@@ -7,6 +7,15 @@ it, with no builtins in its namespace.  The size is bounded before anything is p
 
 Used by ``asymslip derive`` (a law P(a)) and by the reference solver (a profile h(x)).  SymPy
 is imported only when a formula is parsed (the ``derive`` extra), never at import time.
+
+Examples
+--------
+>>> from asymslip.expressions import screen_formula
+>>> screen_formula("pi*E_star*a**2/(4*R)", "a", ["R", "E_star"], "P_of_a")  # passes
+>>> screen_formula("a.__class__", "a", [], "P_of_a")
+Traceback (most recent call last):
+    ...
+asymslip.errors.InputError: P_of_a: '.' is not allowed: ...
 """
 
 from __future__ import annotations

@@ -7,6 +7,15 @@ stick boundary b of (35); the curve for the consistent b of (17) is given as wel
 differ by the edge-singular term K (b - b17) / (2 sqrt(a2 - x)) (see ``asymslip_gen.tractions``).
 
 matplotlib (the ``plot`` extra) is imported only when a PNG is drawn.
+
+Examples
+--------
+>>> from asymslip.figures import fig5_curves
+>>> curves = fig5_curves(intervals=4)  # x = 0, a2/4, a2/2, 3 a2/4
+>>> [round(float(value), 6) for value in (curves.a1, curves.b_paper, curves.b_consistent)]
+[11.283792, 11.141852, 11.141884]
+>>> [round(float(q), 4) for q in curves.exact]
+[0.0281, 0.0291, 0.0327, 0.0438]
 """
 
 from __future__ import annotations

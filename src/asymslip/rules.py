@@ -12,6 +12,19 @@ The rules are of three kinds, checked in this order: the inputs themselves (fini
 ordered); the physics of steady partial slip (no gross sliding at either state); and what the
 contact law and the asymptotic solution can answer (a law defined at the loads, a stick boundary
 inside the contact, a stick zone left between the two edges' slip zones).
+
+Examples
+--------
+>>> import numpy as np
+>>> from asymslip.rules import Verdict, check_friction
+>>> verdict = Verdict((3,))
+>>> check_friction(verdict, np.array([0.3, 0.0, -0.2]))
+>>> verdict.messages()
+[None, 'mu: must be > 0 (got 0.0)', 'mu: must be > 0 (got -0.2)']
+>>> verdict.raise_first()
+Traceback (most recent call last):
+    ...
+asymslip.errors.InputError: mu: must be > 0 (got 0.0; at element 1; 2 of 3 elements break a rule)
 """
 
 from __future__ import annotations

@@ -4,6 +4,25 @@ A sweep interrupted by Ctrl-C, a full disk or a killed process must not leave a 
 that looks complete.  Everything the tool writes goes to a temporary file beside the target
 (same folder, hence same file system) and is renamed over it only once it is closed and synced;
 on any error, or an interrupt, the temporary file is removed and the target is untouched.
+
+Examples
+--------
+>>> import pathlib, tempfile
+>>> from asymslip.files.atomic import atomic_write
+>>> with tempfile.TemporaryDirectory() as folder:
+...     path = pathlib.Path(folder) / "result.txt"
+...     try:
+...         with atomic_write(path, mode="w") as handle:
+...             _ = handle.write("half a result")
+...             raise KeyboardInterrupt
+...     except KeyboardInterrupt:
+...         pass
+...     print(sorted(pathlib.Path(folder).iterdir()))
+...     with atomic_write(path, mode="w") as handle:
+...         _ = handle.write("complete")
+...     print(path.read_text())
+[]
+complete
 """
 
 from __future__ import annotations

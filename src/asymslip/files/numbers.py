@@ -21,6 +21,14 @@ string of ``17 - k`` significant digits is a multiple of ``10^k`` in ``[L, H]``;
 end of the interval or a tie lies within ``1e-9`` of a decision (only when ``x`` has an exact
 short decimal expansion, e.g. a power of two whose midpoint is a decimal; about 1 in 10^8 of
 random doubles) the number is formatted by Python's ``repr`` instead, which is exact.
+
+Examples
+--------
+>>> import numpy as np
+>>> from asymslip.files.numbers import compress_rows, format_doubles
+>>> values = np.array([0.1, 1 / 3, 123.5, 1e-7, 1e22, -0.0, np.nan])
+>>> compress_rows(format_doubles(values))
+[b'0.1', b'0.3333333333333333', b'123.5', b'1e-7', b'1e+22', b'-0', b'']
 """
 
 from __future__ import annotations

@@ -16,6 +16,19 @@ The format
 - A number is ``[+-]digits[.digits][e[+-]digits]`` (also ``.5``, ``5.``), ``inf``,
   ``infinity`` or ``nan`` in any case, with optional spaces or tabs around it; an empty field
   is "no value".
+
+Examples
+--------
+>>> import pathlib, tempfile
+>>> from asymslip.files.reader import read_table
+>>> with tempfile.TemporaryDirectory() as folder:
+...     path = pathlib.Path(folder) / "cases.csv"
+...     _ = path.write_text("# loads in N\\nP1,Q1,note\\n100,0,first\\n\\n105,abc,second\\n")
+...     table = read_table(path, required=["P1", "Q1"])
+>>> table.header, table.line.tolist(), table.values["P1"].tolist()
+(['P1', 'Q1', 'note'], [3, 5], [100.0, 105.0])
+>>> table.errors
+{1: "Q1: 'abc' is not a number"}
 """
 
 from __future__ import annotations

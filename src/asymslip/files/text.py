@@ -3,6 +3,15 @@
 :class:`TextColumn` keeps UTF-8 strings as one byte buffer and row offsets (Arrow's layout, so
 pyarrow can use it without a copy); :class:`Categorical` keeps a few distinct strings and one
 integer code per row (10^6 rows of warnings are 10^6 small integers, not 10^6 strings).
+
+Examples
+--------
+>>> from asymslip.files.text import TextColumn
+>>> column = TextColumn.from_strings(["fig5", None, "Fläche"])
+>>> len(column), column[0], column[1], column[2]
+(3, 'fig5', '', 'Fläche')
+>>> column.offsets.tolist()  # bytes: "ä" takes two
+[0, 4, 4, 11]
 """
 
 from __future__ import annotations

@@ -15,6 +15,20 @@ CSV readers (pyarrow, pandas, Python's csv) read a quoted number as the number.
 
 Everything goes through :func:`asymslip.files.atomic.atomic_write`: the file appears complete
 when the ``with`` block ends without an error, and not at all otherwise.
+
+Examples
+--------
+>>> import pathlib, tempfile
+>>> import numpy as np
+>>> from asymslip.files.writer import open_table
+>>> with tempfile.TemporaryDirectory() as folder:
+...     path = pathlib.Path(folder) / "out.csv"
+...     with open_table(path, [("b", "float"), ("note", "text")]) as table:
+...         table.write({"b": np.array([0.1, np.nan]), "note": ["fine", "no value"]})
+...     print(path.read_text(), end="")
+b,note
+0.1,"fine"
+,"no value"
 """
 
 from __future__ import annotations

@@ -8,6 +8,24 @@ A cycle asks its law once for everything it needs (:meth:`ContactLaw.cycle_state
 a2 - a1, L_I and the slopes at both states, shared by both edges and every estimate.  The
 default costs one root solve (a1), a few Newton steps from a tangent guess (a2) and one
 cancellation-free correction of a2 - a1 (see :func:`~asymslip.laws.roots.growth_from`).
+
+Examples
+--------
+A law needs only P(a) and dP/da; a(P), L_I of (19) and the rest follow.  The cylinder of (29)
+with R = E* = 1, for which L_I = sqrt(a/2) by (31):
+
+>>> import numpy as np
+>>> from asymslip.laws.base import ContactLaw
+>>> class Cylinder(ContactLaw):
+...     name = "cylinder"
+...     def load(self, a):
+...         return np.pi * np.asarray(a) ** 2 / 4
+...     def load_slope(self, a):
+...         return np.pi * np.asarray(a) / 2
+>>> law = Cylinder()
+>>> a = law.half_width(100.0)
+>>> round(float(a), 12), round(float(law.normal_multiplier(100.0) / np.sqrt(a / 2)), 12)
+(11.283791670955, 1.0)
 """
 
 from __future__ import annotations

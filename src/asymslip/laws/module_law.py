@@ -55,9 +55,25 @@ class ModuleLaw(ContactLaw):
 
     Examples
     --------
-    >>> law = ModuleLaw.from_file("hertz_user.py", R=1.0, E_star=1.0)  # doctest: +SKIP
-    >>> float(law.half_width(100.0))  # doctest: +SKIP
-    11.283791670955125
+    A module written by hand in the form ``asymslip derive`` writes: the cylinder of (29).
+
+    >>> import pathlib, tempfile
+    >>> source = '''
+    ... import numpy
+    ... __asymslip_law__ = {"name": "cylinder", "params": ["R", "E_star"]}
+    ... def load(a, R, E_star):
+    ...     return numpy.pi * E_star * a**2 / (4 * R)
+    ... def load_slope(a, R, E_star):
+    ...     return numpy.pi * E_star * a / (2 * R)
+    ... def normal_edge_multiplier(a, R, E_star):
+    ...     return E_star / R * numpy.sqrt(a / 2)
+    ... '''
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = pathlib.Path(folder) / "cylinder.py"
+    ...     _ = path.write_text(source)
+    ...     law = ModuleLaw.from_file(path, R=1.0, E_star=1.0)
+    >>> round(float(law.half_width(100.0)), 12)  # sqrt(400/pi)
+    11.283791670955
     """
 
     def __init__(self, module: ModuleType, source: str = "module", **param_values: float) -> None:

@@ -10,6 +10,13 @@ spans more than a factor of two), as in Numerical Recipes' ``rtsafe``: convergen
 guaranteed like bisection's and is quadratic near a simple root.  The final iterate is then
 compared by residual with its neighbours within two units in the last place: the result is the
 double closest to a root of the function as computed.
+
+Examples
+--------
+>>> import numpy as np
+>>> from asymslip.laws.roots import invert_increasing
+>>> invert_increasing(lambda a: a**3, np.array([8.0, 27.0]), lambda a: 3 * a**2)
+array([2., 3.])
 """
 
 from __future__ import annotations

@@ -14,6 +14,21 @@ same double; ``--out RESULTS.parquet`` writes Parquet (pyarrow, the ``parquet`` 
 result is written beside the target and renamed when complete: an interrupted sweep leaves no
 truncated file.  Reading and writing go through :mod:`asymslip.files` (pyarrow when it is
 installed, NumPy otherwise, the same bytes either way).
+
+Examples
+--------
+>>> import pathlib, tempfile
+>>> from asymslip import HertzLaw
+>>> from asymslip.sweep import sweep_file
+>>> with tempfile.TemporaryDirectory() as folder:
+...     cases, out = pathlib.Path(folder) / "cases.csv", pathlib.Path(folder) / "out.csv"
+...     _ = cases.write_text("case,P1,Q1,P2,Q2\\nfig5,100,0,105,1\\nswapped,105,0,100,1\\n")
+...     summary = sweep_file(cases, HertzLaw(R=1, E_star=1), out, mu=0.1, progress=False)
+...     rows = out.read_text().splitlines()
+>>> summary.rows, summary.invalid
+(2, [(3, "P2: must exceed P1: ...")])
+>>> rows[1].split(",")[:7]
+['"fig5"', '"100"', '"0"', '"105"', '"1"', '11.283791670955127', '11.562445770562217']
 """
 
 from __future__ import annotations

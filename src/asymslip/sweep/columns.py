@@ -1,4 +1,13 @@
-"""The columns of a sweep's result: the input as given, every slip-zone quantity, the error."""
+"""The columns of a sweep's result: the input as given, every slip-zone quantity, the error.
+
+Examples
+--------
+>>> from asymslip.sweep.columns import edge_columns, output_columns
+>>> edge_columns()[:4]
+['a1', 'a2', 'lam', 'eta']
+>>> output_columns(["case", "P1", "Q1", "P2", "Q2"], "left")[:7]
+['case', 'P1', 'Q1', 'P2', 'Q2', 'left_a1', 'left_a2']
+"""
 
 from __future__ import annotations
 
