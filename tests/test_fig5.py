@@ -18,10 +18,12 @@ from asymslip import InputError
 from asymslip.figures import CSV_COLUMNS, FIG5_INTERVALS, fig5_csv_text, fig5_curves, write_fig5
 from asymslip_gen.tractions import shear_traction_difference
 from tests.test_section3_tractions import (
+    edge_allowance,
     eq17_stick_boundary,
     eq29_half_width,
     eq33_permanent_stick_load,
     eq47_traction_difference,
+    eq48_pressure,
     eq49_by_quadrature,
 )
 
@@ -47,10 +49,20 @@ def paper_state() -> dict[str, float]:
     }
 
 
-def exact(x: float) -> float:
+def exact(x):
+    """(47) at x (a float or an array)."""
     return eq47_traction_difference(
         x, P1, DP, eq33_permanent_stick_load(P1, DP, LAM, MU), MU, R, E_STAR
     )
+
+
+def exact_allowance(x):
+    """Rounding allowance of (47) as computed: 1e-12 of the pressures it subtracts (size
+    mu p(0, P2)), plus each pressure's square-root sensitivity at its own edge."""
+    P_K = eq33_permanent_stick_load(P1, DP, LAM, MU)
+    edges = sum(weight * edge_allowance(x, P, R, E_STAR)
+                for weight, P in ((1, P1 + DP), (1, P1), (2, P_K)))  # fmt: skip
+    return 1e-12 * 4 * MU * eq48_pressure(0.0, P1 + DP, R, E_STAR) + MU * edges
 
 
 def asymptotic_error(x: float) -> float:
@@ -94,10 +106,8 @@ def test_curves_use_b_from_eq35_and_eq17():
 
 
 def test_curves_exact_is_eq47_on_the_grid():
-    curves = fig5_curves(intervals=50)
-    expected = np.array([exact(float(x)) for x in curves.x])
-    # (47) subtracts pressures of size mu p(0, P2) ~ 0.58; rounding is relative to that.
-    np.testing.assert_allclose(curves.exact, expected, rtol=0, atol=1e-12 * 0.58)
+    curves = fig5_curves()
+    assert np.all(np.abs(curves.exact - exact(curves.x)) <= exact_allowance(curves.x))
 
 
 def test_curves_asymptotic_is_eq49_on_a_coarse_grid():
@@ -124,19 +134,63 @@ def test_write_fig5_writes_the_csv_and_the_png(written):
     assert png_path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
-def test_csv_matches_the_curves_to_twelve_digits(written):
-    csv_path = written[0]
-    lines = csv_path.read_text().splitlines()
+def _read_csv(path):
+    lines = path.read_text().splitlines()
     header = [line for line in lines if not line.startswith("#")][0]
     assert header == ",".join(CSV_COLUMNS)
-    table = np.loadtxt(csv_path, delimiter=",", skiprows=lines.index(header) + 1, ndmin=2)
-    curves = fig5_curves()
-    for column, values in zip(
-        table.T,
-        (curves.x, curves.exact, curves.asymptotic, curves.asymptotic_consistent),
-        strict=True,
-    ):
-        np.testing.assert_allclose(column, values, rtol=1e-12, atol=0)
+    table = np.loadtxt(path, delimiter=",", skiprows=lines.index(header) + 1, ndmin=2)
+    return lines, table
+
+
+def test_csv_lengths_are_eq29_eq35_and_eq17(written):
+    lines, _ = _read_csv(written[0])
+    c = paper_state()
+    noted = dict(item.split(" = ") for item in lines[2].removeprefix("# ").split(", "))
+    expected = {"a1": c["a1"], "a2": c["a2"], "b(35)": c["b"], "b(17)": eq17_stick_boundary(c)}
+    assert noted.keys() == expected.keys()
+    for name, value in expected.items():  # written with 13 significant digits
+        assert float(noted[name]) == pytest.approx(value, rel=1e-12), name
+
+
+def test_csv_holds_the_grid_and_eq47_at_every_row(written):
+    _, table = _read_csv(written[0])
+    x_by_hand = paper_state()["a2"] * np.arange(FIG5_INTERVALS) / FIG5_INTERVALS
+    assert table.shape == (FIG5_INTERVALS, len(CSV_COLUMNS))
+    np.testing.assert_allclose(table[:, 0], x_by_hand, rtol=1e-12, atol=0)
+    # 13 significant digits written: 5e-13 relative on top of (47)'s own rounding.
+    expected = exact(x_by_hand)
+    allowance = exact_allowance(x_by_hand) + 5e-13 * np.abs(expected)
+    assert np.all(np.abs(table[:, 1] - expected) <= allowance)
+
+
+# Rows in the stick zone, just either side of b (b35 and b17 lie between rows 1927 and 1928),
+# in the slip zone inside a1 (row 1951 < a1 < row 1952) and beyond it, and at the last row.
+QUADRATURE_ROWS = [0, 1000, 1927, 1928, 1940, 1960, 1999]
+
+
+@pytest.mark.parametrize(("column", "b"), [(2, "paper"), (3, "consistent")])
+def test_csv_holds_eq49_by_quadrature_across_the_zones(written, column, b):
+    _, table = _read_csv(written[0])
+    c = paper_state()
+    if b == "consistent":
+        c["b"] = eq17_stick_boundary(c)
+    x = c["a2"] * np.array(QUADRATURE_ROWS) / FIG5_INTERVALS
+    expected = np.array([float(eq49_by_quadrature(float(point), c)) for point in x])
+    np.testing.assert_allclose(table[QUADRATURE_ROWS, column], expected, rtol=1e-12, atol=0)
+
+
+def test_csv_consistent_curve_is_mu_p2_plus_mu_p1_in_the_slip_zone(written):
+    # (8) and (11): with b from (17) the slip zone carries q2 - q1 = mu p2 + mu p1, the
+    # pressures being the asymptotes (4) with L_I of (31).
+    _, table = _read_csv(written[0])
+    c = paper_state()
+    x = c["a2"] * np.arange(FIG5_INTERVALS) / FIG5_INTERVALS
+    slip = x > eq17_stick_boundary(c)
+    expected = MU * c["L_I2"] * np.sqrt(c["a2"] - x[slip]) + MU * c["L_I1"] * np.sqrt(
+        np.maximum(0.0, c["a1"] - x[slip])
+    )
+    assert slip.sum() == 72  # rows 1928-1999
+    np.testing.assert_allclose(table[slip, 3], expected, rtol=1e-12, atol=0)
 
 
 def test_csv_text_is_deterministic():
