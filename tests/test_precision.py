@@ -3,11 +3,20 @@
 from __future__ import annotations
 
 import mpmath
+import pytest
 
 import asymslip_gen as gen
 from asymslip import HertzLaw, LoadCycle, slip_zone
 
-mpmath.mp.dps = 50
+DIGITS = 50
+
+
+@pytest.fixture(autouse=True)
+def _digits():
+    """50-digit references for this module's tests only (a module-level ``mp.dps = ...``
+    would set the precision of every test collected after it)."""
+    with mpmath.workdps(DIGITS):
+        yield
 
 
 def _width_by_mpmath(mu, lam, eta, a1, da, L_I1, L_I2):

@@ -9,7 +9,15 @@ import pytest
 import asymslip_gen as gen
 from tests.transcription import section2 as paper
 
-mpmath.mp.dps = 30
+DIGITS = 30
+
+
+@pytest.fixture(autouse=True)
+def _digits():
+    """30-digit quadratures for this module's tests only (a module-level ``mp.dps = ...``
+    would set the precision of every test collected after it)."""
+    with mpmath.workdps(DIGITS):
+        yield
 
 
 def principal_value(f, lower, upper, pole):
