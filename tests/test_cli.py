@@ -10,10 +10,20 @@ import json
 import subprocess
 import sys
 
+import mpmath
 import pytest
 
 from asymslip import HertzLaw, LoadCycle, slip_zone
 from asymslip.cli import main
+from tests.accuracy.references import (
+    flat_half_width_mp,
+    flat_load_slope_mp,
+    normal_multiplier_19,
+    power_half_width_mp,
+    power_shape_factor,
+    stick_boundary_22,
+)
+from tests.test_fig5 import asymptotic_error, paper_state
 
 FIG5 = ["--law", "hertz", "--R", "1", "--E-star", "1", "--mu", "0.1", "--P1", "100", "--Q1", "0",
         "--P2", "105", "--Q2", "1"]  # fmt: skip
@@ -102,18 +112,21 @@ def test_every_command_has_help(command, capsys):
 
 
 def test_traction_json_gives_the_paper_fig5_errors_at_the_centre_and_near_the_edge(capsys):
-    a2 = float(HertzLaw(1, 1).half_width(105.0))
-    assert main(["traction", *FIG5, "--x", "0", str(0.9 * a2), "--b", "exact", "--json"]) == 0
+    a2 = float(paper_state()["a2"])  # (29) by hand
+    assert main(["traction", *FIG5, "--x", "0", repr(0.9 * a2), "--b", "exact", "--json"]) == 0
     printed = json.loads(capsys.readouterr().out)
     assert list(printed) == ["edge", "x", "q_diff", "q_diff_exact", "near_edge", "near_edge_from",
                              "b", "stick_boundary", "warnings"]  # fmt: skip
-    # The centre is far from the edge, where the edge asymptote is not meant to hold; 0.9 a2
-    # is within a1/10 of the edge.
-    assert printed["near_edge"] == [False, True]
-    errors = [abs(q - e) for q, e in zip(printed["q_diff"], printed["q_diff_exact"], strict=True)]
-    # Section 3.4: "about 0.01 at the centre" and "about 0.004" at x = 0.9 a2.
-    assert errors[0] == pytest.approx(0.0114, abs=1e-4)
-    assert errors[1] == pytest.approx(0.0041, abs=1e-4)
+    # Near the edge means x >= 0.9 a2 (the paper's "10 % of the distance in from the contact
+    # edge"): not the centre, where the edge asymptote is not meant to hold.  The point 0.9 a2
+    # lies on that limit itself (to the last bit of a2): its flag must follow the limit printed.
+    assert printed["near_edge_from"] == pytest.approx(0.9 * a2, rel=1e-15)
+    assert printed["near_edge"] == [False, printed["x"][1] >= printed["near_edge_from"]]
+    errors = [q - e for q, e in zip(printed["q_diff"], printed["q_diff_exact"], strict=True)]
+    # Section 3.4: "about 0.01 at the centre" and "about 0.004" at x = 0.9 a2; by (47) by hand
+    # and (49) by quadrature, 0.0113733 and 0.0040988 (tests/test_fig5.py).
+    assert errors[0] == pytest.approx(asymptotic_error(0.0), rel=1e-9)
+    assert errors[1] == pytest.approx(asymptotic_error(0.9 * a2), rel=1e-9)
 
 
 def test_traction_refuses_a_point_at_or_beyond_the_edge(capsys):
@@ -142,8 +155,32 @@ def test_every_built_in_law_reports_the_same_keys_and_an_exact_stick_boundary(la
     assert main(["slip-zone", *law_options, *cycle, "--json"]) == 0
     printed = json.loads(capsys.readouterr().out)
     assert list(printed) == [*KEYS, "left"]
-    # (22) and the exact a(P_K) agree to first order in dP/P1 = 0.05 for every law.
-    assert abs(printed["b"] - printed["b_exact"]) / printed["a1"] < 0.05**2
+    # The law's a(P) and dP/da by mpmath from the published or quadrature law, (19), (22) and
+    # a(P_K) with P_K = 97.5 from (33): lam = 0.2, mu = 0.1, dP = 5.
+    options = dict(zip(law_options[::2], law_options[1::2], strict=True))
+    with mpmath.workdps(30):
+        half_width, load_slope = _law_by_hand(options)
+        a1, a2, a_K = (half_width(P) for P in (100, 105, 97.5))
+        L_I1, L_I2 = (normal_multiplier_19(a, load_slope(a)) for a in (a1, a2))
+        b = stick_boundary_22(mpmath.mpf("0.1"), mpmath.mpf("0.2"), 0, a1, a2, L_I1, L_I2)
+    for key, expected in (("a1", a1), ("a2", a2), ("b_exact", a_K), ("b", b)):
+        assert printed[key] == pytest.approx(float(expected), rel=1e-12), key
+    # (22) and a(P_K) agree to first order in dP/P1 = 0.05: they differ at eps^2.
+    assert 0 < abs(printed["b"] - printed["b_exact"]) / printed["a1"] < 0.05**2
+
+
+def _law_by_hand(options):
+    """a(P) and dP/da of a built-in law from its defining relation, in mpmath."""
+    E_star = mpmath.mpf(options["--E-star"])
+    if options["--law"] == "flat-rounded":  # the published law, P(a) in closed form
+        c, R = mpmath.mpf(options["--flat-half-width"]), mpmath.mpf(options["--R"])
+        return (lambda P: flat_half_width_mp(P, c, R, E_star),
+                lambda a: flat_load_slope_mp(a, c, R, E_star))  # fmt: skip
+    # P = K E* A a^n, K from quadrature of the plane-contact relation
+    A, n = mpmath.mpf(options["--A"]), mpmath.mpf(options["--n"])
+    K = power_shape_factor(n)
+    return (lambda P: power_half_width_mp(P, n, A, E_star, K),
+            lambda a: n * K * E_star * A * a ** (n - 1))  # fmt: skip
 
 
 @pytest.mark.parametrize(
