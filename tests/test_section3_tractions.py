@@ -233,8 +233,12 @@ def test_exact_difference_vanishes_beyond_the_contact_without_warnings():
 # --- (49): closed form against quadrature --------------------------------------------------------
 
 
+# Slow (CI's `pytest -m slow`): an mpmath principal-value quadrature per example, about 0.05 s
+# each.  The default run checks (49) against quadrature at fixed points below, in
+# tests/test_fig5.py and in the accuracy harness.
+@pytest.mark.slow
 @pytest.mark.parametrize("zone", ["stick", "slip inside a1", "slip outside a1"])
-@settings(max_examples=12, deadline=None)
+@settings(max_examples=50, deadline=None)
 @given(c=edge_state(), fraction=real(0.001, 0.99))
 def test_closed_form_eq49_matches_quadrature_of_the_dislocation_integral(zone, c, fraction):
     x = position(c, zone, fraction)
@@ -333,8 +337,11 @@ def slip(x, c):
     )
 
 
+# Slow (CI's `pytest -m slow`): an mpmath quadrature per example.  The default run checks the
+# slip against quadrature in the accuracy harness (slip_on_loading).
+@pytest.mark.slow
 @pytest.mark.parametrize("zone", ["slip inside a1", "slip outside a1"])
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=60, deadline=None)
 @given(c=edge_state(), fraction=real(0.0, 1.0))
 def test_slip_is_the_integral_of_eq15_from_the_stick_boundary(zone, c, fraction):
     x = position(c, zone, fraction)
