@@ -141,7 +141,7 @@ def test_validity_measures_are_eq24_to_eq27():
                   what="(26)")  # fmt: skip
     # |1 - lam/mu - pi eta a1/(4 mu)| may cancel: rounding is relative to its terms.
     assert_within(gen.slip_zone_growth_measure(mu, lam, eta, a1, dP, da_dP),
-                  paper.eq27(mu, lam, eta, a1, dP, da_dP), rtol=1e-11,
+                  paper.eq27(mu, lam, eta, a1, dP, da_dP), rtol=RTOL,
                   atol=1e-13 * dP * da_dP / a1 * (1 + abs(lam) / mu), inputs=c,
                   what="(27)")  # fmt: skip
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import csv
 import io
+import re
 
 import numpy as np
 import pytest
@@ -71,7 +72,7 @@ def test_bad_rows_are_reported_by_line_number_and_the_others_are_kept(swept):
     assert [row["case"] for row in rows][:3] == ["fig5", "swapped", "no-slip"]
     by_case = {row["case"]: row for row in rows}
     for line, message in summary.invalid:
-        assert pytest.importorskip("re").match(BAD_LINES[line], message), message
+        assert re.match(BAD_LINES[line], message), message
     assert by_case["swapped"]["b"] == "" and by_case["swapped"]["error"].startswith("P2:")
     good = [row for row in rows if not row["error"]]
     assert {row["case"] for row in good} == {"fig5", "no-slip", "big-step", "tension",
