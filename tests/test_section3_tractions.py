@@ -26,14 +26,10 @@ from asymslip_gen.tractions import (
     shear_traction_difference,
 )
 from tests.sampling import assert_within, draw, log_uniform, uniform
+from tests.strategies import real
 
 DPS = 25  # ample for a 1e-12 comparison; principal values get twice this
 EPS = np.finfo(float).eps
-finite = {"allow_nan": False, "allow_infinity": False, "allow_subnormal": False}
-
-
-def real(low: float, high: float) -> st.SearchStrategy[float]:
-    return st.floats(low, high, **finite)
 
 
 # --- the paper, transcribed by hand --------------------------------------------------------------
