@@ -12,7 +12,7 @@ Examples
 --------
 >>> from asymslip.expressions import screen_formula
 >>> screen_formula("pi*E_star*a**2/(4*R)", "a", ["R", "E_star"], "P_of_a")  # passes
->>> screen_formula("a.__class__", "a", [], "P_of_a")
+>>> screen_formula("a.__class__", "a", [], "P_of_a")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
     ...
 asymslip.errors.InputError: P_of_a: '.' is not allowed: ...

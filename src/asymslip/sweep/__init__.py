@@ -25,7 +25,7 @@ Examples
 ...     _ = cases.write_text("case,P1,Q1,P2,Q2\\nfig5,100,0,105,1\\nswapped,105,0,100,1\\n")
 ...     summary = sweep_file(cases, HertzLaw(R=1, E_star=1), out, mu=0.1, progress=False)
 ...     rows = out.read_text().splitlines()
->>> summary.rows, summary.invalid
+>>> summary.rows, summary.invalid  # doctest: +ELLIPSIS
 (2, [(3, "P2: must exceed P1: ...")])
 >>> rows[1].split(",")[:7]
 ['"fig5"', '"100"', '"0"', '"105"', '"1"', '11.283791670955127', '11.562445770562217']
