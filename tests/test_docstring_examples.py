@@ -38,6 +38,12 @@ EXEMPT = {
     "asymslip.files.arrow": "imports the optional pyarrow on demand: nothing to compute",
     "asymslip.files.progress": "draws on a terminal, with rates that depend on the clock",
     "asymslip.sweep.evaluate": "one chunk of sweep_file, whose example (asymslip.sweep) runs it",
+    "asymslip.calibration": "re-exports what its modules define; their docstrings carry examples",
+    **{
+        f"asymslip.solver.{name}": "a numerical step inside solve(), not called by users; the "
+        "package's example (asymslip.solver) runs it end to end"
+        for name in ("boundaries", "grid", "normal", "qp", "tangential", "toeplitz")
+    },
 }
 
 

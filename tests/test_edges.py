@@ -45,7 +45,7 @@ def test_the_exact_stick_zone_is_a_of_P_K_from_the_enclosing_wedge(lam):
     # here 1.4e-9 a1, up to O(eps^4).  Each edge slips its own way: r is the same for both.
     r, eps = abs(lam) / MU, DP / P1
     third_order = r * (r - 1) * (r + 1) / 256 * eps**3
-    assert (result.b - result.b_exact) / result.a1 == pytest.approx(third_order, rel=0.02)
+    assert (result.b_paper - result.b_exact) / result.a1 == pytest.approx(third_order, rel=0.02)
 
 
 @pytest.mark.parametrize("lam", [0.0, 0.29, -0.29])

@@ -285,7 +285,8 @@ def test_cli_sweep_and_derive_through_the_registered_commands(tmp_path, capsys):
     rows = read(tmp_path / "out.csv")
     (a1, L_I1, _), (a2, L_I2, _) = _hertz_transcribed(100.0), _hertz_transcribed(105.0)
     assert rows[0]["case"] == "fig5"  # (22) with (29), (31), lam = 0.2, mu = 0.1 from the row
-    assert float(rows[0]["b"]) == pytest.approx(eq22(0.1, 0.2, 0.0, a1, a2, L_I1, L_I2), rel=1e-13)
+    expected = eq22(0.1, 0.2, 0.0, a1, a2, L_I1, L_I2)
+    assert float(rows[0]["b_paper"]) == pytest.approx(expected, rel=1e-13)
 
 
 # --- the generated kernels work on chunked dask arrays unchanged --------------------------

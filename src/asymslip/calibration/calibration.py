@@ -15,6 +15,23 @@ When only one edge was exported, the contact is taken as symmetric about x = 0 (
 0 and the width is twice the edge's distance from it); the calibration records the assumption.
 
 Runtime needs NumPy only.
+
+Examples
+--------
+Hertzian pressures (48) (R = E* = 1) at three loads; the fitted edges are a(P) of (29):
+
+>>> import numpy as np
+>>> from asymslip.calibration import Traces, calibrate
+>>> x = np.arange(-120, 121) * 0.1
+>>> loads = [90.0, 100.0, 110.0]
+>>> # (48) with a^2 = 4P/pi: 2P/(pi a^2) = 1/2
+>>> pressures = [np.sqrt(np.maximum(4 * P / np.pi - x**2, 0)) / 2 for P in loads]
+>>> calibration = calibrate(Traces.from_arrays(np.repeat(loads, x.size), np.tile(x, 3),
+...                                            np.concatenate(pressures)))
+>>> [round(float(a), 3) for a in calibration.columns("right")["a"]]
+[10.705, 11.284, 11.835]
+>>> [round(float(np.sqrt(4 * P / np.pi)), 3) for P in loads]
+[10.705, 11.284, 11.835]
 """
 
 from __future__ import annotations

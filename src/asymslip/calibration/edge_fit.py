@@ -60,6 +60,22 @@ contact width of the edge (at least 8: 4 to fit the three parameters with one de
 freedom to spare, and a window twice as wide to estimate the truncation error).
 
 Runtime needs NumPy only.
+
+Examples
+--------
+The Hertzian pressure (48) at P = 100, R = E* = 1 on nodes 0.1 apart: by (29) and (31) the
+edge is at a = sqrt(400/pi) = 11.2838 with L_I = sqrt(a/2) = 2.3753.
+
+>>> import numpy as np
+>>> from asymslip.calibration.edge_fit import fit_edge
+>>> a = np.sqrt(400 / np.pi)
+>>> x = np.arange(-120, 121) * 0.1
+>>> p = 200 / (np.pi * a**2) * np.sqrt(np.maximum(a**2 - x**2, 0))
+>>> fit = fit_edge(x, p, "right", P=100.0)
+>>> round(fit.x_edge, 3), round(fit.L_I, 3)
+(11.284, 2.375)
+>>> bool(abs(fit.x_edge - a) <= fit.a_error and abs(fit.L_I - np.sqrt(a / 2)) <= fit.L_I_error)
+True
 """
 
 from __future__ import annotations

@@ -7,6 +7,25 @@ with its propagated error; :func:`format_calibration` the text table.  Both buil
 calibrated law, so they also say when it cannot be built (an edge that does not advance).
 
 Runtime needs NumPy only.
+
+Examples
+--------
+Consistent data give a balance of 1 (AS6) and, without a moment, a moment factor of 1 (AS4),
+within their errors: Hertzian pressures (48) (R = E* = 1) at three loads.
+
+>>> import numpy as np
+>>> from asymslip.calibration import Traces, calibrate
+>>> from asymslip.calibration.report import checks
+>>> x = np.arange(-120, 121) * 0.1
+>>> loads = [90.0, 100.0, 110.0]
+>>> pressures = [np.sqrt(np.maximum(4 * P / np.pi - x**2, 0)) / 2 for P in loads]  # (48)
+>>> found = checks(calibrate(Traces.from_arrays(np.repeat(loads, x.size), np.tile(x, 3),
+...                                             np.concatenate(pressures))))
+>>> [bool(abs(b - 1) <= e) for b, e in zip(found["balance"], found["balance_error"])]
+[True, True, True]
+>>> [bool(abs(f - 1) <= e) for f, e in zip(found["right"]["moment_factor"],
+...                                        found["right"]["moment_factor_error"])]
+[True, True, True]
 """
 
 from __future__ import annotations

@@ -16,6 +16,16 @@ each load's trace spans the whole contact and gives both edges.  Blank lines and
 with ``#`` are skipped.
 
 Runtime needs NumPy only.
+
+Examples
+--------
+>>> import numpy as np
+>>> from asymslip.calibration.traces import Traces
+>>> x = np.linspace(-2, 2, 9)
+>>> p = np.concatenate([np.maximum(1 - x**2, 0), np.maximum(2 - x**2, 0)])
+>>> traces = Traces.from_arrays(P=np.repeat([1.0, 2.0], 9), x=np.tile(x, 2), p=p)
+>>> [(trace.P, trace.x.size, int(trace.rows[0])) for trace in traces.traces]
+[(1.0, 9, 0), (2.0, 9, 9)]
 """
 
 from __future__ import annotations

@@ -16,6 +16,18 @@ so an interrupted run leaves no truncated file):
     the three, one panel each (matplotlib, the ``plot`` extra, imported only here).
 
 Values are written with 17 significant digits (they read back exactly).
+
+Examples
+--------
+>>> from asymslip import HertzLaw, LoadCycle
+>>> from asymslip.solver import solve
+>>> from asymslip.solver.outputs import csv_texts
+>>> texts = csv_texts(solve(HertzLaw(R=1, E_star=1), LoadCycle(100, 0, 105, 1), mu=0.1,
+...                         elements=500))
+>>> sorted(texts)
+['energy.csv', 'slip.csv', 'tractions.csv']
+>>> [line for line in texts["tractions.csv"].splitlines() if not line.startswith("#")][0]
+'x,p_1,q_1,state_1,p_2,q_2,state_2,q_diff'
 """
 
 from __future__ import annotations

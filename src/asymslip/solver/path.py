@@ -12,6 +12,16 @@ point is state 1.
 
 Units: P, Q per unit length [force/length], sigma [force/length^2], M per unit length [force];
 M is the moment of the pressure about the profile's origin, M = int x p(x) dx.
+
+Examples
+--------
+>>> from asymslip import LoadCycle
+>>> from asymslip.solver.path import LoadPath
+>>> LoadPath.from_cycle(LoadCycle(100, 0, 105, 1)).points.tolist()  # (P, Q, sigma, M) per point
+[[100.0, 0.0, 0.0, 0.0], [105.0, 1.0, 0.0, 0.0]]
+>>> path = LoadPath([[100, -5], [120, 0], [100, 5]])  # a triangle in (P, Q); sigma = M = 0
+>>> path.labels, path.points[:, 3].tolist()
+(('1', '2', '3'), [0.0, 0.0, 0.0])
 """
 
 from __future__ import annotations

@@ -19,6 +19,17 @@ solver measures stick boundaries (right edge: b = x; left edge: b = -x), and the
 taken about it.  A profile need not be symmetric.  The solver supports profiles whose contact
 is one interval at every load of the path (convex profiles, and others that happen to touch
 in one piece); it refuses a contact that splits.
+
+Examples
+--------
+>>> import numpy as np
+>>> from asymslip import HertzLaw
+>>> from asymslip.solver.profiles import LawProfile, TableProfile
+>>> LawProfile(HertzLaw(R=2, E_star=1)).heights(np.array([0.0, 1.0, -2.0]))  # x^2/(2R)
+array([0.  , 0.25, 1.  ])
+>>> table = TableProfile([-2.0, -1.0, 0.0, 1.0, 2.0], [1.0, 0.25, 0.0, 0.25, 1.0])
+>>> table.heights(np.array([0.0, 1.0])).tolist(), table.defined_span()
+([0.0, 0.25], (-2.0, 2.0))
 """
 
 from __future__ import annotations

@@ -13,6 +13,15 @@ a<k> and stick boundary b<k>) the three values v1, v2, v4 are compared:
 * otherwise (no order observed: sub-element fits converge erratically, as the element ends
   move relative to the boundary) the value is the finest run's and the error the spread,
   max(|v1 - v4|, |v2 - v4|).
+
+Examples
+--------
+Values on N, 2N, 4N elements whose differences halve (first order) extrapolate to their limit:
+
+>>> from asymslip.solver.refine import extrapolate
+>>> result = extrapolate((1.25, 1.125, 1.0625))
+>>> result.value, result.order, result.method
+(1.0, 1.0, 'richardson')
 """
 
 from __future__ import annotations

@@ -13,6 +13,18 @@ direction of the element just outside the permanent stick zone at the point of l
 (state 2 of the paper's cycle, i.e. on loading); 0 when that element does not slip there,
 as when only the annulus a1 < |x| < a2 slips (|lambda| < mu, eta = 0).  Each state also
 records the direction of the slip zone next to that state's own stick zone.
+
+Examples
+--------
+The paper's Fig. 5 cycle, whose exact stick boundary is a(P_K) = sqrt(390/pi) = 11.1419 by
+(29) and (33):
+
+>>> from asymslip import HertzLaw, LoadCycle
+>>> from asymslip.solver import solve
+>>> result = solve(HertzLaw(R=1, E_star=1), LoadCycle(100, 0, 105, 1), mu=0.1, elements=500)
+>>> edge = result.right
+>>> bool(abs(edge.b - 11.1419) <= edge.b_error), edge.slip_direction, edge.edge
+(True, 1, 'right')
 """
 
 from __future__ import annotations
