@@ -23,7 +23,7 @@ Examples
 >>> from asymslip.solver import solve
 >>> from asymslip.solver.outputs import csv_texts
 >>> texts = csv_texts(solve(HertzLaw(R=1, E_star=1), LoadCycle(100, 0, 105, 1), mu=0.1,
-...                         elements=500))
+...                         elements=200))
 >>> sorted(texts)
 ['energy.csv', 'slip.csv', 'tractions.csv']
 >>> [line for line in texts["tractions.csv"].splitlines() if not line.startswith("#")][0]

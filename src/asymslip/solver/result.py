@@ -21,7 +21,7 @@ The paper's Fig. 5 cycle, whose exact stick boundary is a(P_K) = sqrt(390/pi) = 
 
 >>> from asymslip import HertzLaw, LoadCycle
 >>> from asymslip.solver import solve
->>> result = solve(HertzLaw(R=1, E_star=1), LoadCycle(100, 0, 105, 1), mu=0.1, elements=500)
+>>> result = solve(HertzLaw(R=1, E_star=1), LoadCycle(100, 0, 105, 1), mu=0.1, elements=200)
 >>> edge = result.right
 >>> bool(abs(edge.b - 11.1419) <= edge.b_error), edge.slip_direction, edge.edge
 (True, 1, 'right')
