@@ -224,4 +224,4 @@ def slip_zone_width_first_order(
     ndarray or float64
         a1 - b, same units as a1.
     """
-    return (1 / 8) * dP * da_dP * (numpy.pi * a1 * eta + 4 * lam - 4 * mu) / mu
+    return dP * da_dP * ((1 / 8) * numpy.pi * a1 * eta + (1 / 2) * lam - 1 / 2 * mu) / mu

@@ -58,12 +58,10 @@ double asymslip_stick_boundary_proportional(
     double L_I1,
     double L_I2)
 {
-    const double tmp0 = 4*lam;
-    const double tmp1 = 4*mu;
-    const double tmp2 = asymslip_pi*eta;
-    const double tmp3 = (1.0/4.0)*L_I1*(a1*tmp2 + tmp0 + tmp1);
-    const double tmp4 = (1.0/4.0)*L_I2*(a2*tmp2 + tmp0 - tmp1);
-    return (a1*tmp3 - a2*tmp4)/(tmp3 - tmp4);
+    const double tmp0 = (1.0/4.0)*asymslip_pi*eta;
+    const double tmp1 = L_I1*(a1*tmp0 + lam + mu);
+    const double tmp2 = L_I2*(a2*tmp0 + lam - mu);
+    return (a1*tmp1 - a2*tmp2)/(tmp1 - tmp2);
 }
 
 /* Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) on a proportional path. See asymslip_gen.h. */
@@ -76,10 +74,8 @@ double asymslip_stick_boundary_denominator(
     double L_I1,
     double L_I2)
 {
-    const double tmp0 = 4*lam;
-    const double tmp1 = 4*mu;
-    const double tmp2 = asymslip_pi*eta;
-    return (1.0/4.0)*L_I1*(a1*tmp2 + tmp0 + tmp1) - 1.0/4.0*L_I2*(a2*tmp2 + tmp0 - tmp1);
+    const double tmp0 = (1.0/4.0)*asymslip_pi*eta;
+    return L_I1*(a1*tmp0 + lam + mu) - L_I2*(a2*tmp0 + lam - mu);
 }
 
 /* Width a1 - b of (17) from the four edge multipliers, cancellation-free. See asymslip_gen.h. */
@@ -116,11 +112,10 @@ double asymslip_slip_zone_width(
     double L_I1,
     double L_I2)
 {
-    const double tmp0 = 4*mu;
-    const double tmp1 = asymslip_pi*eta;
-    const double tmp2 = a1*tmp1 + 4*lam;
-    const double tmp3 = (1.0/4.0)*L_I2*(da*tmp1 - tmp0 + tmp2);
-    return da*tmp3/((1.0/4.0)*L_I1*(tmp0 + tmp2) - tmp3);
+    const double tmp0 = (1.0/4.0)*asymslip_pi*eta;
+    const double tmp1 = a1*tmp0 + lam;
+    const double tmp2 = L_I2*(da*tmp0 - mu + tmp1);
+    return da*tmp2/(L_I1*(mu + tmp1) - tmp2);
 }
 
 /* Stick-slip boundary b of the steady-state cycle from the edge multipliers. See asymslip_gen.h. */
@@ -922,5 +917,5 @@ double asymslip_slip_zone_width_first_order(
     double dP,
     double da_dP)
 {
-    return (1.0/8.0)*dP*da_dP*(asymslip_pi*a1*eta + 4*lam - 4*mu)/mu;
+    return dP*da_dP*((1.0/8.0)*asymslip_pi*a1*eta + (1.0/2.0)*lam - 1.0/2.0*mu)/mu;
 }

@@ -364,13 +364,11 @@ contains
             result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, eta, a1, a2, L_I1, L_I2
         real(c_double) :: asymslip_result
-        real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4
-        tmp0 = 4*lam
-        tmp1 = 4*mu
-        tmp2 = asymslip_pi*eta
-        tmp3 = (1.0d0/4.0d0)*L_I1*(a1*tmp2 + tmp0 + tmp1)
-        tmp4 = (1.0d0/4.0d0)*L_I2*(a2*tmp2 + tmp0 - tmp1)
-        asymslip_result = (a1*tmp3 - a2*tmp4)/(tmp3 - tmp4)
+        real(c_double) :: tmp0, tmp1, tmp2
+        tmp0 = (1.0d0/4.0d0)*asymslip_pi*eta
+        tmp1 = L_I1*(a1*tmp0 + lam + mu)
+        tmp2 = L_I2*(a2*tmp0 + lam - mu)
+        asymslip_result = (a1*tmp1 - a2*tmp2)/(tmp1 - tmp2)
     end function asymslip_stick_boundary_proportional
 
     !> C binding of asymslip_stick_boundary_proportional (scalar arguments by value).
@@ -405,12 +403,9 @@ contains
             result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, eta, a1, a2, L_I1, L_I2
         real(c_double) :: asymslip_result
-        real(c_double) :: tmp0, tmp1, tmp2
-        tmp0 = 4*lam
-        tmp1 = 4*mu
-        tmp2 = asymslip_pi*eta
-        asymslip_result = (1.0d0/4.0d0)*L_I1*(a1*tmp2 + tmp0 + tmp1) - 1.0d0/ &
-              4.0d0*L_I2*(a2*tmp2 + tmp0 - tmp1)
+        real(c_double) :: tmp0
+        tmp0 = (1.0d0/4.0d0)*asymslip_pi*eta
+        asymslip_result = L_I1*(a1*tmp0 + lam + mu) - L_I2*(a2*tmp0 + lam - mu)
     end function asymslip_stick_boundary_denominator
 
     !> C binding of asymslip_stick_boundary_denominator (scalar arguments by value).
@@ -524,12 +519,11 @@ contains
             result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, eta, a1, da, L_I1, L_I2
         real(c_double) :: asymslip_result
-        real(c_double) :: tmp0, tmp1, tmp2, tmp3
-        tmp0 = 4*mu
-        tmp1 = asymslip_pi*eta
-        tmp2 = a1*tmp1 + 4*lam
-        tmp3 = (1.0d0/4.0d0)*L_I2*(da*tmp1 - tmp0 + tmp2)
-        asymslip_result = da*tmp3/((1.0d0/4.0d0)*L_I1*(tmp0 + tmp2) - tmp3)
+        real(c_double) :: tmp0, tmp1, tmp2
+        tmp0 = (1.0d0/4.0d0)*asymslip_pi*eta
+        tmp1 = a1*tmp0 + lam
+        tmp2 = L_I2*(da*tmp0 - mu + tmp1)
+        asymslip_result = da*tmp2/(L_I1*(mu + tmp1) - tmp2)
     end function asymslip_slip_zone_width
 
     !> C binding of asymslip_slip_zone_width (scalar arguments by value).
@@ -3142,8 +3136,8 @@ contains
             result(asymslip_result)
         real(c_double), intent(in) :: mu, lam, eta, a1, dP, da_dP
         real(c_double) :: asymslip_result
-        asymslip_result = (1.0d0/8.0d0)*dP*da_dP*(asymslip_pi*a1*eta + 4*lam - 4 &
-              *mu)/mu
+        asymslip_result = dP*da_dP*((1.0d0/8.0d0)*asymslip_pi*a1*eta + (1.0d0/ &
+              2.0d0)*lam - 1.0d0/2.0d0*mu)/mu
     end function asymslip_slip_zone_width_first_order
 
     !> C binding of asymslip_slip_zone_width_first_order (scalar arguments by value).
