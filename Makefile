@@ -57,8 +57,8 @@ toolchains: ## install gfortran and Octave where missing (Debian, as root; quiet
 test-languages: $(STAMP) toolchains ## compile the C and Fortran, run the MATLAB files, compare with NumPy
 	$(PY) -m pytest tests/emit
 
-bench: $(STAMP) ## benchmark ratios measured in one process (needs the bench extra)
-	$(PY) tests/benchmarks/run_benchmarks.py
+bench: $(STAMP) ## issue 10's targets vs the strongest baselines (BENCH_ARGS="--quick", "--markdown F")
+	$(PY) -m tests.benchmarks.run_benchmarks $(BENCH_ARGS)
 
 accuracy: $(STAMP) ## the long accuracy run against 50-digit mpmath
 	$(PY) -m tests.accuracy.harness --samples 2000

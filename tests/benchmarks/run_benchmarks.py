@@ -1,458 +1,193 @@
-"""Benchmark suite for ``make bench``: ratios measured in one process, printed as Markdown.
+"""``make bench``: issue 10's targets against the strongest honest baselines, as one table.
 
-Run from the repository root: ``.venv/bin/python tests/benchmarks/run_benchmarks.py``.
-Needs the ``bench`` extra (scipy) for section (b) and the ``derive`` extra (SymPy) for the
-lambdify baseline of section (a).  Nothing here asserts: the test suite has no timing
-assertions; the table states each target and whether this run met it.
+Run from the repository root::
 
-(a) Generated ``stick_boundary_proportional`` (22) and ``slip_zone_width`` over 10^7 load
-    states, against a hand-written NumPy transcription of (22), against ``sympy.lambdify`` of
-    the same derived expression without CSE, and against a memory-bound floor (one pass summing
-    the input arrays).  Targets: within 1.3x of hand-written, within 4x of the floor.
-(b) Generated closed-form ``traction_difference`` (49) at 10^6 points against
-    ``scipy.integrate.quad(weight="cauchy")`` per point on a small sample, scaled to the same
-    count.  Target: >= 1e4 times faster at 1e-10 agreement.
-(c) ``generate`` wall time (target < 20 s) and ``import asymslip`` against ``import numpy`` in
-    fresh interpreters (target < 1.5x).
-(d) The million-case sweep end to end, once ``asymslip sweep`` exists.
+    .venv/bin/python -m tests.benchmarks.run_benchmarks [--quick] [--markdown FILE]
+                     [--only scalar,laws,...] [--skip generate,...]
 
-Timings are best-of-N (minimum over repeats: the least disturbed run on a shared machine) on
-float64 arrays prepared before timing.
+Prints the table (Markdown) on stdout, each section's rows on stderr as soon as they are
+measured, and with ``--markdown FILE`` writes the same text to FILE (for the README).  Every
+row says how it was measured.  Nothing asserts a timing: a missed target is a row that says
+**no**; a section that cannot run (an extra missing) says why; a section that fails is a
+"failed" row and the exit status is 1.
+
+Sections (the modules beside this one):
+
+scalar     one ``slip_zone(..., edge="both")`` vs the kernel it wraps       (bench_core)
+laws       10^6 cycles through ``evaluate``: each law / Hertz               (bench_core)
+sweep      10^6 Hertz rows to CSV, API and command line, vs the floor;
+           Parquet vs CSV                                                   (bench_sweep)
+kernels    generated (22) and the slip-zone width vs hand-written NumPy
+           with ``out=`` buffers, ``lambdify(cse=True)``, the memory floor  (bench_kernels)
+tractions  closed-form (49) vs ``quad(weight="cauchy")``                     (bench_tractions)
+imports    ``from asymslip import ...`` vs ``import numpy``                 (bench_startup)
+generate   ``make generate``, best of 3                                    (bench_startup)
+solver     the reference solver's cost against N, if ``bench_solver.py``
+           exists                                                          (bench_solver_hook)
+
+Noise (the machine is shared): every ratio comes from candidates interleaved in the same
+rounds in one process, best of N, with the median of the per-round ratios beside it;
+single-threaded work is timed by the process's CPU time (see :mod:`.timing`).
 """
 
 from __future__ import annotations
 
 import argparse
-import inspect
-import os
-import platform
-import subprocess
 import sys
-import tempfile
 import time
+import traceback
 from collections.abc import Callable
 from dataclasses import dataclass
-from functools import cache, partial
 from pathlib import Path
 
-import numpy as np
+from asymslip.files.atomic import atomic_write
 
-ROOT = Path(__file__).resolve().parents[2]
-DERIVATIONS = ROOT / "derivations"
-
-
-@dataclass
-class Row:
-    """One line of the results table."""
-
-    benchmark: str
-    measured: str
-    baseline: str
-    ratio: str
-    target: str
-    met: str
+from .timing import Row, Section, load_average, machine, markdown
 
 
-def skipped(benchmark: str, why: str, target: str = "-") -> Row:
-    return Row(benchmark, f"skipped: {why}", "", "", target, "-")
+@dataclass(frozen=True)
+class Sizes:
+    """How much each section measures (``--quick`` shrinks them all)."""
+
+    scalar_rounds: int = 7
+    scalar_calls: int = 2000
+    cycles: int = 10**6
+    law_rounds: int = 5
+    rows: int = 10**6
+    sweep_rounds: int = 3
+    states: int = 10**7
+    kernel_rounds: int = 7
+    points: int = 10**6
+    quad_points: int = 200
+    traction_rounds: int = 3
+    import_rounds: int = 7
+    generate_rounds: int = 3
+    solver_repeat: int = 3
 
 
-def best_of(function: Callable[[], object], repeat: int) -> float:
-    """Smallest wall time of ``repeat`` calls, in seconds."""
-    return best_of_each([function], repeat)[0]
+QUICK = Sizes(scalar_rounds=3, scalar_calls=50, cycles=10**4, law_rounds=2, rows=2000,
+              sweep_rounds=1, states=10**4, kernel_rounds=2, points=10**4, quad_points=2,
+              traction_rounds=1, import_rounds=1, generate_rounds=0, solver_repeat=1)  # fmt: skip
 
 
-def best_of_each(functions: list[Callable[[], object]], repeat: int) -> list[float]:
-    """Smallest wall time of each function over ``repeat`` rounds, the rounds interleaved.
-
-    Interleaving exposes every candidate to the same load on a shared machine, so the ratios
-    are fairer than timing one candidate after another.
-    """
-    best = [float("inf")] * len(functions)
-    for _ in range(repeat):
-        for index, function in enumerate(functions):
-            start = time.perf_counter()
-            function()
-            best[index] = min(best[index], time.perf_counter() - start)
-    return best
+Measure = Callable[[], list[Row]]
 
 
-def seconds(value: float) -> str:
-    if value >= 1:
-        return f"{value:.2f} s"
-    if value >= 1e-3:
-        return f"{value * 1e3:.1f} ms"
-    return f"{value * 1e6:.1f} µs"
+def sections(sizes: Sizes, quick: bool, seed: int) -> dict[str, tuple[str, Measure]]:
+    """Key -> (title, measure); imported lazily so that one missing extra skips one section."""
 
+    def scalar() -> list[Row]:
+        from .bench_core import bench_scalar
 
-def verdict(ok: bool) -> str:
-    return "yes" if ok else "**no**"
+        return bench_scalar(sizes.scalar_rounds, sizes.scalar_calls)
 
+    def laws() -> list[Row]:
+        from .bench_core import bench_laws
 
-def machine() -> str:
-    """CPU model, core count, NumPy and Python versions, and the load at the start."""
-    model = platform.processor() or "unknown CPU"
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    load = ""
-    if hasattr(os, "getloadavg"):
-        load = f", load average {os.getloadavg()[0]:.2f}"
-    return (
-        f"{model}, {os.cpu_count()} cores{load}; Python {platform.python_version()}, "
-        f"NumPy {np.__version__}"
-    )
+        return bench_laws(sizes.cycles, sizes.law_rounds)
 
+    def sweep() -> list[Row]:
+        from .bench_sweep import bench_sweep
 
-# --------------------------------------------------------------------------------------------
-# (a) stick boundary and slip-zone width over many load states
-# --------------------------------------------------------------------------------------------
+        return bench_sweep(sizes.rows, sizes.sweep_rounds)
 
+    def kernels() -> list[Row]:
+        from .bench_kernels import bench_kernels
 
-def load_states(count: int, seed: int) -> dict[str, np.ndarray]:
-    """Valid proportional-path inputs of (22): float64, contiguous, made before any timing."""
-    rng = np.random.default_rng(seed)
-    mu = rng.uniform(0.05, 1.5, count)
-    lam = rng.uniform(-2.0, 2.0, count)
-    eta = rng.uniform(-0.5, 0.5, count)
-    a1 = rng.uniform(0.5, 2.0, count)
-    da = a1 * 10.0 ** rng.uniform(-8.0, -1.0, count)
-    L_I1 = rng.uniform(0.5, 2.0, count)
-    L_I2 = L_I1 * (1.0 + da / a1 / 4.0)
+        return bench_kernels(sizes.states, sizes.kernel_rounds, seed)
+
+    def tractions() -> list[Row]:
+        from .bench_tractions import bench_tractions
+
+        return bench_tractions(sizes.points, sizes.quad_points, sizes.traction_rounds)
+
+    def imports() -> list[Row]:
+        from .bench_startup import bench_imports
+
+        return bench_imports(sizes.import_rounds)
+
+    def generate() -> list[Row]:
+        if sizes.generate_rounds < 1:
+            return [Row("`make generate`", "skipped: --quick (about 20 s a run)",
+                        target="< 20 s")]  # fmt: skip
+        from .bench_startup import bench_generate
+
+        return bench_generate(sizes.generate_rounds)
+
+    def solver() -> list[Row]:
+        from .bench_solver_hook import bench_solver
+
+        return bench_solver(quick, sizes.solver_repeat)
+
     return {
-        "mu": mu, "lam": lam, "eta": eta, "a1": a1, "a2": a1 + da, "da": da,
-        "L_I1": L_I1, "L_I2": L_I2,
-    }  # fmt: skip
+        "scalar": ("One scalar call", scalar),
+        "laws": ("Cycles in bulk, law against law", laws),
+        "sweep": ("The sweep against its floor", sweep),
+        "kernels": ("Generated kernels against the strongest baselines", kernels),
+        "tractions": ("Closed-form (49) against quadrature", tractions),
+        "imports": ("Import time", imports),
+        "generate": ("Code generation", generate),
+        "solver": ("Reference solver", solver),
+    }
 
 
-def hand_stick_boundary(mu, lam, eta, a1, a2, L_I1, L_I2):
-    """(22) transcribed by hand: b = (C2 a2 + C1 a1) / (C2 + C1)."""
-    c2 = (1.0 - lam / mu - np.pi * a2 / 4.0 * eta / mu) * L_I2
-    c1 = (1.0 + lam / mu + np.pi * a1 / 4.0 * eta / mu) * L_I1
-    return (c2 * a2 + c1 * a1) / (c2 + c1)
-
-
-def hand_slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2):
-    """a1 - b from (22) by hand, reduced to -C2 da / (C1 + C2) so that it does not cancel."""
-    c2 = (1.0 - lam / mu - np.pi * (a1 + da) / 4.0 * eta / mu) * L_I2
-    c1 = (1.0 + lam / mu + np.pi * a1 / 4.0 * eta / mu) * L_I1
-    return -c2 * da / (c1 + c2)
-
-
-@cache
-def _emitted_formulas() -> dict[str, object]:
-    from asymslip.codegen.loader import import_derivation
-
-    # The script that emits both functions of section (a).
-    section2_calibrations = import_derivation(DERIVATIONS, "section2_calibrations")
-    return {formula.name: formula for formula in section2_calibrations.derive().formulas}
-
-
-def lambdified(name: str) -> tuple[Callable[..., np.ndarray], tuple[str, ...]] | None:
-    """``sympy.lambdify`` (no CSE) of the expression the derivation emits as ``name``."""
-    try:
-        import sympy
-    except ImportError:
-        return None
-    formula = _emitted_formulas().get(name)
-    if formula is None:
-        return None
-    symbols = [arg.symbol for arg in formula.args]
-    function = sympy.lambdify(symbols, formula.expr, modules="numpy", cse=False)
-    return function, tuple(arg.name for arg in formula.args)
-
-
-def floor_sum(arrays: list[np.ndarray]) -> np.ndarray:
-    """Read every input once and write one output: the memory-bound floor."""
-    out = np.add(arrays[0], arrays[1])
-    for array in arrays[2:]:
-        np.add(out, array, out=out)
-    return out
-
-
-def bench_load_states(count: int, repeat: int, seed: int) -> list[Row]:
-    from asymslip_gen.corrective_slip import slip_zone_width, stick_boundary_proportional
-
-    states = load_states(count, seed)
-    rows: list[Row] = []
-    cases = [
-        ("stick_boundary_proportional", stick_boundary_proportional, hand_stick_boundary,
-         ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2")),
-        ("slip_zone_width", slip_zone_width, hand_slip_zone_width,
-         ("mu", "lam", "eta", "a1", "da", "L_I1", "L_I2")),
-    ]  # fmt: skip
-    for name, generated, hand, names in cases:
-        arrays = [states[n] for n in names]
-        # Agreement first (the same numbers, or the comparison means nothing).
-        reference = hand(*arrays)
-        spread = np.max(np.abs(generated(*arrays) - reference) / np.abs(reference))
-        print(f"  {name}: generated vs hand-written max relative difference {spread:.1e}",
-              file=sys.stderr)  # fmt: skip
-        candidates = [partial(generated, *arrays), partial(hand, *arrays),
-                      partial(floor_sum, arrays)]  # fmt: skip
-        lambdified_function = lambdified(name)
-        if lambdified_function is not None:
-            function, order = lambdified_function
-            candidates.append(partial(function, *[states[n] for n in order]))
-        t_generated, t_hand, t_floor, *t_lambdify = best_of_each(candidates, repeat)
-        label = f"`{name}`, {count:.0e} states vs"
-        rows.append(Row(f"{label} hand-written (22)", seconds(t_generated), seconds(t_hand),
-                        f"{t_generated / t_hand:.2f}x", "<= 1.3x",
-                        verdict(t_generated <= 1.3 * t_hand)))  # fmt: skip
-        if t_lambdify:
-            rows.append(Row(f"{label} sympy.lambdify (no CSE)", seconds(t_generated),
-                            seconds(t_lambdify[0]), f"{t_generated / t_lambdify[0]:.2f}x",
-                            "(information)", "-"))  # fmt: skip
-        else:
-            rows.append(skipped(f"{label} sympy.lambdify", "SymPy not installed"))
-        rows.append(Row(f"{label} memory floor (one summing pass)", seconds(t_generated),
-                        seconds(t_floor), f"{t_generated / t_floor:.2f}x", "<= 4x",
-                        verdict(t_generated <= 4 * t_floor)))  # fmt: skip
-    return rows
-
-
-# --------------------------------------------------------------------------------------------
-# (b) closed-form traction difference (49) against Cauchy-weighted quadrature
-# --------------------------------------------------------------------------------------------
-
-
-def fig5_problem() -> dict[str, float]:
-    """The paper's Fig. 5 example (R = E* = 1, mu = 0.1, lam = 0.2, P1 = 100, dP = 5)."""
-    from asymslip_gen.corrective_slip import stick_boundary
-    from asymslip_gen.hertz import hertz_half_width, hertz_normal_edge_multiplier
-
-    R, E_star, mu, lam, P1, dP = 1.0, 1.0, 0.1, 0.2, 100.0, 5.0
-    a1, a2 = hertz_half_width(P1, R, E_star), hertz_half_width(P1 + dP, R, E_star)
-    L_I1 = hertz_normal_edge_multiplier(P1, R, E_star)
-    L_I2 = hertz_normal_edge_multiplier(P1 + dP, R, E_star)
-    L_II1, L_II2 = lam * L_I1, lam * L_I2  # (21) with eta = 0
-    b = stick_boundary(mu, a1, a2, L_I1, L_I2, L_II1, L_II2)
-    values = {"b": b, "a1": a1, "a2": a2, "mu": mu, "L_I1": L_I1, "L_I2": L_I2,
-              "L_II1": L_II1, "L_II2": L_II2, "E_star": E_star}  # fmt: skip
-    return {key: float(value) for key, value in values.items()}
-
-
-def quad_traction_difference(x: float, p: dict[str, float]) -> float:
-    """(49) with the density (15) integrated by QUADPACK's Cauchy-weighted rule (QAWC).
-
-    q = L_II2 sqrt(a2 - x) - L_II1 H(a1 - x) sqrt(a1 - x)
-        - E*/(2 pi sqrt(a2 - x)) PV int_b^a2 sqrt(a2 - t) B(t) dt / (t - x),
-    the integral split at a1, where B has a square-root kink.
-    """
-    from scipy.integrate import quad
-
-    from asymslip_gen.corrective_slip import dislocation_density
-
-    density_args = tuple(p[k] for k in ("b", "a1", "mu", "L_I1", "L_I2", "L_II1", "L_II2"))
-
-    def weighted(t: float) -> float:
-        density = dislocation_density(t, *density_args, p["E_star"])
-        return float(np.sqrt(max(p["a2"] - t, 0.0)) * density)
-
-    integral = 0.0
-    for low, high in ((p["b"], p["a1"]), (p["a1"], p["a2"])):
-        options = {"epsabs": 0.0, "epsrel": 1e-12, "limit": 200}
-        if low < x < high:
-            value, _ = quad(weighted, low, high, weight="cauchy", wvar=x, **options)
-        else:
-            value, _ = quad(lambda t: weighted(t) / (t - x), low, high, **options)
-        integral += value
-    edge = p["L_II2"] * np.sqrt(p["a2"] - x) - p["L_II1"] * np.sqrt(max(p["a1"] - x, 0.0))
-    return float(edge - p["E_star"] / (2 * np.pi * np.sqrt(p["a2"] - x)) * integral)
-
-
-def closed_form_traction_difference() -> Callable[..., np.ndarray] | None:
-    """The generated closed form of (49), under its current or its planned name."""
-    try:
-        from asymslip_gen import tractions
-    except ImportError:
-        return None
-    for name in ("shear_traction_difference", "traction_difference"):
-        if hasattr(tractions, name):
-            return getattr(tractions, name)
-    return None
-
-
-def bench_traction_difference(count: int, sample: int, repeat: int) -> list[Row]:
-    title = "closed-form q_diff (49) vs scipy quad (cauchy)"
-    function = closed_form_traction_difference()
-    if function is None:
-        print("  (b) skipped: the closed form of (49) is not generated yet", file=sys.stderr)
-        return [skipped(title, "`asymslip_gen.tractions` not generated yet", ">= 1e4x")]
-    try:
-        import scipy  # noqa: F401
-    except ImportError:
-        return [skipped(title, "scipy not installed (the bench extra)", ">= 1e4x")]
-    p = fig5_problem()
-    # Called by parameter name: E* cancels in the closed form, which may not take it.
-    arguments = {name: p[name] for name in inspect.signature(function).parameters if name != "x"}
-    # Points over the contact half 0 <= x < a2, avoiding the breakpoints b and a1 exactly.
-    x = np.linspace(0.0, p["a2"], count, endpoint=False) + 0.5 * p["a2"] / count
-    t_closed = best_of(partial(function, x, **arguments), repeat)
-    x_sample = x[:: max(1, count // sample)][:sample]
-    start = time.perf_counter()
-    quadrature = np.array([quad_traction_difference(float(xi), p) for xi in x_sample])
-    t_quad = (time.perf_counter() - start) * count / len(x_sample)
-    closed = np.asarray(function(x_sample, **arguments), dtype=np.float64)
-    # Relative to the traction scale: q_diff passes through zero inside the contact.
-    agreement = float(np.max(np.abs(closed - quadrature)) / np.max(np.abs(quadrature)))
-    speedup = t_quad / t_closed
-    return [
-        Row(f"`{function.__name__}` (49), {count:.0e} points vs scipy quad (cauchy), "
-            f"{len(x_sample)} points scaled", seconds(t_closed), seconds(t_quad),
-            f"{speedup:.1e}x faster", ">= 1e4x", verdict(speedup >= 1e4)),
-        Row("agreement: max abs(closed - quad) / max abs(quad)", f"{agreement:.1e}", "", "",
-            "<= 1e-10", verdict(agreement <= 1e-10)),
-    ]  # fmt: skip
-
-
-# --------------------------------------------------------------------------------------------
-# (c) generate wall time and import time
-# --------------------------------------------------------------------------------------------
-
-
-def bench_generate(runs: int) -> list[Row]:
-    times = []
-    for _ in range(runs):
-        with tempfile.TemporaryDirectory() as scratch:
-            command = [sys.executable, "-m", "asymslip.codegen", "generate",
-                       "--root", scratch, "--quiet"]  # fmt: skip
-            start = time.perf_counter()
-            completed = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
-            times.append(time.perf_counter() - start)
-            if completed.returncode != 0:
-                tail = completed.stderr.strip().splitlines()[-1:] or ["?"]
-                return [Row("`generate` wall time", f"failed: {tail[0]}", "", "", "< 20 s", "-")]
-    best = min(times)
-    return [Row(f"`generate` wall time (best of {runs})", seconds(best), "", "", "< 20 s",
-                verdict(best < 20))]  # fmt: skip
-
-
-#: What a user runs first; `import asymslip` alone is lazy (PEP 562) and loads nothing.
-IMPORT_STATEMENTS = {
-    "numpy": "import numpy",
-    "asymslip": "from asymslip import HertzLaw, LoadCycle, slip_zone",
-    "asymslip_gen": "import asymslip_gen",
-}
-
-
-def import_time(module: str, repeat: int) -> float:
-    """Best import time of ``module`` in fresh interpreters (interpreter start-up excluded)."""
-    code = (
-        "import time; start = time.perf_counter(); "
-        f"{IMPORT_STATEMENTS[module]}; print(time.perf_counter() - start)"
-    )
-    times = []
-    for _ in range(repeat):
-        completed = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True,
-                                   text=True, check=True)  # fmt: skip
-        times.append(float(completed.stdout.strip()))
-    return min(times)
-
-
-def bench_import(repeat: int) -> list[Row]:
-    t_numpy = import_time("numpy", repeat)
-    rows = []
-    for module in ("asymslip", "asymslip_gen"):
-        try:
-            t_module = import_time(module, repeat)
-        except subprocess.CalledProcessError as error:
-            rows.append(Row(f"`import {module}`", f"failed: {error.stderr.strip()[-80:]}", "",
-                            "", "< 1.5x", "-"))  # fmt: skip
-            continue
-        target, met = ("< 1.5x", verdict(t_module < 1.5 * t_numpy)) if module == "asymslip" else (
-            "(information)", "-")  # fmt: skip
-        rows.append(Row(f"`{IMPORT_STATEMENTS[module]}` vs `import numpy` (fresh interpreters, "
-                        f"best of {repeat})", seconds(t_module), seconds(t_numpy),
-                        f"{t_module / t_numpy:.2f}x", target, met))  # fmt: skip
-    return rows
-
-
-# --------------------------------------------------------------------------------------------
-# (d) the million-case sweep
-# --------------------------------------------------------------------------------------------
-
-SWEEP_ROWS = 10**6
-
-
-def _write_cases(path: Path, rows: int, seed: int = 0) -> None:
-    """Random valid Hertz cycles (both slip directions, no-slip rows, warnings), as a CSV."""
-    rng = np.random.default_rng(seed)
-    P1 = rng.uniform(50.0, 150.0, rows)
-    dP = P1 * rng.uniform(1e-4, 0.1, rows)
-    lam = rng.uniform(-1.0, 1.0, rows)
-    table = np.column_stack([P1, np.zeros(rows), np.zeros(rows), P1 + dP, lam * dP, np.zeros(rows)])
-    with path.open("w") as handle:
-        handle.write("P1,Q1,sigma1,P2,Q2,sigma2\n")
-        np.savetxt(handle, table, delimiter=",", fmt="%.17g")
-
-
-def bench_sweep(rows: int = SWEEP_ROWS) -> list[Row]:
-    """`asymslip sweep` end to end (read, evaluate both edges, write), in a subprocess."""
-    with tempfile.TemporaryDirectory() as scratch:
-        cases = Path(scratch) / "cases.csv"
-        _write_cases(cases, rows)
-        command = [sys.executable, "-m", "asymslip", "sweep", str(cases), "--law", "hertz",
-                   "--R", "1", "--E-star", "1", "--mu", "0.3", "--out",
-                   str(Path(scratch) / "results.csv")]  # fmt: skip
+def run(keys: list[str], table: dict[str, tuple[str, Measure]]) -> list[Section]:
+    done = []
+    for key in keys:
+        title, measure = table[key]
+        print(f"[{key}] {title} ...", file=sys.stderr, flush=True)
+        section = Section(title)
         start = time.perf_counter()
-        completed = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
-        elapsed = time.perf_counter() - start
-    label = f"`asymslip sweep` of {rows:.0e} load cases, both edges, end to end"
-    if completed.returncode != 0:
-        tail = completed.stderr.strip().splitlines()[-1:] or ["?"]
-        return [Row(label, f"failed: {tail[0]}", "", "", "-", "-")]
-    return [Row(label, seconds(elapsed), "", f"{rows / elapsed:,.0f} rows/s", "-", "-")]
+        try:
+            section.rows = measure()
+        except Exception as error:  # one broken section must not hide the others' figures
+            traceback.print_exc(file=sys.stderr)
+            section.rows = [Row(f"{title}: failed", f"{type(error).__name__}: {error}")]
+            section.failed = True
+        section.seconds = time.perf_counter() - start
+        print(markdown([section]) + f"\n({section.seconds:.1f} s)\n", file=sys.stderr,
+              flush=True)  # fmt: skip
+        done.append(section)
+    return done
 
 
-# --------------------------------------------------------------------------------------------
-
-
-def table(rows: list[Row]) -> str:
-    lines = [
-        "| Benchmark | Measured | Baseline | Ratio | Target | Met |",
-        "| --- | ---: | ---: | ---: | --- | --- |",
-    ]
-    for row in rows:
-        lines.append(f"| {row.benchmark} | {row.measured} | {row.baseline} | {row.ratio} | "
-                     f"{row.target} | {row.met} |")  # fmt: skip
-    return "\n".join(lines)
+def _keys(text: str, known: list[str], option: str) -> list[str]:
+    keys = [key.strip() for key in text.split(",") if key.strip()]
+    unknown = [key for key in keys if key not in known]
+    if unknown:
+        raise SystemExit(f"{option}: unknown section {', '.join(unknown)} "
+                         f"(known: {', '.join(known)})")  # fmt: skip
+    return keys
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--states", type=int, default=10**7, help="load states for (a)")
-    parser.add_argument("--points", type=int, default=10**6, help="traction points for (b)")
-    parser.add_argument("--quad-sample", type=int, default=200, help="points quad evaluates")
-    parser.add_argument("--repeat", type=int, default=5, help="best of N for array timings")
-    parser.add_argument("--import-repeat", type=int, default=7, help="best of N for imports")
-    parser.add_argument("--generate-runs", type=int, default=1, help="best of N for generate")
-    parser.add_argument("--seed", type=int, default=0)
-    parser.add_argument("--skip", default="", help="sections to skip, e.g. 'cd'")
-    args = parser.parse_args(argv)
+    parser.add_argument("--quick", action="store_true",
+                        help="small sizes, one or two rounds: a smoke test in a few seconds")
+    parser.add_argument("--markdown", type=Path, metavar="FILE",
+                        help="also write the table (and the machine line) to FILE")
+    parser.add_argument("--only", default="", help="comma-separated sections to run")
+    parser.add_argument("--skip", default="", help="comma-separated sections to leave out")
+    parser.add_argument("--seed", type=int, default=0, help="seed of the random inputs")
+    args = parser.parse_args(argv)  # fmt: skip
 
-    rows: list[Row] = []
-    sections = [
-        ("a", "stick boundary / slip-zone width",
-         lambda: bench_load_states(args.states, args.repeat, args.seed)),
-        ("b", "closed-form tractions",
-         lambda: bench_traction_difference(args.points, args.quad_sample, args.repeat)),
-        ("c", "generate and import", lambda: bench_generate(args.generate_runs)
-         + bench_import(args.import_repeat)),
-        ("d", "sweep", bench_sweep),
-    ]  # fmt: skip
-    for key, title, run in sections:
-        if key in args.skip:
-            continue
-        print(f"({key}) {title} ...", file=sys.stderr, flush=True)
-        rows.extend(run())
-    print(f"Machine: {machine()}\n")
-    print(table(rows))
-    return 0
+    sizes = QUICK if args.quick else Sizes()
+    table = sections(sizes, args.quick, args.seed)
+    known = list(table)
+    keys = _keys(args.only, known, "--only") or known
+    skipped = set(_keys(args.skip, known, "--skip"))
+    keys = [key for key in keys if key not in skipped]
+
+    load_at_start = load_average()
+    done = run(keys, table)
+    load_at_end = load_average()
+    mode = " (--quick: small sizes, the figures mean little)" if args.quick else ""
+    text = (f"Machine: {machine(load_at_start, load_at_end)}{mode}\n\n{markdown(done)}\n")
+    print(text)
+    if args.markdown is not None:
+        with atomic_write(args.markdown, "markdown", mode="w") as handle:
+            handle.write(text)
+    return 1 if any(section.failed for section in done) else 0
 
 
 if __name__ == "__main__":

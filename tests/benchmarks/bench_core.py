@@ -1,0 +1,118 @@
+"""The slip-zone core: one scalar call against its kernel, and 10^6 cycles law against law.
+
+(s) One ``slip_zone(law, cycle, mu, edge="both")`` on the paper's Fig. 5 cycle (Hertz,
+    R = E* = 1, P1 = 100, Q1 = 0, P2 = 105, Q2 = 1, mu = 0.1), against one call of the
+    generated kernel it wraps, ``slip_zone_width`` (22), on the same cycle's Python floats --
+    the two interleaved in one process.  Also ``evaluate`` alone (the core without the result
+    objects), to show where the time goes.
+(l) 10^6 cycles, both edges, through :func:`asymslip.slip_zones.evaluate`, law against Hertz:
+    the rounded flat (a(P) by Newton), the table law (a monotone log-log cubic through 20 FE-like
+    points of the rounded flat) and the power law n = 1.5 (closed form).  Every law sees cycles
+    of the same shape: contact half-widths a1 from 1.1 to 3 (the flat's half-width is 1), load
+    steps dP/P1 from 1e-4 to 0.05, both slip directions and no-slip cycles, no bulk tension
+    (so that the exact b = a(P_K) is computed too: the costliest path for a law without a
+    closed-form inverse).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asymslip import FlatRoundedLaw, HertzLaw, LoadCycle, PowerLaw, TableLaw, slip_zone
+from asymslip.slip_zones import evaluate
+from asymslip_gen.corrective_slip import slip_zone_width
+
+from .timing import Row, duration, interleaved, times, verdict
+from .timing import count as number
+
+SCALAR_TARGET = 30e-6  # seconds
+LAW_TARGETS = {"flat-rounded": 3.0, "table": 2.0}
+
+
+def bench_scalar(rounds: int, calls: int) -> list[Row]:
+    law = HertzLaw(R=1.0, E_star=1.0)
+    cycle = LoadCycle(P1=100.0, Q1=0.0, P2=105.0, Q2=1.0)
+    mu = 0.1
+    result = slip_zone(law, cycle, mu, edge="both")
+    # The kernel's arguments for this cycle, as the core passes them: Python floats.
+    arguments = (mu, result.lam, result.eta, result.a1, result.a2 - result.a1, result.L_I1,
+                 result.L_I2)  # fmt: skip
+    width = slip_zone_width(*arguments)
+    if not np.isclose(width, result.slip_zone_width, rtol=1e-12):
+        raise RuntimeError(f"kernel {width} and slip_zone {result.slip_zone_width} disagree")
+    measured = interleaved({
+        "slip_zone": lambda: slip_zone(law, cycle, mu, edge="both"),
+        "evaluate": lambda: evaluate(law, cycle, mu),
+        "kernel": lambda: slip_zone_width(*arguments),
+    }, rounds, calls=calls)  # fmt: skip
+    t = {name: measured[name].best for name in ("slip_zone", "evaluate", "kernel")}
+    return [
+        Row("one scalar `slip_zone(HertzLaw(1, 1), LoadCycle(100, 0, 105, 1), 0.1, "
+            "edge=\"both\")`", duration(t["slip_zone"]), "", "", f"<= {SCALAR_TARGET * 1e6:g} µs",
+            verdict(t["slip_zone"] <= SCALAR_TARGET),
+            f"{measured.how('slip_zone', 'kernel', calls).split(';')[0]}; the paper's Fig. 5 "
+            "cycle, both edges, result objects built"),
+        Row("same, against the generated kernel it wraps (`slip_zone_width` (22), one call on "
+            "Python floats)", duration(t["slip_zone"]), duration(t["kernel"]),
+            times(measured.ratio("slip_zone", "kernel")), "(information)", "-",
+            measured.how("slip_zone", "kernel", calls)),
+        Row("of which `asymslip.slip_zones.evaluate` (rules, law, both edges; no result objects)",
+            duration(t["evaluate"]), duration(t["slip_zone"]),
+            times(measured.ratio("evaluate", "slip_zone")), "(information)", "-",
+            measured.how("evaluate", "slip_zone", calls)),
+    ]  # fmt: skip
+
+
+# --- 10^6 cycles, law against law ---------------------------------------------------------------
+def laws() -> dict[str, object]:
+    """The laws compared, each with half-widths of the same size for the same cycles."""
+    flat = FlatRoundedLaw(c=1.0, R=10.0, E_star=1.0)
+    # An FE-like table: 20 loads, geometric, spanning every load the cycles reach.
+    loads = np.geomspace(float(flat.load(1.05)), float(flat.load(3.3)), 20)
+    return {
+        "hertz": HertzLaw(R=10.0, E_star=1.0),
+        "flat-rounded": flat,
+        "table": TableLaw(loads, flat.half_width(loads)),
+        "power": PowerLaw(A=0.1, n=1.5, E_star=1.0),
+    }
+
+
+def cycles_for(law: object, count: int, mu: float, seed: int = 0) -> LoadCycle:
+    """Valid cycles of ``law``: a1 in (1.1, 3), dP/P1 in (1e-4, 0.05), |dQ/dP| < 1.5 mu."""
+    rng = np.random.default_rng(seed)
+    a1 = rng.uniform(1.1, 3.0, count)
+    P1 = np.asarray(law.load(a1), dtype=np.float64)
+    dP = P1 * 10.0 ** rng.uniform(-4.0, np.log10(0.05), count)
+    Q1 = rng.uniform(-0.3, 0.3, count) * mu * P1
+    Q2 = Q1 + rng.uniform(-1.5, 1.5, count) * mu * dP
+    return LoadCycle(P1, Q1, P1 + dP, Q2)
+
+
+def bench_laws(count: int, rounds: int, mu: float = 0.3) -> list[Row]:
+    compared = laws()
+    work = {name: (law, cycles_for(law, count, mu)) for name, law in compared.items()}
+    for name, (law, cycle) in work.items():
+        evaluation = evaluate(law, cycle, mu)
+        valid = int(np.count_nonzero(evaluation.verdict.valid))
+        if valid != count:
+            raise RuntimeError(f"{name}: {count - valid} of {count} benchmark cycles invalid: "
+                               f"{evaluation.verdict.messages()[0]}")  # fmt: skip
+    measured = interleaved({name: (lambda law=law, cycle=cycle: evaluate(law, cycle, mu))
+                            for name, (law, cycle) in work.items()}, rounds)  # fmt: skip
+    hertz = measured["hertz"].best
+    rows = [Row(f"{number(count)} cycles, both edges, `evaluate`: Hertz", duration(hertz), "", "",
+                "(information)", "-",
+                f"{measured.how('hertz', 'hertz').split(';')[0]}; every cycle valid")]
+    described = {
+        "flat-rounded": "rounded flat (c = 1, R = 10) / Hertz",
+        "table": "table law (20 points of the rounded flat) / Hertz",
+        "power": "power law (n = 1.5) / Hertz",
+    }
+    for name, words in described.items():
+        ratio = measured.ratio(name, "hertz")
+        target = LAW_TARGETS.get(name)
+        rows.append(Row(f"same: {words}", duration(measured[name].best), duration(hertz),
+                        times(ratio), f"<= {target:g}x" if target else "(information)",
+                        verdict(ratio <= target) if target else "-",
+                        measured.how(name, "hertz")))  # fmt: skip
+    return rows
