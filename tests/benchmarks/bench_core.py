@@ -11,7 +11,8 @@
     of the same shape: contact half-widths a1 from 1.1 to 3 (the flat's half-width is 1), load
     steps dP/P1 from 1e-4 to 0.05, both slip directions and no-slip cycles, no bulk tension
     (so that the exact b = a(P_K) is computed too: the costliest path for a law without a
-    closed-form inverse).
+    closed-form inverse; the targets are judged here).  The same with bulk tension, where no
+    exact b exists, for information.
 """
 
 from __future__ import annotations
@@ -77,20 +78,26 @@ def laws() -> dict[str, object]:
     }
 
 
-def cycles_for(law: object, count: int, mu: float, seed: int = 0) -> LoadCycle:
-    """Valid cycles of ``law``: a1 in (1.1, 3), dP/P1 in (1e-4, 0.05), |dQ/dP| < 1.5 mu."""
+def cycles_for(law: object, count: int, mu: float, tension: bool = False,
+               seed: int = 0) -> LoadCycle:  # fmt: skip
+    """Valid cycles of ``law``: a1 in (1.1, 3), dP/P1 in (1e-4, 0.05), |dQ/dP| < 1.5 mu; with
+    ``tension``, a bulk-tension slope eta = dsigma/dP in (-0.02, 0.02) (no exact b then)."""
     rng = np.random.default_rng(seed)
     a1 = rng.uniform(1.1, 3.0, count)
     P1 = np.asarray(law.load(a1), dtype=np.float64)
     dP = P1 * 10.0 ** rng.uniform(-4.0, np.log10(0.05), count)
     Q1 = rng.uniform(-0.3, 0.3, count) * mu * P1
     Q2 = Q1 + rng.uniform(-1.5, 1.5, count) * mu * dP
-    return LoadCycle(P1, Q1, P1 + dP, Q2)
+    sigma2 = rng.uniform(-0.02, 0.02, count) * dP if tension else 0.0
+    return LoadCycle(P1, Q1, P1 + dP, Q2, 0.0, sigma2)
 
 
 def bench_laws(count: int, rounds: int, mu: float = 0.3) -> list[Row]:
-    compared = laws()
-    work = {name: (law, cycles_for(law, count, mu)) for name, law in compared.items()}
+    work = {}
+    for name, law in laws().items():
+        work[name] = (law, cycles_for(law, count, mu))
+        if name != "power":
+            work[name + " tension"] = (law, cycles_for(law, count, mu, tension=True))
     for name, (law, cycle) in work.items():
         evaluation = evaluate(law, cycle, mu)
         valid = int(np.count_nonzero(evaluation.verdict.valid))
@@ -100,19 +107,25 @@ def bench_laws(count: int, rounds: int, mu: float = 0.3) -> list[Row]:
     measured = interleaved({name: (lambda law=law, cycle=cycle: evaluate(law, cycle, mu))
                             for name, (law, cycle) in work.items()}, rounds)  # fmt: skip
     hertz = measured["hertz"].best
-    rows = [Row(f"{number(count)} cycles, both edges, `evaluate`: Hertz", duration(hertz), "", "",
-                "(information)", "-",
-                f"{measured.how('hertz', 'hertz').split(';')[0]}; every cycle valid")]
+    rows = [Row(f"{number(count)} cycles, both edges, `evaluate`: Hertz", duration(hertz), "",
+                "", "(information)", "-",
+                f"{measured.how('hertz', 'hertz').split(';')[0]}; every cycle valid; no bulk "
+                "tension, so the exact b = a(P_K) is computed too")]  # fmt: skip
     described = {
         "flat-rounded": "rounded flat (c = 1, R = 10) / Hertz",
         "table": "table law (20 points of the rounded flat) / Hertz",
         "power": "power law (n = 1.5) / Hertz",
-    }
+        "flat-rounded tension": "with bulk tension (no exact b to solve for): rounded flat / "
+                                "Hertz",
+        "table tension": "with bulk tension: table law / Hertz",
+    }  # fmt: skip
     for name, words in described.items():
-        ratio = measured.ratio(name, "hertz")
-        target = LAW_TARGETS.get(name)
-        rows.append(Row(f"same: {words}", duration(measured[name].best), duration(hertz),
-                        times(ratio), f"<= {target:g}x" if target else "(information)",
+        baseline = "hertz tension" if name.endswith("tension") else "hertz"
+        ratio = measured.ratio(name, baseline)
+        target = None if name.endswith("tension") else LAW_TARGETS.get(name)
+        rows.append(Row(f"same: {words}", duration(measured[name].best),
+                        duration(measured[baseline].best), times(ratio),
+                        f"<= {target:g}x" if target else "(information)",
                         verdict(ratio <= target) if target else "-",
-                        measured.how(name, "hertz")))  # fmt: skip
+                        measured.how(name, baseline)))  # fmt: skip
     return rows
