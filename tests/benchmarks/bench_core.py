@@ -46,12 +46,12 @@ def bench_scalar(rounds: int, calls: int) -> list[Row]:
         "evaluate": lambda: evaluate(law, cycle, mu),
         "kernel": lambda: slip_zone_width(*arguments),
     }, rounds, calls=calls)  # fmt: skip
-    t = {name: measured[name].best for name in ("slip_zone", "evaluate", "kernel")}
+    t = {name: measured.best(name) for name in ("slip_zone", "evaluate", "kernel")}
     return [
         Row("one scalar `slip_zone(HertzLaw(1, 1), LoadCycle(100, 0, 105, 1), 0.1, "
             "edge=\"both\")`", duration(t["slip_zone"]), "", "", f"<= {SCALAR_TARGET * 1e6:g} µs",
             verdict(t["slip_zone"] <= SCALAR_TARGET),
-            f"{measured.how('slip_zone', 'kernel', calls).split(';')[0]}; the paper's Fig. 5 "
+            f"{measured.clock_words(calls)}; the paper's Fig. 5 "
             "cycle, both edges, result objects built"),
         Row("same, against the generated kernel it wraps (`slip_zone_width` (22), one call on "
             "Python floats)", duration(t["slip_zone"]), duration(t["kernel"]),
@@ -106,10 +106,10 @@ def bench_laws(count: int, rounds: int, mu: float = 0.3) -> list[Row]:
                                f"{evaluation.verdict.messages()[0]}")  # fmt: skip
     measured = interleaved({name: (lambda law=law, cycle=cycle: evaluate(law, cycle, mu))
                             for name, (law, cycle) in work.items()}, rounds)  # fmt: skip
-    hertz = measured["hertz"].best
+    hertz = measured.best("hertz")
     rows = [Row(f"{number(count)} cycles, both edges, `evaluate`: Hertz", duration(hertz), "",
                 "", "(information)", "-",
-                f"{measured.how('hertz', 'hertz').split(';')[0]}; every cycle valid; no bulk "
+                f"{measured.clock_words()}; every cycle valid; no bulk "
                 "tension, so the exact b = a(P_K) is computed too")]  # fmt: skip
     described = {
         "flat-rounded": "rounded flat (c = 1, R = 10) / Hertz",
@@ -123,8 +123,8 @@ def bench_laws(count: int, rounds: int, mu: float = 0.3) -> list[Row]:
         baseline = "hertz tension" if name.endswith("tension") else "hertz"
         ratio = measured.ratio(name, baseline)
         target = None if name.endswith("tension") else LAW_TARGETS.get(name)
-        rows.append(Row(f"same: {words}", duration(measured[name].best),
-                        duration(measured[baseline].best), times(ratio),
+        rows.append(Row(f"same: {words}", duration(measured.best(name)),
+                        duration(measured.best(baseline)), times(ratio),
                         f"<= {target:g}x" if target else "(information)",
                         verdict(ratio <= target) if target else "-",
                         measured.how(name, baseline)))  # fmt: skip

@@ -188,7 +188,7 @@ def bench_kernels(count: int, rounds: int, seed: int = 0) -> list[Row]:
         print(f"  {name}: largest relative difference from the generated kernel {spread:.1e}",
               file=sys.stderr)  # fmt: skip
         measured = interleaved(candidates, rounds)
-        t = {key: measured[key].best for key in candidates}
+        t = {key: measured.best(key) for key in candidates}
         label = f"`{name}` (22), {number(count)} states"
         same = f"; same numbers (largest relative difference {spread:.0e})"
         rows.append(Row(

@@ -94,21 +94,21 @@ def bench_tractions(count: int, sample: int, rounds: int) -> list[Row]:
     closed = shear_traction_difference(x, *arguments)
     # Relative to the traction's scale: q_diff passes through zero inside the contact.
     agreement = float(np.max(np.abs(closed - quadrature)) / np.max(np.abs(quadrature)))
-    per_point_quad = measured["quad"].best / len(x)
-    per_point_closed = measured["closed"].best / count
+    per_point_quad = measured.best("quad") / len(x)
+    per_point_closed = measured.best("closed") / count
     speedup = per_point_quad / per_point_closed
-    clock = measured.how("quad", "closed").split(";")[0]
+    clock = measured.clock_words()
     return [
         Row(f"(49) closed form `shear_traction_difference` on {number(count)} points vs "
             f"`scipy.integrate.quad(weight=\"cauchy\")` of (15) on {len(x)} of them, per point",
             duration(per_point_closed), duration(per_point_quad), f"{times(speedup)} faster",
             f">= {SPEED_TARGET:.0e}x".replace("e+0", "e"), verdict(speedup >= SPEED_TARGET),
-            f"{clock}; per point: closed form {duration(measured['closed'].best)} for "
-            f"{number(count)} points, quad {duration(measured['quad'].best)} for {len(x)}; "
+            f"{clock}; per point: closed form {duration(measured.best('closed'))} for "
+            f"{number(count)} points, quad {duration(measured.best('quad'))} for {len(x)}; "
             "Fig. 5 problem, b from (17)"),
         Row(f"same, both on the same {len(x)} points (the closed form's call overhead "
-            "dominates)", duration(measured["closed_sample"].best),
-            duration(measured["quad"].best),
+            "dominates)", duration(measured.best("closed_sample")),
+            duration(measured.best("quad")),
             f"{times(measured.ratio('quad', 'closed_sample'))} faster", "(information)", "-",
             measured.how("quad", "closed_sample")),
         Row(f"agreement at the {len(x)} points: max abs(closed - quad) / max abs(quad)",

@@ -1,19 +1,24 @@
-"""Timing on a shared, noisy machine: interleaved rounds, best of N, per-round ratios.
+"""Timing on a shared, noisy machine: interleaved rounds, two clocks, best of N, per-round ratios.
 
-Two clocks.  Work done by this process on one thread (NumPy ufuncs, the core, SciPy's quad) is
-timed by the **CPU time of the process** (user + system, ``time.process_time``): on an idle
-machine it equals the wall time, and on a busy one it leaves out the time spent waiting for a
-core, which is the largest noise when five other people share two cores.  Work that uses
-threads (pyarrow's reader and writer) or other processes (the command line, fresh
-interpreters) is timed by the **wall clock**.  Each row says which.
+Every candidate is timed by two clocks at once:
 
-Every ratio in ``make bench`` is taken inside one process from candidates timed in the same
-rounds: each round runs every candidate once (in an order rotated from round to round, so that
-no candidate always runs right after the same neighbour), and a candidate's figure is its best
-round -- the least disturbed by other work on the cores.  The ratio reported is the ratio of
-the bests; the median over rounds of the ratio *within* a round (two figures taken seconds
-apart, under the same load) is given beside it as a check: when the two disagree by much, the
-machine was too busy for the figure to mean much, and the row says so.
+* the **CPU time** it costs: this process's user + system time (every thread of it) plus that
+  of the child processes it waited for.  On an idle machine, for one-thread work, it equals
+  the wall time; on a busy one it leaves out the time spent waiting for a core -- the largest
+  noise when five other people share two cores.  Work done on one thread (NumPy ufuncs, the
+  core, SciPy's quad, SymPy in ``generate``, imports) is judged by it.
+* the **wall clock**, which is what a user waits for.  Work spread over threads (pyarrow's CSV
+  reader and writer in the sweep) is judged by it, since there CPU time and waiting differ
+  even on an idle machine.
+
+Every ratio is taken inside one process from candidates timed in the same rounds: each round
+runs every candidate once, in an order rotated from round to round (so that no candidate always
+follows the same neighbour).  By CPU time a candidate's figure is its best round and the ratio
+is best over best; the median over rounds of the ratio *within* a round is given beside it as a
+check, and when the two disagree by more than 25 % the row says the machine was too busy to
+trust either.  By the wall clock the best round is mostly a matter of luck on a loaded machine,
+so the ratio is the median of the per-round ratios (two runs seconds apart, under about the
+same load), with best over best and the CPU-time ratio beside it.
 """
 
 from __future__ import annotations
@@ -28,85 +33,111 @@ from pathlib import Path
 
 import numpy as np
 
+try:
+    import resource
+except ImportError:  # not on Windows: the CPU time of child processes is then not counted
+    resource = None  # type: ignore[assignment]
+
+
+def cpu_time() -> float:
+    """CPU seconds used so far by this process (all threads) and its waited-for children."""
+    used = time.process_time()
+    if resource is not None:
+        children = resource.getrusage(resource.RUSAGE_CHILDREN)
+        used += children.ru_utime + children.ru_stime
+    return used
+
+
+CLOCKS: dict[str, Callable[[], float]] = {"cpu": cpu_time, "wall": time.perf_counter}
+CLOCK_WORDS = {"cpu": "CPU time", "wall": "wall clock"}
+
 
 @dataclass(frozen=True)
 class Timing:
-    """The wall times of one candidate over the rounds, in seconds (per call)."""
+    """One candidate's seconds per call, round by round, by both clocks."""
 
-    times: tuple[float, ...]
+    cpu: tuple[float, ...]
+    wall: tuple[float, ...]
 
-    @property
-    def best(self) -> float:
-        return min(self.times)
-
-    @property
-    def median(self) -> float:
-        return statistics.median(self.times)
+    def times(self, clock: str) -> tuple[float, ...]:
+        return self.cpu if clock == "cpu" else self.wall
 
 
 @dataclass(frozen=True)
 class Timings:
-    """Every candidate of one interleaved measurement."""
+    """Every candidate of one interleaved measurement; ``clock`` is the one that judges."""
 
     by_name: dict[str, Timing]
     rounds: int
     clock: str = "cpu"
 
-    def __getitem__(self, name: str) -> Timing:
-        return self.by_name[name]
+    def best(self, name: str, clock: str | None = None) -> float:
+        return min(self.by_name[name].times(clock or self.clock))
 
-    def ratio(self, name: str, baseline: str) -> float:
-        """Best over best."""
-        return self[name].best / self[baseline].best
-
-    def round_ratio(self, name: str, baseline: str) -> float:
+    def round_ratio(self, name: str, baseline: str, clock: str | None = None) -> float:
         """Median over rounds of the ratio within a round."""
-        pairs = zip(self[name].times, self[baseline].times, strict=True)
+        clock = clock or self.clock
+        pairs = zip(self.by_name[name].times(clock), self.by_name[baseline].times(clock),
+                    strict=True)  # fmt: skip
         return statistics.median(value / base for value, base in pairs)
 
+    def best_ratio(self, name: str, baseline: str, clock: str | None = None) -> float:
+        return self.best(name, clock) / self.best(baseline, clock)
+
+    def ratio(self, name: str, baseline: str) -> float:
+        """The ratio the row reports: best over best by CPU time, the per-round median by wall."""
+        if self.clock == "cpu":
+            return self.best_ratio(name, baseline)
+        return self.round_ratio(name, baseline)
+
     def how(self, name: str, baseline: str, calls: int = 1) -> str:
-        """How the ratio was measured, with its per-round check."""
+        """How the ratio was measured, with its check."""
         per_call = f", {calls:,} calls a round" if calls > 1 else ""
-        text = (f"{CLOCK_WORDS[self.clock]}, best of {self.rounds} interleaved rounds{per_call}; "
-                f"median per-round ratio "
-                f"{self.round_ratio(name, baseline):.2f}x")  # fmt: skip
-        if self.rounds >= 3 and not _agree(self.ratio(name, baseline),
-                                           self.round_ratio(name, baseline)):  # fmt: skip
-            text += " (they disagree: the machine was busy, trust neither much)"
-        return text
+        text = f"{CLOCK_WORDS[self.clock]}, best of {self.rounds} interleaved rounds{per_call}; "
+        if self.clock == "cpu":
+            text += f"median per-round ratio {self.round_ratio(name, baseline):.2f}x"
+            if self.rounds >= 3 and not _agree(self.best_ratio(name, baseline),
+                                               self.round_ratio(name, baseline)):  # fmt: skip
+                text += " (they disagree: the machine was busy, trust neither much)"
+            return text
+        return (text + f"ratio = median of the per-round ratios (best over best "
+                f"{self.best_ratio(name, baseline):.2f}x; by CPU time "
+                f"{self.best_ratio(name, baseline, 'cpu'):.2f}x)")  # fmt: skip
+
+    def clock_words(self, calls: int = 1) -> str:
+        per_call = f", {calls:,} calls a round" if calls > 1 else ""
+        return f"{CLOCK_WORDS[self.clock]}, best of {self.rounds} interleaved rounds{per_call}"
 
 
 def _agree(first: float, second: float, tolerance: float = 0.25) -> bool:
     return abs(first - second) <= tolerance * max(first, second)
 
 
-CLOCKS: dict[str, Callable[[], float]] = {"cpu": time.process_time, "wall": time.perf_counter}
-CLOCK_WORDS = {"cpu": "CPU time of this process (one thread)", "wall": "wall clock"}
-
-
 def interleaved(candidates: Mapping[str, Callable[[], object]], rounds: int, calls: int = 1,
                 clock: str = "cpu", warm_up: bool = True) -> Timings:  # fmt: skip
     """Time each candidate ``calls`` times a round for ``rounds`` rounds, interleaved.
 
-    ``clock`` is ``"cpu"`` (the process's CPU time: single-threaded work in this process) or
-    ``"wall"``.  With ``warm_up`` each candidate is called once before timing (imports,
-    caches, first-touch page faults of its buffers do not count).  Times are per call.
+    Both clocks are read; ``clock`` (``"cpu"`` or ``"wall"``) is the one the rows judge by.
+    With ``warm_up`` each candidate is called once before timing (imports, caches, first-touch
+    page faults of its buffers do not count).  Times are per call.
     """
-    now = CLOCKS[clock]
     names = list(candidates)
     if warm_up:
         for function in candidates.values():
             function()
-    times: dict[str, list[float]] = {name: [] for name in names}
+    cpu: dict[str, list[float]] = {name: [] for name in names}
+    wall: dict[str, list[float]] = {name: [] for name in names}
     for round_index in range(rounds):
         shift = round_index % len(names)
         for name in names[shift:] + names[:shift]:
             function = candidates[name]
-            start = now()
+            cpu_start, wall_start = cpu_time(), time.perf_counter()
             for _ in range(calls):
                 function()
-            times[name].append((now() - start) / calls)
-    return Timings({name: Timing(tuple(times[name])) for name in names}, rounds, clock)
+            wall[name].append((time.perf_counter() - wall_start) / calls)
+            cpu[name].append((cpu_time() - cpu_start) / calls)
+    return Timings({name: Timing(tuple(cpu[name]), tuple(wall[name])) for name in names},
+                   rounds, clock)  # fmt: skip
 
 
 # --- rows of the table ----------------------------------------------------------------------------
