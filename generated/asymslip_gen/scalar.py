@@ -260,12 +260,10 @@ def stick_boundary_proportional(
     float
         Stick boundary b, same units as a1.
     """
-    tmp0 = 4 * lam
-    tmp1 = 4 * mu
-    tmp2 = math.pi * eta
-    tmp3 = (1 / 4) * L_I1 * (a1 * tmp2 + tmp0 + tmp1)
-    tmp4 = (1 / 4) * L_I2 * (a2 * tmp2 + tmp0 - tmp1)
-    return (a1 * tmp3 - a2 * tmp4) / (tmp3 - tmp4)
+    tmp0 = (1 / 4) * math.pi * eta
+    tmp1 = L_I1 * (a1 * tmp0 + lam + mu)
+    tmp2 = L_I2 * (a2 * tmp0 + lam - mu)
+    return (a1 * tmp1 - a2 * tmp2) / (tmp1 - tmp2)
 
 
 def stick_boundary_denominator(
@@ -302,10 +300,8 @@ def stick_boundary_denominator(
     float
         C1 + C2 [force/length^(5/2)].
     """
-    tmp0 = 4 * lam
-    tmp1 = 4 * mu
-    tmp2 = math.pi * eta
-    return (1 / 4) * L_I1 * (a1 * tmp2 + tmp0 + tmp1) - 1 / 4 * L_I2 * (a2 * tmp2 + tmp0 - tmp1)
+    tmp0 = (1 / 4) * math.pi * eta
+    return L_I1 * (a1 * tmp0 + lam + mu) - L_I2 * (a2 * tmp0 + lam - mu)
 
 
 def slip_zone_width_from_multipliers(
@@ -414,11 +410,10 @@ def slip_zone_width(
     float
         a1 - b, same units as a1.
     """
-    tmp0 = 4 * mu
-    tmp1 = math.pi * eta
-    tmp2 = a1 * tmp1 + 4 * lam
-    tmp3 = (1 / 4) * L_I2 * (da * tmp1 - tmp0 + tmp2)
-    return da * tmp3 / ((1 / 4) * L_I1 * (tmp0 + tmp2) - tmp3)
+    tmp0 = (1 / 4) * math.pi * eta
+    tmp1 = a1 * tmp0 + lam
+    tmp2 = L_I2 * (da * tmp0 - mu + tmp1)
+    return da * tmp2 / (L_I1 * (mu + tmp1) - tmp2)
 
 
 def stick_boundary(
@@ -3062,4 +3057,4 @@ def slip_zone_width_first_order(
     float
         a1 - b, same units as a1.
     """
-    return (1 / 8) * dP * da_dP * (math.pi * a1 * eta + 4 * lam - 4 * mu) / mu
+    return dP * da_dP * ((1 / 8) * math.pi * a1 * eta + (1 / 2) * lam - 1 / 2 * mu) / mu
