@@ -54,13 +54,13 @@ class Sizes:
     cycles: int = 10**6
     law_rounds: int = 5
     rows: int = 10**6
-    sweep_rounds: int = 3
+    sweep_rounds: int = 5
     states: int = 10**7
     kernel_rounds: int = 7
     points: int = 10**6
     quad_points: int = 200
     traction_rounds: int = 3
-    import_rounds: int = 7
+    import_rounds: int = 11
     generate_rounds: int = 3
     solver_repeat: int = 3
 
