@@ -11,7 +11,7 @@ from tests.benchmarks.timing import COLUMNS
 
 #: A measure every full table must have, per section title, in this order.
 EXPECTED = {
-    "One scalar call": ["one scalar `slip_zone(", "kernel it wraps", "evaluate`"],
+    "One scalar call": ["one scalar `slip_zone(", "kernel of its headline width", "evaluate`"],
     "Cycles in bulk, law against law": ["Hertz", "rounded flat", "table law", "power law",
                                         "bulk tension", "table law"],
     "The sweep against its floor": ["`sweep_file` (API) vs the floor", "`asymslip sweep`",
