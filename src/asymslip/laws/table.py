@@ -303,13 +303,17 @@ class TableLaw(ContactLaw):
         return self._curve.evaluate(np.log(np.asarray(P, dtype=np.float64)), derivatives)
 
     def half_width(self, P: ArrayLike) -> FloatArray:
-        return np.exp(self._log_half_width(P, 0)[0])
+        # Far beyond an extreme table the power-law continuation can exceed the float range:
+        # that is an honest inf (the rules refuse a non-finite a), not a warning.
+        with np.errstate(over="ignore"):
+            return np.exp(self._log_half_width(P, 0)[0])
 
     def half_width_slope(self, P: ArrayLike) -> FloatArray:
         """a'(P) = (a/P) d(log a)/d(log P)."""
         P = np.asarray(P, dtype=np.float64)
         s, ds = self._log_half_width(P)
-        return np.exp(s) * ds / P
+        with np.errstate(over="ignore"):  # inf, as in half_width
+            return np.exp(s) * ds / P
 
     def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:
         """a(P1 + dP) - a(P1) = a1 expm1(s(u1 + du) - s(u1)), du = log1p(dP/P1): no cancellation."""
