@@ -13,188 +13,101 @@
 Runtime needs NumPy only.  The hand-written, validating API is the ``asymslip`` package.
 """
 
-from asymslip_gen.asymmetric_edges import (
-    edge_moment_factor,
-    edge_multiplier_balance,
-    normal_edge_multiplier_asymmetric,
-    shear_edge_multiplier_asymmetric,
-)
-from asymslip_gen.corrective_slip import (
-    dislocation_density,
-    slip_zone_width,
-    slip_zone_width_from_multipliers,
-    stick_boundary,
-    stick_boundary_denominator,
-    stick_boundary_denominator_from_multipliers,
-    stick_boundary_proportional,
-)
-from asymslip_gen.corrective_stick import (
-    corrective_stick_slip_zone_width,
-    hertz_slip_zone_width_corrective_stick,
-    hertz_stick_boundary_corrective_stick,
-    shear_intensity_rate,
-)
-from asymslip_gen.edge_multipliers import (
-    normal_edge_multiplier,
-    shear_edge_multiplier,
-    shear_edge_multiplier_proportional,
-)
-from asymslip_gen.exact_solution import (
-    hertz_slip_zone_width_exact,
-    hertz_stick_boundary_exact,
-    permanent_stick_load,
-)
-from asymslip_gen.flat_rounded import (
-    flat_rounded_chord,
-    flat_rounded_corner_angle,
-    flat_rounded_load,
-    flat_rounded_load_at_angle,
-    flat_rounded_load_slope,
-    flat_rounded_load_slope_at_angle,
-    flat_rounded_normal_edge_multiplier,
-    flat_rounded_normal_edge_multiplier_at_angle,
-    flat_rounded_normal_edge_multiplier_slope,
-    flat_rounded_normal_edge_multiplier_slope_at_angle,
-    flat_rounded_pressure,
-    flat_rounded_profile,
-)
-from asymslip_gen.generic_law import (
-    second_order_stick_boundary_gap,
-    second_order_stick_boundary_gap_from_multiplier,
-)
-from asymslip_gen.hertz import (
-    hertz_half_width,
-    hertz_half_width_growth,
-    hertz_load,
-    hertz_load_slope,
-    hertz_normal_edge_multiplier,
-    hertz_normal_edge_multiplier_slope,
-    hertz_profile,
-)
-from asymslip_gen.method_agreement import (
-    corrective_slip_discrepancy_third_order,
-    corrective_stick_discrepancy_second_order,
-    corrective_stick_discrepancy_third_order,
-    hertz_slip_zone_width_first_order,
-)
-from asymslip_gen.power_law import (
-    power_law_half_width,
-    power_law_half_width_growth,
-    power_law_hypergeometric_argument,
-    power_law_load,
-    power_law_load_slope,
-    power_law_normal_edge_multiplier,
-    power_law_normal_edge_multiplier_slope,
-    power_law_pressure,
-    power_law_profile,
-    wedge_pressure,
-)
-from asymslip_gen.second_order import (
-    paper_stick_boundary_error,
-    paper_stick_boundary_error_from_multiplier,
-    slip_zone_width_second_coefficient,
-    slip_zone_width_second_order,
-    slip_zone_width_second_order_from_multiplier,
-    stick_boundary_second_order,
-)
-from asymslip_gen.slip_displacement import slip_on_loading
-from asymslip_gen.solver_influence import (
-    gap_opening_influence,
-    relative_slip_influence,
-    tension_relative_displacement,
-)
-from asymslip_gen.table_law import normal_edge_multiplier_slope_loglog
-from asymslip_gen.tractions import (
-    hertz_pressure,
-    hertz_shear_traction_difference,
-    jaeger_ciavarella_traction_difference,
-    shear_traction_difference,
-)
-from asymslip_gen.validity import (
-    contact_growth_measure,
-    multiplier_growth_measure,
-    relative_slip_zone_measure,
-    slip_zone_growth_measure,
-    slip_zone_width_first_order,
-    stick_ratio_first_order,
-)
+import importlib
+from typing import Any
 
-__all__ = [
-    "contact_growth_measure",
-    "corrective_slip_discrepancy_third_order",
-    "corrective_stick_discrepancy_second_order",
-    "corrective_stick_discrepancy_third_order",
-    "corrective_stick_slip_zone_width",
-    "dislocation_density",
-    "edge_moment_factor",
-    "edge_multiplier_balance",
-    "flat_rounded_chord",
-    "flat_rounded_corner_angle",
-    "flat_rounded_load",
-    "flat_rounded_load_at_angle",
-    "flat_rounded_load_slope",
-    "flat_rounded_load_slope_at_angle",
-    "flat_rounded_normal_edge_multiplier",
-    "flat_rounded_normal_edge_multiplier_at_angle",
-    "flat_rounded_normal_edge_multiplier_slope",
-    "flat_rounded_normal_edge_multiplier_slope_at_angle",
-    "flat_rounded_pressure",
-    "flat_rounded_profile",
-    "gap_opening_influence",
-    "hertz_half_width",
-    "hertz_half_width_growth",
-    "hertz_load",
-    "hertz_load_slope",
-    "hertz_normal_edge_multiplier",
-    "hertz_normal_edge_multiplier_slope",
-    "hertz_pressure",
-    "hertz_profile",
-    "hertz_shear_traction_difference",
-    "hertz_slip_zone_width_corrective_stick",
-    "hertz_slip_zone_width_exact",
-    "hertz_slip_zone_width_first_order",
-    "hertz_stick_boundary_corrective_stick",
-    "hertz_stick_boundary_exact",
-    "jaeger_ciavarella_traction_difference",
-    "multiplier_growth_measure",
-    "normal_edge_multiplier",
-    "normal_edge_multiplier_asymmetric",
-    "normal_edge_multiplier_slope_loglog",
-    "paper_stick_boundary_error",
-    "paper_stick_boundary_error_from_multiplier",
-    "permanent_stick_load",
-    "power_law_half_width",
-    "power_law_half_width_growth",
-    "power_law_hypergeometric_argument",
-    "power_law_load",
-    "power_law_load_slope",
-    "power_law_normal_edge_multiplier",
-    "power_law_normal_edge_multiplier_slope",
-    "power_law_pressure",
-    "power_law_profile",
-    "relative_slip_influence",
-    "relative_slip_zone_measure",
-    "second_order_stick_boundary_gap",
-    "second_order_stick_boundary_gap_from_multiplier",
-    "shear_edge_multiplier",
-    "shear_edge_multiplier_asymmetric",
-    "shear_edge_multiplier_proportional",
-    "shear_intensity_rate",
-    "shear_traction_difference",
-    "slip_on_loading",
-    "slip_zone_growth_measure",
-    "slip_zone_width",
-    "slip_zone_width_first_order",
-    "slip_zone_width_from_multipliers",
-    "slip_zone_width_second_coefficient",
-    "slip_zone_width_second_order",
-    "slip_zone_width_second_order_from_multiplier",
-    "stick_boundary",
-    "stick_boundary_denominator",
-    "stick_boundary_denominator_from_multipliers",
-    "stick_boundary_proportional",
-    "stick_boundary_second_order",
-    "stick_ratio_first_order",
-    "tension_relative_displacement",
-    "wedge_pressure",
-]
+#: The module of each generated function; a module loads when one of its functions is
+#: first asked for.
+_MODULES = {
+    "contact_growth_measure": "validity",
+    "corrective_slip_discrepancy_third_order": "method_agreement",
+    "corrective_stick_discrepancy_second_order": "method_agreement",
+    "corrective_stick_discrepancy_third_order": "method_agreement",
+    "corrective_stick_slip_zone_width": "corrective_stick",
+    "dislocation_density": "corrective_slip",
+    "edge_moment_factor": "asymmetric_edges",
+    "edge_multiplier_balance": "asymmetric_edges",
+    "flat_rounded_chord": "flat_rounded",
+    "flat_rounded_corner_angle": "flat_rounded",
+    "flat_rounded_load": "flat_rounded",
+    "flat_rounded_load_at_angle": "flat_rounded",
+    "flat_rounded_load_slope": "flat_rounded",
+    "flat_rounded_load_slope_at_angle": "flat_rounded",
+    "flat_rounded_normal_edge_multiplier": "flat_rounded",
+    "flat_rounded_normal_edge_multiplier_at_angle": "flat_rounded",
+    "flat_rounded_normal_edge_multiplier_slope": "flat_rounded",
+    "flat_rounded_normal_edge_multiplier_slope_at_angle": "flat_rounded",
+    "flat_rounded_pressure": "flat_rounded",
+    "flat_rounded_profile": "flat_rounded",
+    "gap_opening_influence": "solver_influence",
+    "hertz_half_width": "hertz",
+    "hertz_half_width_growth": "hertz",
+    "hertz_load": "hertz",
+    "hertz_load_slope": "hertz",
+    "hertz_normal_edge_multiplier": "hertz",
+    "hertz_normal_edge_multiplier_slope": "hertz",
+    "hertz_pressure": "tractions",
+    "hertz_profile": "hertz",
+    "hertz_shear_traction_difference": "tractions",
+    "hertz_slip_zone_width_corrective_stick": "corrective_stick",
+    "hertz_slip_zone_width_exact": "exact_solution",
+    "hertz_slip_zone_width_first_order": "method_agreement",
+    "hertz_stick_boundary_corrective_stick": "corrective_stick",
+    "hertz_stick_boundary_exact": "exact_solution",
+    "jaeger_ciavarella_traction_difference": "tractions",
+    "multiplier_growth_measure": "validity",
+    "normal_edge_multiplier": "edge_multipliers",
+    "normal_edge_multiplier_asymmetric": "asymmetric_edges",
+    "normal_edge_multiplier_slope_loglog": "table_law",
+    "paper_stick_boundary_error": "second_order",
+    "paper_stick_boundary_error_from_multiplier": "second_order",
+    "permanent_stick_load": "exact_solution",
+    "power_law_half_width": "power_law",
+    "power_law_half_width_growth": "power_law",
+    "power_law_hypergeometric_argument": "power_law",
+    "power_law_load": "power_law",
+    "power_law_load_slope": "power_law",
+    "power_law_normal_edge_multiplier": "power_law",
+    "power_law_normal_edge_multiplier_slope": "power_law",
+    "power_law_pressure": "power_law",
+    "power_law_profile": "power_law",
+    "relative_slip_influence": "solver_influence",
+    "relative_slip_zone_measure": "validity",
+    "second_order_stick_boundary_gap": "generic_law",
+    "second_order_stick_boundary_gap_from_multiplier": "generic_law",
+    "shear_edge_multiplier": "edge_multipliers",
+    "shear_edge_multiplier_asymmetric": "asymmetric_edges",
+    "shear_edge_multiplier_proportional": "edge_multipliers",
+    "shear_intensity_rate": "corrective_stick",
+    "shear_traction_difference": "tractions",
+    "slip_on_loading": "slip_displacement",
+    "slip_zone_growth_measure": "validity",
+    "slip_zone_width": "corrective_slip",
+    "slip_zone_width_first_order": "validity",
+    "slip_zone_width_from_multipliers": "corrective_slip",
+    "slip_zone_width_second_coefficient": "second_order",
+    "slip_zone_width_second_order": "second_order",
+    "slip_zone_width_second_order_from_multiplier": "second_order",
+    "stick_boundary": "corrective_slip",
+    "stick_boundary_denominator": "corrective_slip",
+    "stick_boundary_denominator_from_multipliers": "corrective_slip",
+    "stick_boundary_proportional": "corrective_slip",
+    "stick_boundary_second_order": "second_order",
+    "stick_ratio_first_order": "validity",
+    "tension_relative_displacement": "solver_influence",
+    "wedge_pressure": "power_law",
+}
+
+__all__ = sorted(_MODULES)
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _MODULES:
+        raise AttributeError(f"module 'asymslip_gen' has no attribute {name!r}")
+    value = getattr(importlib.import_module(f"{__name__}.{_MODULES[name]}"), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted([*globals(), *_MODULES])

@@ -104,23 +104,34 @@ def render_module(
 
 
 def render_package_init(modules: Mapping[str, Sequence[Formula]]) -> str:
-    """``asymslip_gen/__init__.py``: re-export every generated function."""
-    imports = []
-    exported = []
-    for module in sorted(modules):
-        names = [formula.name for formula in modules[module]]
-        exported.extend(names)
-        joined = ", ".join(sorted(names))
-        imports.append(f"from asymslip_gen.{module} import {joined}")
+    """``asymslip_gen/__init__.py``: every generated function, each module loaded on first use.
+
+    PEP 562 (as SciPy does): ``from asymslip_gen.hertz import ...`` or one ``asymslip_gen.name``
+    loads only that module, which keeps ``from asymslip import slip_zone`` near NumPy's own
+    import time (``make bench``, section imports).
+    """
+    where = {formula.name: module for module in modules for formula in modules[module]}
     sources = [formula.source for formulas in modules.values() for formula in formulas]
-    all_names = "\n".join(f'    "{name}",' for name in sorted(exported))
+    table = "\n".join(f'    "{name}": "{where[name]}",' for name in sorted(where))
     return (
         banner(sources)
         + '"""Generated NumPy kernels for asymptotic partial-slip contacts.\n\n'
         "Runtime needs NumPy only.  The hand-written, validating API is the ``asymslip`` package.\n"
         '"""\n\n'
-        + "\n".join(imports)
-        + f"\n\n__all__ = [\n{all_names}\n]\n"
+        "import importlib\n"
+        "from typing import Any\n\n"
+        "#: The module of each generated function; a module loads when one of its functions is\n"
+        "#: first asked for.\n"
+        f"_MODULES = {{\n{table}\n}}\n\n"
+        "__all__ = sorted(_MODULES)\n\n\n"
+        "def __getattr__(name: str) -> Any:\n"
+        "    if name not in _MODULES:\n"
+        "        raise AttributeError(f\"module 'asymslip_gen' has no attribute {name!r}\")\n"
+        "    value = getattr(importlib.import_module(f\"{__name__}.{_MODULES[name]}\"), name)\n"
+        "    globals()[name] = value\n"
+        "    return value\n\n\n"
+        "def __dir__() -> list[str]:\n"
+        "    return sorted([*globals(), *_MODULES])\n"
     )
 
 

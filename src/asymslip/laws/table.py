@@ -57,7 +57,6 @@ from asymslip_gen.edge_multipliers import normal_edge_multiplier
 from asymslip_gen.table_law import normal_edge_multiplier_slope_loglog
 
 from ..errors import InputError, as_float_array
-from ..files.reader import read_table
 from .base import BoolArray, ContactLaw, FloatArray, LawState
 
 #: The columns a table file must have (header row, any order; other columns are ignored).
@@ -285,6 +284,8 @@ class TableLaw(ContactLaw):
         error names the file line as an editor counts it (:func:`asymslip.files.read_table`).
         """
         path = Path(path)
+        from ..files.reader import read_table  # here: the file reader is not an import cost
+
         table = read_table(path, required=COLUMNS, option="table")
         if table.errors:
             row, message = next(iter(table.errors.items()))
