@@ -213,6 +213,14 @@ def test_an_unknown_law_is_refused_by_name():
         MapCase("cylinder", 1.05, 2.0, 0.0)
 
 
+def test_the_code_generator_reads_the_file_the_figure_command_writes():
+    from asymslip.codegen.runner import ERROR_MAP_FILE, REPORT_FOLDER
+    from asymslip.figures import ERROR_MAP_CSV
+
+    assert CSV == ROOT / "generated" / REPORT_FOLDER / ERROR_MAP_FILE
+    assert ERROR_MAP_FILE == ERROR_MAP_CSV
+
+
 def test_the_report_summary_reads_the_largest_errors_from_the_csv():
     section = "\n".join(error_map_section(TEXT))
     assert set(ERROR_MAP_ESTIMATES) == set(ESTIMATES)
@@ -276,3 +284,19 @@ def test_a_cycle_whose_edges_both_slip_needs_one_load_step():
     one, eight = (solve(law, cycle, MU, elements=2000, steps=steps) for steps in (1, 8))
     for side in ("right", "left"):
         assert abs(one.edge(side).b - eight.edge(side).b) <= 1e-3 * one.element_size
+
+
+@pytest.mark.slow
+def test_figure_error_map_check_exits_1_naming_a_stale_row(tmp_path, capsys):
+    law, ratio, lam_mu, tau = CHECK_CASES[0]
+    lines = TEXT.splitlines(keepends=True)
+    target = f"{law},{ratio:.2f},{lam_mu:.2f},{tau:.2f},right,"
+    index = next(i for i, line in enumerate(lines) if line.startswith(target))
+    fields = lines[index].split(",")
+    column = list(COLUMNS).index("b_solver")
+    fields[column] = f"{float(fields[column]) + 1e-6:.10f}"
+    lines[index] = ",".join(fields)
+    (tmp_path / "error_map.csv").write_text("".join(lines), encoding="utf-8")
+    assert main(["figure", "error-map", "--check", str(tmp_path)]) == 1
+    out = capsys.readouterr()
+    assert "b_solver" in out.out and "right edge" in out.out and "is stale" in out.err

@@ -375,7 +375,7 @@ def read_csv(text: str) -> list[dict[str, str]]:
     """The rows of an error-map CSV as text fields (comment lines skipped)."""
     body = [line for line in text.splitlines() if line and not line.startswith("#")]
     if not body or body[0].split(",") != list(COLUMNS):
-        raise InputError("error map", "is not an error-map CSV of this version (its header "
+        raise InputError("error_map.csv", "is not an error map of this version (its header "
                          "row differs): run `make error-map`")  # fmt: skip
     return list(csv.DictReader(io.StringIO("\n".join(body))))
 
