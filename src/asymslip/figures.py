@@ -1,10 +1,16 @@
-"""The paper's figures, computed from the generated kernels (NumPy only at run time).
+"""The paper's figures, computed from the generated kernels (NumPy only at run time), and the
+error map of every asymptotic estimate against the reference solver.
 
 Fig. 5: the shear-traction difference q_diff = q2 - q1 (46) of a Hertzian contact, exact (47)
 against the asymptotic corrective-slip solution (49), for the paper's illustrative values
 R = E* = 1, mu = 0.1, lambda = 0.2, P1 = 100, dP = 5 (eta = 0).  The paper builds (49) on the
 stick boundary b of (35); the curve for the consistent b of (17) is given as well.  The two
 differ by the edge-singular term K (b - b17) / (2 sqrt(a2 - x)) (see ``asymslip_gen.tractions``).
+
+The error map (:mod:`asymslip.solver.error_map`): the solver's stick boundary against every
+estimate of ``slip_zone`` over a grid of laws, lambda, eta and a2/a1, written as
+``error_map.csv`` (committed in ``generated/report/``, read by the derivation report) and drawn
+as ``error_map.png`` from that CSV.
 
 matplotlib (the ``plot`` extra) is imported only when a PNG is drawn.
 
@@ -21,6 +27,7 @@ Examples
 from __future__ import annotations
 
 import difflib
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -32,13 +39,14 @@ from .errors import InputError
 from .files.atomic import atomic_write
 from .laws.hertz import HertzLaw
 from .slip_zones import slip_zone
+from .solver import error_map as error_map_module
 from .tractions import traction_difference
 
 FloatArray = NDArray[np.float64]
 
 __all__ = [
-    "FIG5_PARAMETERS", "Fig5Curves", "Fig5Parameters", "fig5_curves", "stale_fig5_lines",
-    "write_fig5",
+    "ERROR_MAP_CSV", "ERROR_MAP_PNG", "FIG5_PARAMETERS", "Fig5Curves", "Fig5Parameters",
+    "fig5_curves", "stale_error_map_lines", "stale_fig5_lines", "write_error_map", "write_fig5",
 ]  # fmt: skip
 
 
@@ -243,3 +251,168 @@ def stale_fig5_lines(directory: Path) -> list[str]:
     fresh = fig5_csv_text(fig5_curves()).splitlines(keepends=True)
     return list(difflib.unified_diff(old, fresh, f"committed/{committed.name}",
                                      "regenerated/fig5.csv"))  # fmt: skip
+
+
+# --- the error map ------------------------------------------------------------------------------
+ERROR_MAP_CSV = "error_map.csv"
+ERROR_MAP_PNG = "error_map.png"
+
+#: How the estimates are drawn: attribute -> (label, colour, marker).
+_ESTIMATE_STYLE = {
+    "b": ("b: second order b2 (headline)", "tab:green", "o"),
+    "b_paper": ("b_paper: the paper's (22)", "tab:red", "s"),
+    "b_first_order": ("b_first_order: (28)", "tab:orange", "^"),
+    "b_corrective_stick": ("b_corrective_stick: (40)", "tab:purple", "v"),
+    "b_exact": ("b_exact: a(P_K), exact without tension", "tab:blue", "D"),
+}
+#: |error| below this is drawn on the floor of the logarithmic axis.
+_FLOOR = 0.01
+
+
+def _output_folder(directory: Path, option: str) -> Path:
+    directory = Path(directory)
+    if directory.exists() and not directory.is_dir():
+        raise InputError(option, "must be a folder, not an existing file", str(directory))
+    return directory
+
+
+def _draw_error_map(rows: list[dict[str, str]], path: Path) -> None:
+    """|error| in elements against a2/a1, per estimate, without and with tension.
+
+    Every slipping edge is a point (hollow where ``slip_zone`` gives a validity warning); the
+    line joins each estimate's largest |error| at each a2/a1; the grey band is the solver's
+    stated bound (its largest value in the panel).
+    """
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    figure = figure_class()(figsize=(10.0, 5.0))
+    axes_pair = figure.subplots(1, 2, sharey=True)
+    ratios = sorted({float(row["a2_a1"]) for row in rows})
+    positions = {ratio: index for index, ratio in enumerate(ratios)}
+    names = list(_ESTIMATE_STYLE)
+    handles: list[object] = []
+    for axes, tension in zip(axes_pair, (False, True), strict=True):
+        chosen = [row for row in rows if row["slip_direction"] != "0"
+                  and (float(row["tau"]) != 0) == tension]  # fmt: skip
+        bound = max(float(row["b_error_elements"]) for row in chosen)
+        axes.axhspan(_FLOOR / 2, bound, color="0.9", zorder=0)
+        for offset, name in enumerate(names):
+            label, colour, marker = _ESTIMATE_STYLE[name]
+            shift = (offset - (len(names) - 1) / 2) * 0.09
+            largest = []
+            for ratio in ratios:
+                here = [row for row in chosen
+                        if float(row["a2_a1"]) == ratio and row[f"{name}_elements"]]  # fmt: skip
+                if not here:
+                    continue
+                errors = np.array([abs(float(row[f"{name}_elements"])) for row in here])
+                warned = np.array([row["validity_warning"] != "0" for row in here])
+                shown = np.maximum(errors, _FLOOR)
+                x = np.full(len(shown), positions[ratio] + shift)
+                axes.scatter(x[~warned], shown[~warned], s=10, color=colour, alpha=0.35,
+                             marker=marker, linewidths=0)  # fmt: skip
+                axes.scatter(x[warned], shown[warned], s=12, facecolors="none", alpha=0.5,
+                             edgecolors=colour, marker=marker, linewidths=0.7)  # fmt: skip
+                largest.append((positions[ratio] + shift, max(float(errors.max()), _FLOOR)))
+            if largest:
+                xs, ys = zip(*largest, strict=True)
+                line = axes.plot(xs, ys, "-", color=colour, marker=marker, markersize=5,
+                                 label=label)  # fmt: skip
+                if not tension:
+                    handles.append(line[0])
+        axes.set_yscale("log")
+        axes.set_ylim(_FLOOR / 2, 300)
+        axes.set_xticks(range(len(ratios)), [f"{ratio:.2f}" for ratio in ratios])
+        axes.set_xlim(-0.5, len(ratios) - 0.5)
+        axes.set_xlabel("$a_2/a_1$")
+        axes.set_title(("with bulk tension ($\\eta \\neq 0$)" if tension
+                        else "without bulk tension ($\\eta = 0$)")
+                       + f": {len(chosen)} slipping edges, bound up to {bound:.2f}",
+                       fontsize="medium")  # fmt: skip
+        axes.grid(True, which="major", axis="y", color="0.8", linewidth=0.5)
+    axes_pair[0].set_ylabel("|estimate - solver b| in solver elements")
+    handles += [
+        Patch(color="0.9", label="within the solver's bound"),
+        Line2D([], [], linestyle="none", marker="o", color="0.4", alpha=0.5,
+               label="an edge, no validity warning"),
+        Line2D([], [], linestyle="none", marker="o", markerfacecolor="none",
+               markeredgecolor="0.4", label="an edge with a validity warning"),
+    ]  # fmt: skip
+    figure.legend(handles=handles, loc="lower center", ncol=4, frameon=False, fontsize="small")
+    module = error_map_module
+    figure.suptitle(
+        "Stick boundary: every estimate against the reference solver, largest error (line) and "
+        f"each slipping edge (points)\nN = {module.ELEMENTS} elements, $\\mu$ = {module.MU:g}, "
+        "Hertz, rounded flat, power law n = 1.5 and 3; errors below 0.01 drawn at 0.01",
+        fontsize="medium")  # fmt: skip
+    figure.tight_layout(rect=(0, 0.1, 1, 1))
+    with atomic_write(path, "out") as handle:
+        figure.savefig(handle, format="png", dpi=130, metadata={"Software": None})
+
+
+def write_error_map(
+    directory: Path,
+    data: Path | None = None,
+    *,
+    redraw: bool = False,
+    progress: Callable[[int, int], None] | None = None,
+) -> list[Path]:
+    """Run the error map and write ``error_map.csv`` into ``data`` and ``error_map.png``.
+
+    Parameters
+    ----------
+    directory
+        Folder of the PNG; created if missing.
+    data
+        Folder of the CSV (default: ``directory``); created if missing.
+    redraw
+        Draw the PNG from the CSV already in ``data`` instead of running the solver.
+    progress
+        Called as ``progress(done, total)`` after each solver case.
+
+    Returns
+    -------
+    list of Path
+        The CSV (unless redrawn) and the PNG.
+
+    Raises
+    ------
+    InputError
+        If a folder is an existing file, matplotlib is missing (checked before the solver
+        runs), or with ``redraw`` the CSV is missing or not an error map.
+    """
+    directory = _output_folder(directory, "out")
+    data = directory if data is None else _output_folder(data, "data")
+    figure_class()  # fail before running the solver
+    csv_path, png_path = data / ERROR_MAP_CSV, directory / ERROR_MAP_PNG
+    written = []
+    if redraw:
+        if not csv_path.is_file():
+            raise InputError("data", f"has no {ERROR_MAP_CSV} to redraw: run the map first",
+                             str(data))  # fmt: skip
+        text = csv_path.read_text(encoding="utf-8")
+    else:
+        text = error_map_module.csv_text(error_map_module.error_map(progress=progress))
+        data.mkdir(parents=True, exist_ok=True)
+        with atomic_write(csv_path, "data", mode="w") as handle:
+            handle.write(text)
+        written.append(csv_path)
+    directory.mkdir(parents=True, exist_ok=True)
+    _draw_error_map(error_map_module.read_csv(text), png_path)
+    return [*written, png_path]
+
+
+def stale_error_map_lines(data: Path, *, every_row: bool = False) -> list[str]:
+    """What differs between the committed ``error_map.csv`` and a fresh solver run.
+
+    By default only the check cases (``asymslip.solver.error_map.CHECK_CASES``, a few
+    seconds) are recomputed, and the committed map must have the grid's number of rows;
+    ``every_row`` recomputes the whole map.  Empty when fresh.  The PNG is not compared: its
+    bytes depend on the matplotlib version.
+    """
+    path = Path(data) / ERROR_MAP_CSV
+    if not path.is_file():
+        return [f"{path}: missing"]
+    cases = error_map_module.map_cases() if every_row else None
+    return error_map_module.stale_rows(path.read_text(encoding="utf-8"), cases)

@@ -15,6 +15,7 @@ import time
 from pathlib import Path
 
 from .runner import (
+    ERROR_MAP_FILE,
     REPORT_FOLDER,
     check_fresh,
     print_verification,
@@ -47,6 +48,11 @@ def main(argv: list[str] | None = None) -> int:
                          help="the generated root holding asymslip_gen/, c/, fortran/, "
                          "matlab/ and report/ (default: ./generated)")
         sub.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
+        if name in ("generate", "report"):  # check reads ROOT's committed map itself
+            sub.add_argument("--error-map", type=Path, default=None,
+                             help="the committed error map summarised in the report "
+                             f"(default: {REPORT_FOLDER}/{ERROR_MAP_FILE} under --root; left "
+                             "out if missing)")
     args = parser.parse_args(argv)
 
     if args.command == "check":
@@ -57,7 +63,10 @@ def main(argv: list[str] | None = None) -> int:
         print_verification(run)
         print(f"total {time.perf_counter() - start:.1f} s")
         return 0
-    generated = render_all(run)
+    error_map = args.error_map or args.root / REPORT_FOLDER / ERROR_MAP_FILE
+    generated = render_all(
+        run, error_map.read_text(encoding="utf-8") if error_map.is_file() else None
+    )
     folders = [REPORT_FOLDER] if args.command == "report" else None
     count = write_generated(generated, args.root, folders)
     if not args.quiet:

@@ -4,7 +4,10 @@ The report is built from the same :class:`EquationCheck` and :class:`Formula` re
 code generator turns into ``asymslip_gen``, so it cannot drift from the code: every numbered
 equation of the paper, in order, as printed and as derived, how it was obtained or verified and
 its status; equations no derivation covers are listed as missing.  Then the errata (status
-ERRATUM, any label) and the results beyond the paper (status BEYOND, any label).
+ERRATUM, any label) and the results beyond the paper (status BEYOND, any label), and, when the
+committed error map (``generated/report/error_map.csv``, written by ``make error-map``) is
+given, its summary: the code generator does not import the API that computes the map, so it
+reads the committed data, whose columns are those of ``asymslip.solver.error_map.COLUMNS``.
 
 Nothing here needs registering when a derivation adds an equation or a result: the report
 picks up every record.  The only tables in this module are cosmetic (LaTeX names of symbols).
@@ -15,6 +18,8 @@ and its bytes must not depend on ``PYTHONHASHSEED`` (records keep the scripts' f
 
 from __future__ import annotations
 
+import csv
+import io
 import re
 from collections import defaultdict
 from collections.abc import Iterable, Mapping, Sequence
@@ -164,11 +169,167 @@ def _labelled_section(
     return lines
 
 
+# --- the error map ------------------------------------------------------------------------------
+#: The estimates of the error map (columns ``<name>_elements``, ``<name>_fraction``), as shown.
+ERROR_MAP_ESTIMATES = {
+    "b": "`b` (b2)",
+    "b_paper": "(22) `b_paper`",
+    "b_first_order": "(28) `b_first_order`",
+    "b_corrective_stick": "(40) `b_corrective_stick`",
+    "b_exact": "a(P\\_K) `b_exact`",
+}
+#: How the map's law names print (cosmetic; an unknown name prints as it is).
+ERROR_MAP_LAWS = {"hertz": "Hertz", "flat-rounded": "rounded flat",
+                  "power-1.5": "power n = 1.5", "power-3": "power n = 3"}  # fmt: skip
+
+
+def _rows(text: str) -> list[dict[str, str]]:
+    body = "\n".join(line for line in text.splitlines() if line and not line.startswith("#"))
+    return list(csv.DictReader(io.StringIO(body)))
+
+
+def _largest(rows: Sequence[Mapping[str, str]], column: str, scale: str | None = None) -> float:
+    """max |row[column]| (over the rows that have it), divided by row[scale] if given."""
+    values = [abs(float(row[column])) / (float(row[scale]) if scale else 1.0)
+              for row in rows if row.get(column)]  # fmt: skip
+    return max(values) if values else float("nan")
+
+
+def _cell(rows: Sequence[Mapping[str, str]], name: str) -> str:
+    elements = _largest(rows, f"{name}_elements")
+    if elements != elements:  # NaN: the estimate does not exist for these rows
+        return "-"
+    fraction = _largest(rows, f"{name}_fraction")
+    return f"{elements:.2f} ({100 * fraction:.1f} %)"
+
+
+def _bounds(value: float) -> str:
+    """A number of solver bounds in words."""
+    return f"within {value:.2f} bounds" if value <= 1 else f"up to {value:.1f} bounds"
+
+
+def _covered(row: Mapping[str, str]) -> bool:
+    """b's error within its stated accuracy plus the solver's bound."""
+    return abs(float(row["b_elements"])) <= float(row["b_accuracy_elements"]) + float(
+        row["b_error_elements"])  # fmt: skip
+
+
+def error_map_section(text: str) -> list[str]:
+    """The report's summary of the committed error map (its CSV text)."""
+    rows = _rows(text)
+    if not rows:
+        return ["## The error map: every estimate against the reference solver", "",
+                "The committed error map is empty: run `make error-map`.", ""]  # fmt: skip
+    slipping = [row for row in rows if row["slip_direction"] != "0"]
+    sticking = [row for row in rows if row["slip_direction"] == "0"]
+    laws = list(dict.fromkeys(row["law"] for row in rows))
+    ratios = ", ".join(dict.fromkeys(row["a2_a1"] for row in rows))
+    cycles = len({(row["law"], row["a2_a1"], row["lam_mu"], row["tau"]) for row in rows})
+    pairs = len({(row["lam_mu"], row["tau"]) for row in rows})
+    elements = ", ".join(sorted({row["elements"] for row in rows}))
+    agree = sum(row["slip_direction"] == row["solver_slip_direction"] for row in rows)
+    lines = [
+        "## The error map: every estimate against the reference solver",
+        "",
+        "From [`error_map.csv`](error_map.csv), written by `make error-map` "
+        "(`asymslip.solver.error_map`) and checked by `asymslip figure error-map --check "
+        "generated/report`; drawn in [`error_map.png`](../figures/error_map.png).  The "
+        f"reference solver (N = {elements} elements) on {cycles} cycles -- "
+        f"{len(laws)} laws ({', '.join(ERROR_MAP_LAWS.get(law, law) for law in laws)}), "
+        f"a2/a1 = {ratios}, {pairs} pairs of lambda/mu and pi eta a1/(4 mu) in which the other "
+        "edge slips the same way, the opposite way or not at all -- and at each of the "
+        f"{len(slipping)} slipping edges the error (estimate - solver) of every estimate of "
+        "`slip_zone`.  The solver's bound is at most "
+        f"{_largest(rows, 'b_error_elements'):.2f} elements (one element, plus the load-step "
+        "extrapolation where an edge does not slip).  `slip_zone` and the solver agree on the "
+        f"slip direction at {agree} of the {len(rows)} edges; at the {len(sticking)} edges that "
+        f"do not slip the solver's boundary is a1 within {_largest(sticking, 'b_elements'):.2f} "
+        "elements.",
+        "",
+        "Largest \\|error\\| in solver elements over the slipping edges (in brackets: the "
+        "largest as a fraction of the slip-zone width a1 - b, not necessarily at the same "
+        "edge):",
+        "",
+        "| law | bulk tension | slipping edges | "
+        + " | ".join(ERROR_MAP_ESTIMATES.values()) + " |",
+        "| --- | --- | ---: | " + " | ".join("---:" for _ in ERROR_MAP_ESTIMATES) + " |",
+    ]
+    for law in laws:
+        for tension in (False, True):
+            chosen = [row for row in slipping if row["law"] == law
+                      and (float(row["tau"]) != 0) == tension]  # fmt: skip
+            cells = " | ".join(_cell(chosen, name) for name in ERROR_MAP_ESTIMATES)
+            lines.append(f"| {ERROR_MAP_LAWS.get(law, law)} | {'yes' if tension else 'no'} | "
+                         f"{len(chosen)} | {cells} |")  # fmt: skip
+    quiet = [row for row in slipping if row["validity_warning"] == "0"]
+    warned = [row for row in slipping if row["validity_warning"] != "0"]
+    groups = {
+        "no tension, no validity warning": [r for r in quiet if float(r["tau"]) == 0],
+        "tension, no validity warning": [r for r in quiet if float(r["tau"]) != 0],
+        "a validity warning": warned,
+    }
+    lines += [
+        "",
+        "Largest \\|error\\| in units of the solver's bound, over the slipping edges where "
+        "`slip_zone` gives no validity warning (eq24-eq27 all at most 0.1) and where it does:",
+        "",
+        "| estimate | " + " | ".join(f"{name} ({len(group)} edges)"
+                                     for name, group in groups.items()) + " |",  # fmt: skip
+        "| --- | " + " | ".join("---:" for _ in groups) + " |",
+    ]
+    for name, label in ERROR_MAP_ESTIMATES.items():
+        cells = []
+        for group in groups.values():
+            value = _largest(group, f"{name}_elements", "b_error_elements")
+            cells.append("-" if value != value else f"{value:.2f}")
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    no_tension, tension = groups["no tension, no validity warning"], groups[
+        "tension, no validity warning"]  # fmt: skip
+    exact = _largest([r for r in slipping if float(r["tau"]) == 0], "b_exact_elements",
+                     "b_error_elements")  # fmt: skip
+    paper = max(tension, key=lambda r: abs(float(r["b_paper_elements"])), default=None)
+    uncovered = [row for row in slipping if not _covered(row)]
+    uncovered_warned = sum(row["validity_warning"] != "0" for row in uncovered)
+    sentence = (
+        f"What it shows: without tension a(P\\_K) lies {_bounds(exact)} of the solver at every "
+        "slipping edge, which confirms the solver, and the headline b lies "
+        f"{_bounds(_largest(no_tension, 'b_elements', 'b_error_elements'))} wherever "
+        "`slip_zone` gives no validity warning; with tension, where no warning is given, b "
+        f"stays {_bounds(_largest(tension, 'b_elements', 'b_error_elements'))} while the "
+        "paper's (22) misses by "
+    )
+    if paper is not None:
+        sentence += (
+            f"{_bounds(abs(float(paper['b_paper_elements'])) / float(paper['b_error_elements']))}"
+            f" (up to {100 * _largest(tension, 'b_paper_fraction'):.0f} % of the slip-zone "
+            "width); "
+        )
+    which = "all" if uncovered_warned == len(uncovered) else str(uncovered_warned)
+    sentence += (
+        f"b's error exceeds its stated accuracy plus the solver's bound at {len(uncovered)} of "
+        f"the {len(slipping)} slipping edges, {which} of them with a validity warning (there b "
+        f"errs by up to {_largest(warned, 'b_elements'):.1f} elements)."
+    )
+    alone = [row for row in slipping if row["other_edge"] == "none"]
+    lines += ["", sentence, ""]
+    if alone:
+        alone_quiet = [row for row in alone if row["validity_warning"] == "0"]
+        lines += [
+            f"Where the other edge does not slip ({len(alone)} edges), b uses a branch that is "
+            "not derived; its largest error is "
+            f"{_bounds(_largest(alone_quiet, 'b_elements', 'b_error_elements'))} without a "
+            f"validity warning and {_largest(alone, 'b_elements'):.1f} elements with one.",
+            "",
+        ]
+    return lines
+
+
 def render_report(
     run: DerivationRun,
     paper_equations: Mapping[str, str] | None = None,
     *,
     languages: Mapping[str, Sequence[str]] | None = None,
+    error_map: str | None = None,
 ) -> str:
     """Markdown text of ``generated/report/derivation.md`` for a :class:`DerivationRun`.
 
@@ -176,7 +337,8 @@ def render_report(
     ``paper_equations`` maps equation numbers to the paper's printed LaTeX (default: the run's
     own ``paper_equations`` record), used where a check recorded no ``printed`` form;
     ``languages`` maps each function to the languages it is emitted in (a column of the table
-    of generated functions).
+    of generated functions); ``error_map`` is the text of the committed error map's CSV (its
+    summary follows the results beyond the paper; left out when None).
     """
     checks: list[EquationCheck] = list(run.checks)
     formulas: list[Formula] = list(run.formulas)
@@ -276,6 +438,9 @@ def render_report(
         "No result beyond the paper recorded by the derivations yet.",
         anchored,
     )
+
+    if error_map is not None:
+        lines += error_map_section(error_map)
 
     lines += ["## Generated functions", ""]
     if languages is not None:

@@ -84,6 +84,9 @@ def run_derivations(directory: Path, *, progress: bool = True) -> DerivationRun:
 PYTHON_FOLDER = PACKAGE
 REPORT_FOLDER = "report"
 REPORT_FILE = "derivation.md"
+#: The committed error map (written by `make error-map`, not by the code generator), which the
+#: report summarises.
+ERROR_MAP_FILE = "error_map.csv"
 PYTHON_LANGUAGE = "Python"
 
 
@@ -143,8 +146,11 @@ def render_package(run: DerivationRun, reduced: Sequence[Reduced] | None = None)
     return format_sources(sources)
 
 
-def render_all(run: DerivationRun) -> Generated:
-    """Every generated file, in every language, from one run's records (each CSE'd once)."""
+def render_all(run: DerivationRun, error_map: str | None = None) -> Generated:
+    """Every generated file, in every language, from one run's records (each CSE'd once).
+
+    ``error_map``: the committed error map's CSV text, summarised in the report (or None).
+    """
     reduced = [reduce_formula(formula) for formula in _module_order(run)]
     names = [item.formula.name for item in reduced]
     languages: dict[str, list[str]] = {name: [PYTHON_LANGUAGE] for name in names}
@@ -160,7 +166,7 @@ def render_all(run: DerivationRun) -> Generated:
         [item.formula for item in reduced], dict(available)
     )
     trees[PYTHON_FOLDER] = Tree(python_files, (".py", ".json"))
-    report = render_report(run, languages=available)
+    report = render_report(run, languages=available, error_map=error_map)
     trees[REPORT_FOLDER] = Tree({REPORT_FILE: report}, (), owned=(REPORT_FILE,))
     return Generated(dict(sorted(trees.items())), available)
 
@@ -254,6 +260,7 @@ def check_fresh(
             command = [
                 sys.executable, "-m", "asymslip.codegen", "generate",
                 "--derivations", str(derivations), "--root", str(out), "--quiet",
+                "--error-map", str(root / REPORT_FOLDER / ERROR_MAP_FILE),
             ]  # fmt: skip
             jobs.append((seed, out, subprocess.Popen(command, env=env)))
         failed = False

@@ -10,7 +10,8 @@ elements and extrapolates.  Runtime needs NumPy only (a typed profile needs SymP
 
 The project's independent truth where no exact solution exists (bulk tension, asymmetric
 profiles, general load paths): it never imports the asymptotes to compute; only
-:mod:`asymslip.solver.compare` puts them side by side.
+:mod:`asymslip.solver.compare` puts them side by side, and :mod:`asymslip.solver.error_map`
+over a grid of cycles (the error map).
 
 API
 ---
