@@ -29,9 +29,10 @@ env: $(STAMP) ## create .venv and install asymslip with its extras
 generate: $(STAMP) ## run the derivations once; write generated/{asymslip_gen,c,fortran,matlab,report}
 	$(PY) -m asymslip.codegen generate
 
-check-generated: $(STAMP) ## regenerate every tree under two hash seeds and diff; check fig5.csv
+check-generated: $(STAMP) ## regenerate every tree under two hash seeds and diff; check the figures' data
 	$(PY) -m asymslip.codegen check
 	$(PY) -m asymslip figure fig5 --check generated/figures
+	$(PY) -m asymslip figure error-map --check generated/report
 
 verify: $(STAMP) ## run every derivation, one line per paper equation
 	$(PY) -m asymslip.codegen verify

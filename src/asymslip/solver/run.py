@@ -199,7 +199,9 @@ def solve(
         Number of elements N of the grid over the computational domain (the largest contact
         plus 3 % on each side), at least 64.
     steps
-        Load steps per segment of the path, at least 1.
+        Load steps per segment of the path, at least 1.  Where one edge sticks under bulk
+        tension the stick boundary of the other converges like 1/steps (about 0.02 element
+        off at the default 20); otherwise the steps change it by less than 1e-3 element.
     E_star
         Plane-strain contact modulus; needed with a profile, optional with a law.
     tolerance
