@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import functools
 import keyword
+import math
 import pprint
 import textwrap
 from collections.abc import Mapping, Sequence
@@ -113,11 +114,17 @@ def _check_increasing(derived: Mapping[str, Any], values: Mapping[str, float],
     unknown = sorted(set(values) - set(names))
     if unknown:
         raise InputError("check", f"{', '.join(unknown)} is not a parameter of the law")
+    # Non-finite values first, and without showing them: SymPy would turn them into oo or nan
+    # and the message would blame the law.
     for name, value in values.items():
+        if not math.isfinite(value):
+            raise InputError("check", f"{name} must be finite (not inf or nan)")
         if not value > 0:
             raise InputError("check", f"{name} must be > 0 (parameters are {PARAMETER_RULE})",
                              value)  # fmt: skip
     for half_width in half_widths:
+        if not math.isfinite(half_width):
+            raise InputError("check_a", "half-widths must be finite (not inf or nan)")
         if not half_width > 0:
             raise InputError("check_a", "half-widths must be > 0", half_width)
     substitution = {symbol: sympy.Float(values[symbol.name], 30) for symbol in derived["params"]}
