@@ -13,7 +13,8 @@ def register(commands: argparse._SubParsersAction) -> None:
         description="Write the paper's Fig. 5 (exact solid, asymptotic dashed) as PNG and CSV "
         "into a folder, or check that the folder's fig5.csv is what would be written now.",
     )  # fmt: skip
-    figure.add_argument("name", choices=["fig5"], help="which figure")
+    figure.add_argument("name", choices=["fig5"], metavar="FIGURE",
+                        help="which figure: fig5")  # an error names FIGURE, as usage shows it
     where = figure.add_mutually_exclusive_group(required=True)
     where.add_argument("--out", type=Path, metavar="DIR", help="output folder")
     where.add_argument("--check", type=Path, metavar="DIR",
