@@ -6,6 +6,8 @@ import argparse
 import sys
 from pathlib import Path
 
+from ..errors import InputError
+
 
 def register(commands: argparse._SubParsersAction) -> None:
     figure = commands.add_parser(
@@ -26,6 +28,10 @@ def run(args: argparse.Namespace) -> int:
     from ..figures import stale_fig5_lines, write_fig5
 
     if args.check is not None:
+        committed = args.check / "fig5.csv"
+        if not committed.is_file():  # nothing to compare: not "stale", a wrong folder
+            raise InputError("check", f"{committed} does not exist: give the folder that holds "
+                             "the fig5.csv to check (write one with --out)")  # fmt: skip
         diff = stale_fig5_lines(args.check)
         if diff:
             sys.stdout.writelines(diff)
