@@ -671,6 +671,18 @@ def sweep_check(out: str, lam: list[float]) -> Callable[..., None]:
     return check
 
 
+def slip_check(points: list[float]) -> Callable[..., None]:
+    """Fig. 5's cycle slips forward at the right edge: no slip in the stick zone (x < b), and
+    h < 0 in the slip zone (the traction resists the slip; see ``asymslip slip --help``)."""
+
+    def check(result: dict, folder: Path) -> None:
+        assert result["x"] == points
+        for x, h in zip(result["x"], result["slip"], strict=True):
+            assert h == 0 if x < result["b"] else h < 0
+
+    return check
+
+
 def derive_check(name: str, summary: str) -> Callable[..., None]:
     def check(text: str, folder: Path) -> None:
         assert re.search(summary, text), text
@@ -785,10 +797,12 @@ def valid_cases() -> list[Valid]:
         Valid("traction at the left edge", ("traction", *hertz(), "--edge", "left", "--x", "-11.5",
                                             "0.44", "--json"),
               traction_check([-11.5, 0.44], [True, False])),
-        Valid("slip --x -1e-2 11.5", ("slip", *hertz(), "--x", "-1e-2", "11.5", "--json"), None),
+        Valid("slip --x -1e-2 11.5", ("slip", *hertz(), "--x", "-1e-2", "11.5", "--json"),
+              slip_check([-0.01, 11.5])),
         Valid("slip with a table law and --E-star", ("slip", "--law", "table", "--table",
                                                      "{d}/hertz.csv", "--E-star", "1", *cycle(),
-                                                     "--x", "11.5", "--json"), None),
+                                                     "--x", "0", "11.5", "--json"),
+              slip_check([0.0, 11.5])),
         # derive, sweep, figure
         Valid("derive a law given with a leading minus", ("derive", "--P-of-a", "-1/a+k",
                                                           "--params", "k", "--name", "minus",
