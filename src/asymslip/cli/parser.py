@@ -3,7 +3,8 @@
 argparse takes ``-1e2`` for an option (its negative-number pattern knows no exponent) and so
 refuses ``--Q1 -1e2``; the parser here recognises every decimal number, with or without an
 exponent, and ``-inf``/``-nan`` (which the API then refuses as non-finite, for the right
-reason).
+reason).  Likewise a formula that starts with a minus sign (``--P-of-a "-1/a+k"``) is a value,
+not an unknown option.
 """
 
 from __future__ import annotations
@@ -14,6 +15,9 @@ from typing import NoReturn
 
 #: A negative number as people type it: -3, -3., -.5, -1e2, -1.5E-3, -inf, -nan.
 NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$|^-(inf|infinity|nan)$", re.I)
+#: A value that starts with a minus sign but holds a character no option name has (no "="):
+#: a formula such as ``--P-of-a "-1/a+k"``.
+NOT_AN_OPTION = re.compile(r"^-(?!-)[\w-]*[^\w=-][^=]*$")
 
 
 class Parser(argparse.ArgumentParser):
@@ -23,6 +27,12 @@ class Parser(argparse.ArgumentParser):
         super().__init__(*args, **kwargs)
         # argparse's own pattern (private, stable since Python 3.2) knows no exponent.
         self._negative_number_matcher = NEGATIVE_NUMBER
+
+    def _parse_optional(self, arg_string: str):  # noqa: ANN202 - argparse's private hook
+        # argparse takes anything that starts with "-" for an option unless it has a space.
+        if NOT_AN_OPTION.match(arg_string):
+            return None
+        return super()._parse_optional(arg_string)
 
     def error(self, message: str) -> NoReturn:
         self.exit(2, f"{self.prog}: error: {message}\n")
