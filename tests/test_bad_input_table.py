@@ -158,6 +158,7 @@ FILES = {
     "cases_comments.csv": "# no header\n\n",
     "cases_no_Q2.csv": "P1,Q1,P2\n100,0,105\n",
     "cases_clash.csv": "P1,Q1,P2,Q2,b\n100,0,105,1,3\n",
+    "cases_wide.csv": "P1,Q1,P2,Q2\n100,-9,1e4,999\n100,0,105,1\n",
     "cases_spreadsheet.csv": "\ufeffP1,Q1,P2,Q2\r\n100,0,105,1\r\n100,-1e-1,105,5e-1\r\n",
     # a mu column: lines 3 and 6 fine (6 takes --mu), 4 zero, 5 text
     "cases_mu.csv": "P1,Q1,P2,Q2,mu\n100,0,105,1,0.1\n100,0,105,1,0\n100,0,105,1,high\n"
@@ -683,6 +684,16 @@ def slip_check(points: list[float]) -> Callable[..., None]:
     return check
 
 
+def wide_sweep_check(text: str, folder: Path) -> None:
+    with open(folder / "wide.csv", newline="") as handle:
+        wide, fig5 = csv.DictReader(handle)
+    # P1 = 100 -> P2 = 1e4: the corrective-stick (40) b is far outside the contact; (22) is not.
+    assert wide["b_corrective_stick"] == "" and "(40) puts the stick boundary" in wide["warnings"]
+    assert 0 < float(wide["b"]) <= hertz_a(1e4)
+    assert float(fig5["b_corrective_stick"]) == pytest.approx(float(fig5["b"]), rel=1e-3)
+    assert fig5["warnings"] == ""
+
+
 def derive_check(name: str, summary: str) -> Callable[..., None]:
     def check(text: str, folder: Path) -> None:
         assert re.search(summary, text), text
@@ -818,6 +829,9 @@ def valid_cases() -> list[Valid]:
               ("sweep", "{d}/cases_spreadsheet.csv", *HERTZ, "--mu", "0.1", "--out",
                "{d}/spreadsheet.csv"),
               sweep_check("spreadsheet.csv", [0.2, 0.12]), stderr=r"^asymslip sweep: 2 rows"),
+        Valid("sweep: an estimate outside the contact is left empty, with its warning",
+              ("sweep", "{d}/cases_wide.csv", *HERTZ, "--mu", "0.1", "--edge", "right", "--out",
+               "{d}/wide.csv"), wide_sweep_check, stderr=r"^asymslip sweep: 2 rows"),
         Valid("figure --check of the committed Fig. 5", ("figure", "fig5", "--check",
                                                          str(Path(__file__).parents[1] / "generated"
                                                              / "figures")),

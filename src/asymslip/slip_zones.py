@@ -71,6 +71,13 @@ DISAGREE_FIRST_ORDER = 1 << 8
 DISAGREE_CORRECTIVE_STICK = 1 << 9
 DISAGREE_EXACT = 1 << 10
 OTHER_EDGE_STICKS = 1 << 11
+#: The other estimates of b, left out (null) where they fall outside the contact (0, a2]: a
+#: stick boundary there is no answer, and printing it would pass it off as one.  Each with its
+#: equation and the disagreement flag it then replaces.
+ESTIMATES_CHECKED = {"b_paper": ("(22)", DISAGREE_PAPER),
+                     "b_first_order": ("(28)", DISAGREE_FIRST_ORDER),
+                     "b_corrective_stick": ("(40)", DISAGREE_CORRECTIVE_STICK)}  # fmt: skip
+_OUTSIDE_FLAGS = {key: 1 << (12 + i) for i, key in enumerate(ESTIMATES_CHECKED)}
 _DISAGREEMENT_TEXT = {
     DISAGREE_PAPER: "(22) (b_paper) differs from b by more than their stated accuracies: with "
     "bulk tension (22) carries a spurious dP^2 term (erratum 22-T); take b",
@@ -104,6 +111,11 @@ def warning_texts(flags: int, law: ContactLaw) -> list[str]:
         if flags & bit:
             texts.append(law.extrapolation_note(label))
     texts.extend(text for bit, text in _DISAGREEMENT_TEXT.items() if flags & bit)
+    for key, bit in _OUTSIDE_FLAGS.items():
+        if flags & bit:
+            texts.append(f"{key}: the estimate {ESTIMATES_CHECKED[key][0]} puts the stick "
+                         "boundary outside the contact (0, a2], so it is no answer for this "
+                         "cycle and is left out (null)")  # fmt: skip
     return texts
 
 
@@ -276,6 +288,11 @@ def _finish_edge(law: ContactLaw, state: LawState, mu: FloatArray, verdict: Verd
         flags = flags | _where(values[key] > VALIDITY_THRESHOLD, bit, 0)
     flags = flags | _where(law.extrapolated(state.P1), EXTRAPOLATED_P1, 0)
     flags = flags | _where(law.extrapolated(state.P2), EXTRAPOLATED_P2, 0)
+    for key, (_, disagreement) in ESTIMATES_CHECKED.items():
+        inside = (values[key] > 0) & (values[key] <= a2) | (values[key] != values[key])
+        if not (inside.all() if _is_array(inside) else inside):  # NaN: not derived here
+            values[key] = _where(inside, values[key], np.nan)
+            flags = _where(inside, flags, (flags & ~disagreement) | _OUTSIDE_FLAGS[key])
     return EdgeValues(values, flags)
 
 
@@ -417,7 +434,9 @@ class SlipZoneResult:
     direction (for the left edge, the distance of the left stick boundary from the centre).
     ``b_exact`` is None (NaN in arrays) where no exact solution exists (eta != 0, an
     asymmetric contact); so are ``b_paper``, ``b_corrective_stick`` and ``P_K``-based values
-    for an edge with its own multipliers (a calibrated contact), where they are not derived.
+    for an edge with its own multipliers (a calibrated contact), where they are not derived,
+    and ``b_paper``, ``b_first_order`` and ``b_corrective_stick`` where they fall outside the
+    contact (0, a2], which ``warnings`` then says.
     ``errors`` is None when every element is valid; with ``invalid="mark"`` it lists each
     element's reason (None where valid) and the invalid elements' numbers are NaN.
     """
