@@ -157,6 +157,8 @@ FILES = {
     "cases_empty.csv": "",
     "cases_comments.csv": "# no header\n\n",
     "cases_no_Q2.csv": "P1,Q1,P2\n100,0,105\n",
+    "cases_header_only.csv": "P1,Q1,P2,Q2\n",
+    "cases_binary.csv": b"P1,Q1,P2,Q2\n100,0,105,1\n100,0,\xff05,1\n",
     "cases_clash.csv": "P1,Q1,P2,Q2,b\n100,0,105,1,3\n",
     "cases_wide.csv": "P1,Q1,P2,Q2\n100,-9,1e4,999\n100,0,105,1\n",
     "cases_spreadsheet.csv": "\ufeffP1,Q1,P2,Q2\r\n100,0,105,1\r\n100,-1e-1,105,5e-1\r\n",
@@ -558,6 +560,10 @@ def sweep_cases() -> list[Bad]:
         Bad("sweep: CASES empty", sweep("{d}/cases_empty.csv"), "CASES", r"no header"),
         Bad("sweep: CASES only comments", sweep("{d}/cases_comments.csv"), "CASES",
             r"no header"),
+        Bad("sweep: CASES with a header and no rows", sweep("{d}/cases_header_only.csv"), "CASES",
+            r"has a header but no rows"),
+        Bad("sweep: CASES not UTF-8", sweep("{d}/cases_binary.csv"), "CASES",
+            r"line 3: is not UTF-8"),
         Bad("sweep: CASES without Q2", sweep("{d}/cases_no_Q2.csv"), "CASES",
             r"line 1: the header has no column Q2"),
         Bad("sweep: an input column named like an output", sweep("{d}/cases_clash.csv"),
@@ -911,6 +917,21 @@ def test_the_table_has_at_least_80_cases_across_every_command():
     commands = {case.argv[0] for case in BAD if case.argv} | {case.argv[0] for case in VALID}
     assert {"slip-zone", "traction", "slip", "figure", "derive", "sweep"} <= commands
     assert len(BAD) + len(VALID) + len(ROW_ERRORS) >= 80
+
+
+SWEEP_FILE_CASES = [case for case in BAD if case.id.startswith("sweep: CASES")]
+
+
+@pytest.mark.parametrize("case", SWEEP_FILE_CASES, ids=[case.id for case in SWEEP_FILE_CASES])
+def test_bad_cases_files_are_refused_the_same_without_pyarrow(case: Bad, files: Path,
+                                                              monkeypatch: pytest.MonkeyPatch):
+    """The sweep reads with NumPy alone when pyarrow (the parquet extra) is not installed."""
+    from asymslip.files import arrow
+
+    monkeypatch.setattr(arrow, "available", lambda: False)
+    status, out, err = run(expand(case.argv, files))
+    assert status == 2 and len(err.splitlines()) == 1, err
+    assert names_option(err, case.option) and re.search(case.rule, err), err
 
 
 # --- real processes: exit status, traceback, warnings at import, missing extras ----------------
