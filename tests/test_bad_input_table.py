@@ -26,7 +26,7 @@ import os
 import re
 import subprocess
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -949,10 +949,6 @@ def test_bad_cases_files_are_refused_the_same_without_pyarrow(case: Bad, files: 
 
 
 # --- real processes: exit status, traceback, warnings at import, missing extras ----------------
-def python_env() -> dict[str, str]:
-    return {**os.environ, "PYTHONWARNINGS": "error"}
-
-
 #: A sample of the table run as real `python -m asymslip` processes under PYTHONWARNINGS=error.
 PROCESS_SAMPLE = (
     "slip-zone --Q1 -inf", "gross sliding at state 1", "--Q1=1e308 --Q2=-1e308 overflows",
@@ -961,34 +957,79 @@ PROCESS_SAMPLE = (
 )  # fmt: skip
 VALID_PROCESS_SAMPLE = ("--Q1 -1e-1 (negative exponent)",)
 
+#: (extra, the package it provides, a command that needs it, the file it must not leave).
+MISSING_EXTRAS = [
+    ("plot", "matplotlib", ("figure", "fig5", "--out", "{d}/figures_without_matplotlib"),
+     "figures_without_matplotlib"),
+    ("special", "scipy", ("traction", "--law", "power", "--A", "1", "--n", "3", "--E-star", "1",
+                          *cycle(), "--x", "1"), None),
+    ("derive", "sympy", ("derive", "--P-of-a", "a**2", "--name", "square", "--out",
+                         "{d}/square.py"), "square.py"),
+    ("parquet", "pyarrow", ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out",
+                            "{d}/out.parquet"), "out.parquet"),
+]  # fmt: skip
+#: (package, a command that must work without it): only what needs an extra may refuse.
+WITHOUT_EXTRAS = [
+    ("scipy", ("slip-zone", "--law", "power", "--A", "1", "--n", "2.5", "--E-star", "1",
+               *cycle(), "--json")),
+    ("pyarrow", ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out",
+                 "{d}/without_pyarrow.csv")),
+    ("matplotlib", ("figure", "fig5", "--check", str(Path(__file__).parents[1] / "generated"
+                                                     / "figures"))),
+]  # fmt: skip
 
-def start(arguments: list[str], cwd: Path) -> subprocess.Popen[str]:
-    return subprocess.Popen([sys.executable, *arguments], cwd=cwd, env=python_env(),
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)  # fmt: skip
+
+def blocking(package: str) -> list[str]:
+    """``python -c`` arguments that run asymslip with ``package`` unimportable, as if it were
+    not installed (``sys.modules[name] = None`` makes every import of it fail)."""
+    return ["-c", f"import sys; sys.modules[{package!r}] = None; "
+            "from asymslip.cli import main; sys.exit(main(sys.argv[1:]))"]  # fmt: skip
 
 
-def finish(running: dict[str, subprocess.Popen[str]]) -> dict[str, tuple[int, str, str]]:
-    """Wait for every process (all of them, before any assertion): name -> (status, out, err)."""
+@pytest.fixture(scope="module", autouse=True)
+def processes(files: Path) -> Iterator[dict[tuple[str, str], subprocess.Popen[str]]]:
+    """Every real process of this file, started together before the first test, so that they
+    run beside one another and beside the in-process table (about one process per core of
+    wall time in all); the tests at the end collect them."""
+    bad = {case.id: case for case in BAD}
+    valid = {case.id: case for case in VALID}
+    commands: dict[tuple[str, str], list[str]] = {}
+    for name in PROCESS_SAMPLE:
+        commands["sample", name] = ["-m", "asymslip", *expand(bad[name].argv, files)]
+    for name in VALID_PROCESS_SAMPLE:
+        commands["sample", name] = ["-m", "asymslip", *expand(valid[name].argv, files)]
+    for extra, package, argv, _ in MISSING_EXTRAS:
+        commands["missing", extra] = [*blocking(package), *expand(argv, files)]
+    for package, argv in WITHOUT_EXTRAS:
+        commands["without", package] = [*blocking(package), *expand(argv, files)]
+    environment = {**os.environ, "PYTHONWARNINGS": "error"}
+    running = {key: subprocess.Popen([sys.executable, *arguments], cwd=files, env=environment,
+                                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+               for key, arguments in commands.items()}  # fmt: skip
+    yield running
+    for process in running.values():  # none is left behind, whatever the tests did
+        if process.poll() is None:
+            process.kill()
+        process.communicate()
+
+
+def finish(running: dict[tuple[str, str], subprocess.Popen[str]],
+           kind: str) -> dict[str, tuple[int, str, str]]:  # fmt: skip
+    """Wait for the processes of one kind: name -> (exit status, stdout, stderr)."""
     results = {}
-    for name, process in running.items():
-        out, err = process.communicate(timeout=120)
-        results[name] = (process.returncode, out, err)
+    for (group, name), process in running.items():
+        if group == kind:
+            out, err = process.communicate(timeout=300)
+            results[name] = (process.returncode, out, err)
     return results
 
 
 def test_a_sample_of_the_table_behaves_the_same_in_real_processes_under_warnings_as_errors(
-    files: Path,
+    files: Path, processes: dict
 ):
     bad = {case.id: case for case in BAD}
     valid = {case.id: case for case in VALID}
-    before = (files / "cases.csv").read_bytes()
-    # All at once: the processes overlap, so the sample costs about one process per core.
-    running = {name: start(["-m", "asymslip", *expand(bad[name].argv, files)], files)
-               for name in PROCESS_SAMPLE}  # fmt: skip
-    running |= {name: start(["-m", "asymslip", *expand(valid[name].argv, files)], files)
-                for name in VALID_PROCESS_SAMPLE}  # fmt: skip
-    results = finish(running)
-    for name, (status, out, err) in results.items():
+    for name, (status, out, err) in finish(processes, "sample").items():
         assert "Traceback" not in err, (name, err)
         if name in bad:
             case = bad[name]
@@ -999,30 +1040,11 @@ def test_a_sample_of_the_table_behaves_the_same_in_real_processes_under_warnings
         else:
             assert status == 0 and err == "", (name, err)
             valid[name].check(json.loads(out), files)
-    assert (files / "cases.csv").read_bytes() == before  # --out was the input: left intact
+    assert (files / "cases.csv").read_bytes() == FILES["cases.csv"].encode()  # input intact
 
 
-MISSING_EXTRAS = [
-    ("plot", "matplotlib", ("figure", "fig5", "--out", "{d}/figures_without_matplotlib"),
-     "figures_without_matplotlib/fig5.csv"),
-    ("special", "scipy", ("traction", "--law", "power", "--A", "1", "--n", "3", "--E-star", "1",
-                          *cycle(), "--x", "1"), None),
-    ("derive", "sympy", ("derive", "--P-of-a", "a**2", "--name", "square", "--out",
-                         "{d}/square.py"), "square.py"),
-    ("parquet", "pyarrow", ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out",
-                            "{d}/out.parquet"), "out.parquet"),
-]  # fmt: skip
-
-
-def test_a_missing_optional_dependency_is_one_line_naming_the_extra(files: Path):
-    """Each extra's package blocked (``sys.modules[name] = None`` makes every import of it
-    fail, as an absent package does): exit 2, one line naming the extra, nothing written."""
-    running = {}
-    for extra, package, argv, _ in MISSING_EXTRAS:
-        script = (f"import sys; sys.modules[{package!r}] = None; "
-                  "from asymslip.cli import main; sys.exit(main(sys.argv[1:]))")  # fmt: skip
-        running[extra] = start(["-c", script, *expand(argv, files)], files)
-    results = finish(running)
+def test_a_missing_optional_dependency_is_one_line_naming_the_extra(files: Path, processes: dict):
+    results = finish(processes, "missing")
     for extra, _, _, written in MISSING_EXTRAS:
         status, out, err = results[extra]
         assert status == 2, (extra, err)
@@ -1030,3 +1052,14 @@ def test_a_missing_optional_dependency_is_one_line_naming_the_extra(files: Path)
         assert f"pip install 'asymslip[{extra}]'" in err, (extra, err)
         if written is not None:
             assert not (files / written).exists()
+
+
+def test_what_needs_no_optional_dependency_works_without_them(files: Path, processes: dict):
+    results = finish(processes, "without")
+    for package, _ in WITHOUT_EXTRAS:
+        status, out, err = results[package]
+        assert status == 0 and "Traceback" not in err, (package, err)
+    assert json.loads(results["scipy"][1])["a1"] > 0  # the power law's slip zone: no 2F1
+    with open(files / "without_pyarrow.csv", newline="") as handle:
+        assert [float(row["lam"]) for row in csv.DictReader(handle)] == [0.2, 0.12]
+    assert results["matplotlib"][1].endswith("fresh\n")  # Fig. 5's CSV needs no matplotlib
