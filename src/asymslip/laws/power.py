@@ -97,8 +97,11 @@ class PowerLaw(ContactLaw):
         return shape_factor(self.n)
 
     @property
-    def _parameters(self) -> tuple[float, float, float, float]:
-        return self.n, self.A, self.E_star, self.shape_factor
+    def _parameters(self) -> tuple[np.float64, np.float64, np.float64, np.float64]:
+        # NumPy scalars, not Python floats: a kernel's A**(3/2) of a huge A is then inf (which
+        # the rules refuse, naming the load) instead of Python's OverflowError.
+        return (np.float64(self.n), np.float64(self.A), np.float64(self.E_star),
+                np.float64(self.shape_factor))  # fmt: skip
 
     def load(self, a: ArrayLike) -> FloatArray:
         return power_law_load(a, *self._parameters)
