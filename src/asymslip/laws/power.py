@@ -88,6 +88,11 @@ class PowerLaw(ContactLaw):
         object.__setattr__(self, "A", float(positive("A", self.A)))
         exponent = as_float_array("n", self.n)
         require(exponent >= 1, "n", "must be >= 1 (n < 1 is not an incomplete contact)", exponent)
+        try:
+            shape_factor(float(exponent))
+        except OverflowError:  # log Gamma(n/2) beyond the double range: n above about 5e305
+            raise InputError("n", "is too large: the factor K(n) of P = K E* A a^n overflows "
+                             "double precision", float(exponent)) from None  # fmt: skip
         object.__setattr__(self, "n", float(exponent))
         object.__setattr__(self, "E_star", float(positive("E_star", self.E_star)))
 
