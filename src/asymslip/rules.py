@@ -29,6 +29,7 @@ asymslip.errors.InputError: mu: must be > 0 (got 0.0; at element 1; 2 of 3 eleme
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -57,10 +58,20 @@ class Rule:
     def message(self, shown: float | None, values: Mapping[str, object]) -> InputError:
         """The error for one element that broke this rule."""
         fields = {
-            key: (f"{value:.6g}" if isinstance(value, float) else value)
+            key: (_number_text(value) if isinstance(value, float) else value)
             for key, value in values.items()
         }
         return InputError(self.parameter, self.text.format(**fields), shown)
+
+
+def _number_text(value: float) -> str:
+    """A value named in a message: 6 digits, or in words where it is not a finite number (a
+    message never prints inf or nan as though they were numbers)."""
+    if math.isfinite(value):
+        return f"{value:.6g}"
+    if math.isnan(value):
+        return "undefined in double precision"
+    return ("a negative number" if value < 0 else "a number") + " beyond double precision"
 
 
 def _rule_table() -> dict[str, Rule]:
