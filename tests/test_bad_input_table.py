@@ -720,6 +720,15 @@ def wide_sweep_check(text: str, folder: Path) -> None:
     assert fig5["warnings"] == ""
 
 
+def wedge_apex_check(result: dict, folder: Path) -> None:
+    """The wedge's pressure is infinite at its apex: (47) there is left out, (49) is not."""
+    assert result["q_diff_exact"][:2] == [None, None]
+    assert math.isfinite(result["q_diff_exact"][2])
+    assert all(math.isfinite(q) for q in result["q_diff"])
+    assert any("q_diff_exact (47) is left out (null) at 2 point(s)" in text
+               for text in result["warnings"])  # fmt: skip
+
+
 def derive_check(name: str, summary: str) -> Callable[..., None]:
     def check(text: str, folder: Path) -> None:
         assert re.search(summary, text), text
@@ -831,6 +840,9 @@ def valid_cases() -> list[Valid]:
               traction_check([0.95 * A2_FIG5], [True])),
         Valid("traction at x = a1", ("traction", *hertz(), "--x", repr(a1), "--json"),
               traction_check([a1], [True])),
+        Valid("traction at the apex of a wedge", ("traction", *_swap(POWER, "--n", "1"),
+                                                  *cycle(), "--x", "0", "5e-324", "0.1", "--json"),
+              wedge_apex_check),
         Valid("traction at the left edge", ("traction", *hertz(), "--edge", "left", "--x", "-11.5",
                                             "0.44", "--json"),
               traction_check([-11.5, 0.44], [True, False])),

@@ -49,7 +49,7 @@ class TractionResult:
     edge: str
     x: list[float]
     q_diff: list[float]
-    q_diff_exact: list[float] | None
+    q_diff_exact: list[float | None] | None
     near_edge: list[bool]
     near_edge_from: float
     b: float
@@ -167,9 +167,22 @@ def traction_difference(
         except NotImplementedError:
             pressures = None
         if pressures is not None:
-            exact = direction * jaeger_ciavarella_traction_difference(*pressures, mu)
+            # The wedge's pressure is infinite at its apex: (47) is inf - inf there, undefined.
+            with np.errstate(invalid="ignore"):
+                exact = direction * jaeger_ciavarella_traction_difference(*pressures, mu)
     near_from = q["a2"] * (1 - NEAR_EDGE_FRACTION)
     flags = int(evaluation.edges[edge].flags)
+    warnings = warning_texts(flags, law.for_edge(edge))
+    exact_values = None
+    if exact is not None:
+        exact = np.asarray(exact, dtype=float) * np.ones(points.shape)
+        defined = np.isfinite(exact)
+        exact_values = [float(value) if ok else None
+                        for value, ok in zip(exact.tolist(), defined.tolist(), strict=True)]
+        if not defined.all():
+            warnings.append(f"q_diff_exact (47) is left out (null) at {int((~defined).sum())} "
+                            "point(s) where the law's pressure is infinite (the apex x = 0 of a "
+                            "wedge): there it is a difference of infinities")  # fmt: skip
     # The left edge is the right edge of the mirrored cycle: back in the global frame a
     # traction along x changes sign.
     global_sign = 1.0 if edge == "right" else -1.0
@@ -177,13 +190,13 @@ def traction_difference(
         edge=edge,
         x=points.tolist(),
         q_diff=(global_sign * np.asarray(asymptotic, dtype=float)).tolist(),
-        q_diff_exact=None if exact is None
-        else (global_sign * np.asarray(exact, dtype=float)).tolist(),
+        q_diff_exact=None if exact_values is None
+        else [None if value is None else global_sign * value for value in exact_values],
         near_edge=(outward >= near_from).tolist(),
         near_edge_from=near_from,
         b=float(b),
         stick_boundary=stick_boundary,
-        warnings=warning_texts(flags, law.for_edge(edge)),
+        warnings=warnings,
     )
 
 

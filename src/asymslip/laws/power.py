@@ -188,8 +188,9 @@ class PowerLaw(ContactLaw):
         position = as_float_array("x", x)
         a = self.half_width(P)
         if self.n == 1.0:
-            # The wedge's pressure is logarithmically infinite at the apex: +inf, not a warning.
-            with np.errstate(divide="ignore"):
+            # The wedge's pressure is logarithmically infinite at the apex: +inf, not a warning
+            # (a/|x| overflows for a subnormal x).
+            with np.errstate(divide="ignore", over="ignore"):
                 return wedge_pressure(position, a, self.A, self.E_star)
         if self.n == 2.0:
             factor = np.ones(np.broadcast_shapes(position.shape, np.shape(a)))  # 2F1(0, 1; 3/2; z)
