@@ -239,14 +239,23 @@ def slip_displacement(
     direction = q["slip_direction"]
     # Along the edge's outward direction, then back to the global x (the left edge's outward
     # direction is -x, which flips the sign of a displacement measured along x).
-    along = direction * slip_on_loading(outward, q["b_consistent"], q["a1"], mu, q["L_I1"],
-                                        q["L_I2"], direction * q["L_II1"],
-                                        direction * q["L_II2"], E_star)  # fmt: skip
-    global_sign = 1.0 if edge == "right" else -1.0
+    with np.errstate(all="ignore"):  # an overflow is refused below, not warned
+        along = direction * slip_on_loading(outward, q["b_consistent"], q["a1"], mu,
+                                            q["L_I1"], q["L_I2"], direction * q["L_II1"],
+                                            direction * q["L_II2"], E_star)  # fmt: skip
+        global_sign = 1.0 if edge == "right" else -1.0
+        slip = global_sign * np.asarray(along, dtype=float)
+        inverse_modulus = np.float64(1.0) / np.float64(E_star)
+    if not np.isfinite(slip).all():
+        if not np.isfinite(inverse_modulus):
+            raise InputError("E_star", "is too small: the slip displacement scales as 1/E*, "
+                             "which overflows double precision", E_star)  # fmt: skip
+        raise InputError("cycle", "the slip displacement overflows double precision at these "
+                         "positions")  # fmt: skip
     return SlipResult(
         edge=edge,
         x=points.tolist(),
-        slip=(global_sign * np.asarray(along, dtype=float)).tolist(),
+        slip=slip.tolist(),
         b=q["b_consistent"],
         warnings=warning_texts(int(evaluation.edges[edge].flags), law.for_edge(edge)),
     )
