@@ -161,14 +161,15 @@ def traction_difference(
     )  # fmt: skip
     exact = None
     if not np.isnan(q["b_exact"]):
-        try:
-            pressures = [law.pressure(points, P)
-                         for P in (float(cycle.P2), float(cycle.P1), q["P_K"])]  # fmt: skip
-        except NotImplementedError:
-            pressures = None
-        if pressures is not None:
-            # The wedge's pressure is infinite at its apex: (47) is inf - inf there, undefined.
-            with np.errstate(invalid="ignore"):
+        # The wedge's pressure is infinite at its apex, so (47) is inf - inf there; a pressure
+        # can also overflow (a huge contact).  Such points are left out below, not warned.
+        with np.errstate(all="ignore"):
+            try:
+                pressures = [law.pressure(points, P)
+                             for P in (float(cycle.P2), float(cycle.P1), q["P_K"])]  # fmt: skip
+            except NotImplementedError:
+                pressures = None
+            if pressures is not None:
                 exact = direction * jaeger_ciavarella_traction_difference(*pressures, mu)
     near_from = q["a2"] * (1 - NEAR_EDGE_FRACTION)
     flags = int(evaluation.edges[edge].flags)
@@ -181,8 +182,8 @@ def traction_difference(
                         for value, ok in zip(exact.tolist(), defined.tolist(), strict=True)]
         if not defined.all():
             warnings.append(f"q_diff_exact (47) is left out (null) at {int((~defined).sum())} "
-                            "point(s) where the law's pressure is infinite (the apex x = 0 of a "
-                            "wedge): there it is a difference of infinities")  # fmt: skip
+                            "point(s) where it is not a finite double: the law's pressure is "
+                            "infinite there (the apex x = 0 of a wedge) or overflows")  # fmt: skip
     # The left edge is the right edge of the mirrored cycle: back in the global frame a
     # traction along x changes sign.
     global_sign = 1.0 if edge == "right" else -1.0
