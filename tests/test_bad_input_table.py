@@ -1034,9 +1034,13 @@ def processes(files: Path) -> Iterator[dict[tuple[str, str], subprocess.Popen[st
     for package, argv in WITHOUT_EXTRAS:
         commands["without", package] = [*blocking(package), *expand(argv, files)]
     environment = {**os.environ, "PYTHONWARNINGS": "error"}
+    commands["pipe", "closed"] = ["-m", "asymslip", "slip-zone", *hertz()]
     running = {key: subprocess.Popen([sys.executable, *arguments], cwd=files, env=environment,
                                      stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
                for key, arguments in commands.items()}  # fmt: skip
+    # `asymslip ... | head -1`: the reader is gone before the command prints.
+    running["pipe", "closed"].stdout.close()
+    running["pipe", "closed"].stdout = None
     yield running
     for process in running.values():  # none is left behind, whatever the tests did
         if process.poll() is None:
@@ -1094,3 +1098,10 @@ def test_what_needs_no_optional_dependency_works_without_them(files: Path, proce
     with open(files / "without_pyarrow.csv", newline="") as handle:
         assert [float(row["lam"]) for row in csv.DictReader(handle)] == [0.2, 0.12]
     assert results["matplotlib"][1].endswith("fresh\n")  # Fig. 5's CSV needs no matplotlib
+
+
+def test_a_reader_that_goes_away_stops_the_command_quietly(processes: dict):
+    """``asymslip slip-zone ... | head -1``: no BrokenPipeError traceback, the status of a
+    command stopped by SIGPIPE (128 + 13)."""
+    status, out, err = finish(processes, "pipe")["closed"]
+    assert (status, err) == (141, "")
