@@ -172,6 +172,14 @@ FILES = {
     # module laws: one row inside the cubic's range, one beyond its maximum load
     "cases_cubic.csv": "P1,Q1,P2,Q2\n1,0,1.05,0.01\n100,0,105,1\n2,0,2.1,0.02\n",
     "not_a_law.py": "x = 1\n",
+    # law modules written by hand in the form `asymslip derive` writes (which refuses these)
+    "inverse.py": "import numpy\n__asymslip_law__ = {'name': 'inverse', 'params': []}\n"
+    "def load(a):\n    return 1 / a\ndef load_slope(a):\n    return -1 / a**2\n"
+    "def normal_edge_multiplier(a):\n    return numpy.sqrt(2 / a) / numpy.pi * load_slope(a)\n",
+    "linear_down.py": "import numpy\n__asymslip_law__ = {'name': 'linear_down', 'params': ['k']}\n"
+    "def load(a, k):\n    return k - a\ndef load_slope(a, k):\n    return -1 + 0 * a\n"
+    "def normal_edge_multiplier(a, k):\n"
+    "    return numpy.sqrt(2 / a) / numpy.pi * load_slope(a, k)\n",
     "broken_law.py": "def load(a:\n",
     "law.txt": "P(a) = a**2\n",
 }
@@ -496,6 +504,11 @@ def law_cases() -> list[Bad]:
                                           "--param", "k=2", *cycle()), "--param",
             r"k is given twice"),
         # derived laws used beyond what they can carry
+        Bad("a module for 1/a written by hand", (*module, "{d}/inverse.py", *cycle()), "--P1",
+            r"no root a > 0 where P increases with a"),
+        Bad("a module for k - a written by hand", (*module, "{d}/linear_down.py", "--param",
+                                                   "k=200", *cycle()), "--P1",
+            r"no root a > 0 where P increases with a"),
         Bad("cubic law beyond its maximum load", (*module, "{d}/cubic.py", "--param",
                                                   "E_star=1", "--param", "k=0.1", *cycle()),
             "--P1", r"no contact half-width of the cubic law carries this load"),

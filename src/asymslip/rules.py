@@ -96,9 +96,11 @@ def _rule_table() -> dict[str, Rule]:
          "would slide as a whole (gross sliding), not slip partially"),
         # The contact law at the loads of the cycle.
         ("law_range_1", "P1", "no contact half-width of the {law} law carries this load "
-         "(P(a) = P1 has no root a > 0): the load is outside the law's range{range}"),
+         "(P(a) = P1 has no root a > 0 where P increases with a): the load is outside the "
+         "law's range{range}"),
         ("law_range_2", "P2", "no contact half-width of the {law} law carries this load "
-         "(P(a) = P2 has no root a > 0): the load is outside the law's range{range}"),
+         "(P(a) = P2 has no root a > 0 where P increases with a): the load is outside the "
+         "law's range{range}"),
         ("law_finite_1", "P1", "the {law} law gives a non-finite contact half-width or edge "
          "multiplier at this load (overflow in double precision)"),
         ("law_finite_2", "P2", "the {law} law gives a non-finite contact half-width or edge "
