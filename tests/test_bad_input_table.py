@@ -1118,3 +1118,23 @@ def test_a_reader_that_goes_away_stops_the_command_quietly(processes: dict):
     command stopped by SIGPIPE (128 + 13)."""
     status, out, err = finish(processes, "pipe")["closed"]
     assert (status, err) == (141, "")
+
+
+@pytest.mark.parametrize("eta, other_edge", [(0.0, 1.0), (0.01, 1.0), (-0.02, -1.0)])
+def test_the_second_order_width_in_scaled_units_is_the_kernel_at_ordinary_values(eta, other_edge):
+    """slip_zones evaluates b2 with mu = 1 in units of a1 and dP (so that loads of 1e300 and
+    mu = 1e-300 do not overflow its terms); at ordinary values that is the kernel itself."""
+    from asymslip_gen.second_order import slip_zone_width_second_order_from_multiplier as kernel
+
+    law, mu, P1, dP, lam = HertzLaw(1, 1), 0.1, 100.0, 5.0, 0.2
+    state = law.cycle_state(P1, dP)
+    a1 = float(state.a1)
+    direct = kernel(mu, lam, eta, a1, state.a_slope1, state.L_I1, state.L_I_slope1, dP,
+                    other_edge)  # fmt: skip
+    scaled = a1 * kernel(1.0, lam / mu, eta * a1 / mu, 1.0, state.a_slope1 * dP / a1,
+                         state.L_I1 * a1**1.5 / dP, state.L_I_slope1 * a1**1.5, 1.0, other_edge)
+    assert float(scaled) == pytest.approx(float(direct), rel=1e-14)
+    sigma2 = eta * dP
+    result = slip_zone(law, LoadCycle(P1, 0.0, P1 + dP, lam * dP, 0.0, sigma2), mu)
+    if other_edge == 1.0:  # the left edge slips the same way in the global frame here
+        assert result.slip_zone_width == pytest.approx(float(direct), rel=1e-14)

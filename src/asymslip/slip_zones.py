@@ -216,8 +216,15 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
     # the global frame when the two own-frame directions differ in sign (the left edge's frame
     # is mirrored); +1 too where it does not slip (derivations/second_order_slip_zone.py).
     other_edge = _where(other_direction == 0, 1.0, -direction * other_direction)
-    width = _where(slips, kernels.slip_zone_width_second_order_from_multiplier(
-        mu, lam_o, eta_o, a1, state.a_slope1, L_I1, state.L_I_slope1, dP, other_edge), 0.0)
+    # The kernel is a polynomial whose terms (a1^3 eta^2 dL_I/dP dP, mu^2 ...) overflow or
+    # underflow for loads of 1e300 or mu = 1e-300 though the width does not; it depends on
+    # lam and eta through lam/mu and eta/mu and is homogeneous in length and load, so it is
+    # evaluated with mu = 1 in units of a1 and dP (the same digits at ordinary values) and
+    # scaled back.
+    scale = a1**1.5 / dP
+    width = _where(slips, a1 * kernels.slip_zone_width_second_order_from_multiplier(
+        1.0, lam_o / mu, eta_o * a1 / mu, 1.0, state.a_slope1 * dP / a1, L_I1 * scale,
+        state.L_I_slope1 * a1**1.5, 1.0, other_edge), 0.0)  # fmt: skip
     b = a1 - width
     stick_width = kernels.corrective_stick_slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, dP)
     # Jaeger-Ciavarella: b = a(P_K) is exact for a symmetric law without bulk tension.
