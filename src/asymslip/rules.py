@@ -111,11 +111,11 @@ def _rule_table() -> dict[str, Rule]:
         ("denominator", "mu", "at the {side} edge the denominator of (17), mu (L_I1 + L_I2) + "
          "L_II1 - L_II2, is not positive ({denominator}) for this friction coefficient and load "
          "path: no steady partial-slip state exists (the stick boundary would lie beyond a2)"),
-        ("b_range", "cycle", "at the {side} edge the slip zone would cover the whole contact "
-         "(b = {b}, outside (0, a2]): the asymptotic solution is outside its range, eq25 = "
-         "|b - a1|/a1 = {eq25} is not small (eq24 = {eq24}, eq27 = {eq27})"),
         ("result_finite", "cycle", "the {law} law gives a non-finite {quantity} at the {side} "
          "edge (overflow in double precision)"),
+        ("b_range", "cycle", "at the {side} edge the stick boundary b = {b} lies outside the "
+         "contact (0, a2]: the asymptotic solution is outside its range, eq25 = "
+         "|b - a1|/a1 = {eq25} is not small (eq24 = {eq24}, eq27 = {eq27})"),
         ("slip_zones_meet", "cycle", "the slip zones of the two edges meet (b_right + b_left = "
          "{b_sum} <= 0): no stick zone is left, so the contact cannot be in steady partial "
          "slip"),

@@ -282,14 +282,15 @@ def _finish_edge(law: ContactLaw, state: LawState, mu: FloatArray, verdict: Verd
     verdict.require("denominator", ~slips | (denominator > tolerance) if not
                     isinstance(slips, (bool, np.bool_)) else (not slips) or denominator > tolerance,
                     mu, side=side, denominator=denominator)  # fmt: skip
-    verdict.require("b_range", (b > 0) & (b <= a2), None, side=side, b=b,
-                    eq25=values["eq25"], eq24=values["eq24"], eq27=values["eq27"])  # fmt: skip
+    # Non-finite results first: a b that overflowed is not "outside the contact".
     checked = ("b", "slip_zone_width", "b_first_order", "L_II1", "L_II2", *MEASURE_KEYS)
     total = sum(values[key] for key in checked)
     if not (finite(total).all() if _is_array(total) else finite(total)):
         for key in checked:
             verdict.require("result_finite", finite(values[key]), None, side=side,
                             law=law.name, quantity=key)  # fmt: skip
+    verdict.require("b_range", (b > 0) & (b <= a2), None, side=side, b=b,
+                    eq25=values["eq25"], eq24=values["eq24"], eq27=values["eq27"])  # fmt: skip
     flags = _where(slips, 0, NO_SLIP) | disagree
     for key, bit in _MEASURE_FLAGS.items():
         flags = flags | _where(values[key] > VALIDITY_THRESHOLD, bit, 0)
