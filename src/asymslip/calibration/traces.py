@@ -362,7 +362,7 @@ def _assemble(
         if bad.any():
             row = int(np.flatnonzero(bad)[0])
             raise InputError(
-                "traces", f"{at(row)}: column {name}: {float(column[row])!r} is not a finite number"
+                "traces", f"{at(row)}: column {name}: is not a finite number"  # none printed
             )
     if (P <= 0).any():
         row = int(np.flatnonzero(P <= 0)[0])
