@@ -101,7 +101,7 @@ def _loading(args: argparse.Namespace) -> tuple[object, LoadCycle | None]:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..solver import refine, solve, write_outputs
+    from ..solver import SolverError, refine, solve, write_outputs
     from ..solver.compare import with_asymptotes
 
     contact, law = _contact(args)
@@ -110,8 +110,13 @@ def run(args: argparse.Namespace) -> int:
     if law is None and E_star is None:
         raise InputError("E_star", "is required with --profile or --profile-table")
     options = {"elements": args.elements, "steps": args.steps, "E_star": E_star}
-    result = refine(contact, loading, args.mu, **options) if args.refine \
-        else solve(contact, loading, args.mu, **options)  # fmt: skip
+    try:
+        result = refine(contact, loading, args.mu, **options) if args.refine \
+            else solve(contact, loading, args.mu, **options)  # fmt: skip
+    except SolverError as error:  # not the input's fault: one line, and the failure status
+        print(f"asymslip: error: the reference solver did not converge: {error}",
+              file=sys.stderr)  # fmt: skip
+        return 1
     if law is not None and cycle is not None:
         result = with_asymptotes(result, law, cycle, args.mu)
     if args.out is not None:
