@@ -10,6 +10,7 @@ not an unknown option.
 from __future__ import annotations
 
 import argparse
+import math
 import re
 from typing import NoReturn
 
@@ -47,7 +48,15 @@ def number(text: str) -> float:
 
 
 def whole_number(text: str) -> int:
+    """A count as people type it: 2000, 2e3 or 2000.0 (but not 1.5, inf or nan)."""
     try:
         return int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+        pass
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not value.is_integer():
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number")
+    return int(value)
