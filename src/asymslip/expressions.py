@@ -59,6 +59,13 @@ IDENTIFIER = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
 _RESERVED = {"numpy", "ArrayLike", "NDArray", "FloatArray", "annotations"}
 
 
+#: How a formula's parameters are given, by the option the formula came in.
+_PARAMETER_HINT = {
+    "P_of_a": "declare parameters with --params; ",
+    "profile": "give each parameter's value with --param NAME=VALUE; ",
+}
+
+
 def allowed_names(variable: str, params: Sequence[str]) -> list[str]:
     """Every name a formula in ``variable`` with these parameters may use."""
     return [variable, *params, *ALLOWED_FUNCTIONS, *ALLOWED_CONSTANTS]
@@ -138,7 +145,7 @@ def screen_formula(text: str, variable: str, params: Sequence[str], option: str)
         plural = "s" if len(unknown) > 1 else ""
         raise InputError(
             option,
-            f"unknown name{plural} {', '.join(unknown)}: declare parameters with --params; "
+            f"unknown name{plural} {', '.join(unknown)}: {_PARAMETER_HINT.get(option, '')}"
             f"the names allowed are {', '.join(allowed_names(variable, params))}",
             _shown(text),
         )
