@@ -56,7 +56,9 @@ def whole_number(text: str) -> int:
     try:
         value = float(text)
     except ValueError:
-        value = math.nan
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if not math.isfinite(value):  # said in words: never echo inf or nan as a value
+        raise argparse.ArgumentTypeError("must be a finite whole number (not inf or nan)")
     if not value.is_integer():
         raise argparse.ArgumentTypeError(f"{text!r} is not a whole number")
     return int(value)
