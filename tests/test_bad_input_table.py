@@ -129,6 +129,19 @@ class RowErrors:
     extra: dict[str, str] = field(default_factory=dict)
 
 
+def hertz_traces() -> str:
+    """Nodal pressures (48) of the Hertz contact (R = E* = 1) at P = 80, 100, 120, long format
+    (P, x, p), 241 nodes over 1.2 a each side."""
+    rows = ["P,x,p"]
+    for P in (80.0, 100.0, 120.0):
+        a = hertz_a(P)
+        for k in range(-120, 121):
+            x = 1.2 * a * k / 120
+            p = 2 * P / (math.pi * a * a) * math.sqrt(max(a * a - x * x, 0.0))
+            rows.append(f"{P!r},{x!r},{p!r}")
+    return "\n".join(rows) + "\n"
+
+
 # --- the files the table reads ------------------------------------------------------------------
 HERTZ_TABLE = "P,a\n" + "".join(f"{P:g},{hertz_a(P)!r}\n" for P in (60, 80, 100, 120, 140))
 FILES = {
@@ -172,6 +185,13 @@ FILES = {
     # module laws: one row inside the cubic's range, one beyond its maximum load
     "cases_cubic.csv": "P1,Q1,P2,Q2\n1,0,1.05,0.01\n100,0,105,1\n2,0,2.1,0.02\n",
     "not_a_law.py": "x = 1\n",
+    # solve: a load path and profile tables; calibrate: Hertz pressure traces at 3 loads
+    "path.csv": "P,Q\n100,0\n105,1\n",
+    "profile.csv": "x,h\n" + "".join(f"{x:g},{x * x / 2!r}\n" for x in range(-30, 31)),
+    "profile_one_point.csv": "x,h\n0,0\n",
+    "traces.csv": hertz_traces(),
+    "traces_nan.csv": hertz_traces().replace("\n80.0,0.0,", "\n80.0,nan,", 1),
+    "calibration_bad.json": "{not json",
     # law modules written by hand in the form `asymslip derive` writes (which refuses these)
     "inverse.py": "import numpy\n__asymslip_law__ = {'name': 'inverse', 'params': []}\n"
     "def load(a):\n    return 1 / a\ndef load_slope(a):\n    return -1 / a**2\n"
@@ -199,6 +219,9 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
     (folder / "folder.py").mkdir()
     # The law modules of `asymslip derive` that the table uses (their derivation is a case of
     # its own below too).
+    status, out, err = run(["calibrate", str(folder / "traces.csv"), "--out",
+                            str(folder / "calibration.json")])  # fmt: skip
+    assert status == 0, err
     for name, formula, params in (("cubic", "E_star*a**2 - k*a**3", "E_star k"),
                                   ("tanh_law", "k*tanh(a)", "k")):  # fmt: skip
         status, out, err = run(["derive", "--P-of-a", formula, "--params", params, "--name",
@@ -651,8 +674,99 @@ def command_line_cases() -> list[Bad]:
     ]  # fmt: skip
 
 
+SOLVE = ("--elements", "100", "--steps", "3")
+
+
+def solve_cases() -> list[Bad]:
+    """The reference solver's command: its grid, its profiles, its load path."""
+    def solve(*options: str) -> tuple[str, ...]:
+        return ("solve", *options, *SOLVE)
+
+    profile = ("--E-star", "1", *cycle())
+    return [
+        Bad("solve --elements 0", ("solve", *hertz(), "--elements", "0"), "--elements",
+            r"must be at least 64"),
+        Bad("solve --elements 1.5", ("solve", *hertz(), "--elements", "1.5"), "--elements",
+            r"'1\.5' is not a whole number"),
+        Bad("solve --elements nan", ("solve", *hertz(), "--elements", "nan"), "--elements",
+            r"must be a finite whole number"),
+        Bad("solve --steps 0", ("solve", *hertz(), "--steps", "0"), "--steps",
+            r"must be at least 1"),
+        Bad("solve --mu -inf", solve(*hertz(mu="-inf")), "--mu", FINITE),
+        Bad("solve: gross sliding at state 2", solve(*hertz(Q2="11")), "--Q2",
+            r"\|Q2\| = 11 must be < mu P2 = 10\.5"),
+        Bad("solve: P2 < P1", solve(*hertz(P2="99")), "--P2", r"must exceed P1"),
+        Bad("solve: no cycle and no path", solve(*HERTZ, "--mu", "0.1"), "--P1",
+            r"needs --P1 --Q1 --P2 --Q2 \(or --path PATH\.csv\)"),
+        Bad("solve: a path and a cycle", solve(*hertz(), "--path", "{d}/path.csv"), "--path",
+            r"give either --path or"),
+        Bad("solve: a path file missing", solve(*HERTZ, "--mu", "0.1", "--path",
+                                                "{d}/nowhere.csv"), "--path", r"cannot read"),
+        Bad("solve: a law without a profile", solve("--law", "table", "--table",
+                                                    "{d}/hertz.csv", *cycle()),
+            "--law", r"has no profile for the solver"),
+        Bad("solve: a falling profile -x**2", solve("--profile=-x**2", *profile), "--profile",
+            r"no finite contact was found"),
+        Bad("solve: a profile with an unknown name", solve("--profile", "x**2/(2*R)", *profile),
+            "--profile", r"unknown name R: give each parameter's value with --param"),
+        Bad("solve: a profile without --E-star", solve("--profile", "x**2/2", *cycle()),
+            "--E-star", r"is required with --profile"),
+        Bad("solve: a profile table missing", solve("--profile-table", "{d}/nowhere.csv",
+                                                    *profile), "--profile-table",
+            r"cannot read"),
+        Bad("solve: a profile table of one point", solve("--profile-table",
+                                                         "{d}/profile_one_point.csv", *profile),
+            "--profile-table", r"at least 3 points"),
+        Bad("solve: loads of 1e300 overflow the solver",
+            solve(*hertz(P1="1e300", P2="1.05e300", Q2="1e298")), "--P1",
+            r"reference solver overflows double precision"),
+        Bad("solve --out under a file", solve(*hertz(), "--out", "{d}/a_file/solver"), "--out",
+            r"cannot create"),
+    ]  # fmt: skip
+
+
+def calibrate_cases() -> list[Bad]:
+    """Calibration from pressure traces, and the calibrated law it writes."""
+    traces = "{d}/traces.csv"
+    calibrated = ("slip-zone", "--law", "calibrated", "--calibration")
+    return [
+        Bad("calibrate: TRACES missing", ("calibrate", "{d}/nowhere.csv"), "TRACES",
+            r"cannot read"),
+        Bad("calibrate: TRACES without p", ("calibrate", "{d}/path.csv"), "TRACES",
+            r"line 1: the header has no column x or p"),
+        Bad("calibrate: a nan pressure", ("calibrate", "{d}/traces_nan.csv"), "TRACES",
+            r"line \d+: column x: is not a finite number"),
+        Bad("calibrate --noise -1", ("calibrate", traces, "--noise", "-1"), "--noise",
+            r"must be a finite number >= 0"),
+        Bad("calibrate --noise nan", ("calibrate", traces, "--noise", "nan"), "--noise",
+            r"must be a finite number >= 0"),
+        Bad("calibrate --noise inf", ("calibrate", traces, "--noise", "inf"), "--noise",
+            r"must be a finite number >= 0"),
+        Bad("calibrate --origin -inf", ("calibrate", traces, "--origin", "-inf"), "--origin",
+            r"must be a finite number"),
+        Bad("calibrate --origin outside the contact", ("calibrate", traces, "--origin", "1e300"),
+            "--origin", r"is not inside the contact"),
+        Bad("calibrate --loads with a CSV", ("calibrate", traces, "--loads", "1", "2"), "--loads",
+            r"column P gives the loads"),
+        Bad("calibrate --out is TRACES", ("calibrate", traces, "--out", traces), "--out",
+            r"is also the input"),
+        Bad("calibrate --out in a missing folder", ("calibrate", traces, "--out",
+                                                    "{d}/missing/calibration.json"),
+            "--out", r"cannot write"),
+        Bad("calibrated law without --calibration", ("slip-zone", "--law", "calibrated",
+                                                     *cycle()), "--calibration", r"is required"),
+        Bad("calibrated law: file missing", (*calibrated, "{d}/nowhere.json", *cycle()),
+            "--calibration", r"cannot read"),
+        Bad("calibrated law: not JSON", (*calibrated, "{d}/calibration_bad.json", *cycle()),
+            "--calibration", r"line 1: not valid JSON"),
+        Bad("calibrated law: a negative load", (
+            *calibrated, "{d}/calibration.json", *cycle(P1="-5")), "--P1", POSITIVE),
+    ]  # fmt: skip
+
+
 BAD: list[Bad] = [*number_option_cases(), *physics_cases(), *law_cases(), *derive_cases(),
-                  *sweep_cases(), *command_line_cases()]  # fmt: skip
+                  *sweep_cases(), *command_line_cases(), *solve_cases(),
+                  *calibrate_cases()]  # fmt: skip
 
 
 # --- the table: borderline valid inputs ---------------------------------------------------------
@@ -751,6 +865,21 @@ def paper_left_out_check(result: dict, folder: Path) -> None:
     assert any(text.startswith("b_paper: the estimate (22) puts the stick boundary outside the "
                                "contact (0, a2]") for text in result["warnings"])  # fmt: skip
     assert 0 < result["b"] <= result["a2"]
+
+
+def solve_check(result: dict, folder: Path) -> None:
+    """Fig. 5's cycle on the Hertz contact (also as a profile h = x^2/2, or along the same
+    path): the solver's b within its own error bound of the exact (34)."""
+    b34 = math.sqrt(2 / math.pi * (100 + 105 - (1 - 0) / 0.1))
+    assert abs(result["b"] - b34) <= result["b_error"], result  # the right edge's keys
+
+
+def calibrate_check(result: dict, folder: Path) -> None:
+    """Each edge's a and L_I from the traces against (29) and (31), within 1e-4."""
+    for side in ("right", "left"):
+        for fit in result[side]:
+            assert fit["a"] == pytest.approx(hertz_a(fit["P"]), rel=1e-4)
+            assert fit["L_I"] == pytest.approx(hertz_L_I(fit["P"]), rel=1e-3)
 
 
 def derive_check(name: str, summary: str) -> Callable[..., None]:
@@ -905,6 +1034,18 @@ def valid_cases() -> list[Valid]:
         Valid("sweep: an estimate outside the contact is left empty, with its warning",
               ("sweep", "{d}/cases_wide.csv", *HERTZ, "--mu", "0.1", "--edge", "right", "--out",
                "{d}/wide.csv"), wide_sweep_check, stderr=r"^asymslip sweep: 2 rows"),
+        Valid("solve the Fig. 5 cycle", ("solve", *hertz(), *SOLVE, "--json"), solve_check),
+        Valid("solve --elements 1e2 --steps 3 along a path",
+              ("solve", *HERTZ, "--mu", "0.1", "--path", "{d}/path.csv", "--elements", "1e2",
+               "--steps", "3", "--json"), solve_check),
+        Valid("solve a tabulated profile", ("solve", "--profile-table", "{d}/profile.csv",
+                                            "--E-star", "1", *cycle(), *SOLVE, "--json"),
+              solve_check),
+        Valid("calibrate Hertz traces", ("calibrate", "{d}/traces.csv", "--json"),
+              calibrate_check),
+        Valid("slip-zone with the calibrated law",
+              ("slip-zone", "--law", "calibrated", "--calibration", "{d}/calibration.json",
+               *cycle(), "--json"), table_check(100, 105)),
         Valid("figure --check of the committed Fig. 5", ("figure", "fig5", "--check",
                                                          str(Path(__file__).parents[1] / "generated"
                                                              / "figures")),
