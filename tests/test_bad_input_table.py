@@ -1,7 +1,7 @@
 """Every bad input is refused in one line; every borderline valid one works (issue 9).
 
 One table of command lines across every command (``slip-zone``, ``traction``, ``slip``,
-``figure``, ``derive``, ``sweep``).  For each **bad** one: exit status 2, exactly one line on
+``figure``, ``derive``, ``sweep``, ``solve``, ``calibrate``).  For each **bad** one: exit status 2, exactly one line on
 stderr, naming the option as typed on the command line (``--Q1``, ``--P-of-a``, ``CASES``) and
 stating the rule it broke, no traceback, and no ``nan``/``inf`` printed as a value anywhere.
 For each **borderline valid** one (negative exponents, tiny or huge but finite numbers, a
@@ -1027,6 +1027,9 @@ def valid_cases() -> list[Valid]:
         Valid("sweep with negative exponents", ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1",
                                                 "--out", "{d}/valid.csv"),
               sweep_check("valid.csv", [0.2, 0.12]), stderr=r"^asymslip sweep: 2 rows written"),
+        Valid("sweep --chunk-rows 1e5", ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1",
+                                         "--chunk-rows", "1e5", "--out", "{d}/chunks.csv"),
+              sweep_check("chunks.csv", [0.2, 0.12]), stderr=r"^asymslip sweep: 2 rows"),
         Valid("sweep of a spreadsheet's CSV (byte-order mark, CRLF)",
               ("sweep", "{d}/cases_spreadsheet.csv", *HERTZ, "--mu", "0.1", "--out",
                "{d}/spreadsheet.csv"),
@@ -1123,7 +1126,8 @@ def test_sweep_rows_that_break_a_rule_get_their_reason_and_the_others_go_on(case
 
 def test_the_table_has_at_least_80_cases_across_every_command():
     commands = {case.argv[0] for case in BAD if case.argv} | {case.argv[0] for case in VALID}
-    assert {"slip-zone", "traction", "slip", "figure", "derive", "sweep"} <= commands
+    assert {"slip-zone", "traction", "slip", "figure", "derive", "sweep", "solve",
+            "calibrate"} <= commands
     assert len(BAD) + len(VALID) + len(ROW_ERRORS) >= 80
 
 
