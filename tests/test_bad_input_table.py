@@ -33,7 +33,7 @@ from pathlib import Path
 
 import pytest
 
-from asymslip import HertzLaw, LoadCycle, slip_zone
+from asymslip import HertzLaw, LoadCycle, cli, slip_zone
 from asymslip.cli import main
 
 # --- the paper's formulas, transcribed by hand for the expected values ------------------------
@@ -229,6 +229,16 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
                                 name, "--out", str(folder / f"{name}.py")])  # fmt: skip
         assert status == 0, err
     return folder
+
+
+@pytest.fixture(scope="module", autouse=True)
+def one_parser() -> Iterator[None]:
+    """``main`` builds the parser of every command on each call (a few ms, most of an
+    in-process case); the table builds it once.  Parsing does not change a parser."""
+    parser = cli.build_parser()
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(cli, "build_parser", lambda: parser)
+        yield
 
 
 def run(argv: list[str]) -> tuple[int, str, str]:
@@ -1150,9 +1160,8 @@ def test_bad_cases_files_are_refused_the_same_without_pyarrow(case: Bad, files: 
 # --- real processes: exit status, traceback, warnings at import, missing extras ----------------
 #: A sample of the table run as real `python -m asymslip` processes under PYTHONWARNINGS=error.
 PROCESS_SAMPLE = (
-    "slip-zone --Q1 -inf", "gross sliding at state 1", "--Q1=1e308 --Q2=-1e308 overflows",
-    "--P2 1.7e308 overflows the law", "traction --x nan", "table value not a number",
-    "figure: --out under a file", "sweep: --out is the input",
+    "slip-zone --Q1 -inf", "--Q1=1e308 --Q2=-1e308 overflows", "traction --x nan",
+    "figure: --out under a file", "sweep: --out is the input", "solve: a falling profile -x**2",
 )  # fmt: skip
 VALID_PROCESS_SAMPLE = ("--Q1 -1e-1 (negative exponent)",)
 
@@ -1173,16 +1182,28 @@ WITHOUT_EXTRAS = [
                *cycle(), "--json")),
     ("pyarrow", ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out",
                  "{d}/without_pyarrow.csv")),
-    ("matplotlib", ("figure", "fig5", "--check", str(Path(__file__).parents[1] / "generated"
-                                                     / "figures"))),
 ]  # fmt: skip
 
 
-def blocking(package: str) -> list[str]:
-    """``python -c`` arguments that run asymslip with ``package`` unimportable, as if it were
-    not installed (``sys.modules[name] = None`` makes every import of it fail)."""
-    return ["-c", f"import sys; sys.modules[{package!r}] = None; "
-            "from asymslip.cli import main; sys.exit(main(sys.argv[1:]))"]  # fmt: skip
+#: One process with every optional package unimportable, as if none were installed
+#: (``sys.modules[name] = None`` makes every import of it fail), running the commands given as
+#: JSON one after the other and printing each one's (exit status, stdout, stderr) as JSON.
+WITHOUT_OPTIONAL_PACKAGES = """
+import contextlib, io, json, sys
+for package in ("matplotlib", "scipy", "sympy", "pyarrow"):
+    sys.modules[package] = None
+from asymslip.cli import main
+results = []
+for argv in json.loads(sys.argv[1]):
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            status = main(argv)
+        except SystemExit as exit_:
+            status = exit_.code
+    results.append((status, out.getvalue(), err.getvalue()))
+print(json.dumps(results))
+"""
 
 
 @pytest.fixture(scope="module", autouse=True)
@@ -1197,10 +1218,9 @@ def processes(files: Path) -> Iterator[dict[tuple[str, str], subprocess.Popen[st
         commands["sample", name] = ["-m", "asymslip", *expand(bad[name].argv, files)]
     for name in VALID_PROCESS_SAMPLE:
         commands["sample", name] = ["-m", "asymslip", *expand(valid[name].argv, files)]
-    for extra, package, argv, _ in MISSING_EXTRAS:
-        commands["missing", extra] = [*blocking(package), *expand(argv, files)]
-    for package, argv in WITHOUT_EXTRAS:
-        commands["without", package] = [*blocking(package), *expand(argv, files)]
+    extras = [expand(argv, files) for _, _, argv, _ in MISSING_EXTRAS] + \
+        [expand(argv, files) for _, argv in WITHOUT_EXTRAS]  # fmt: skip
+    commands["extras", "none installed"] = ["-c", WITHOUT_OPTIONAL_PACKAGES, json.dumps(extras)]
     environment = {**os.environ, "PYTHONWARNINGS": "error"}
     commands["pipe", "closed"] = ["-m", "asymslip", "slip-zone", *hertz()]
     running = {key: subprocess.Popen([sys.executable, *arguments], cwd=files, env=environment,
@@ -1246,10 +1266,18 @@ def test_a_sample_of_the_table_behaves_the_same_in_real_processes_under_warnings
     assert (files / "cases.csv").read_bytes() == FILES["cases.csv"].encode()  # input intact
 
 
+def extras_results(processes: dict) -> list[tuple[int, str, str]]:
+    """Each command's (status, stdout, stderr) from the process without optional packages."""
+    status, out, err = finish(processes, "extras")["none installed"]
+    assert status == 0 and err == "", err
+    return json.loads(out)
+
+
 def test_a_missing_optional_dependency_is_one_line_naming_the_extra(files: Path, processes: dict):
-    results = finish(processes, "missing")
-    for extra, _, _, written in MISSING_EXTRAS:
-        status, out, err = results[extra]
+    results = extras_results(processes)
+    for (extra, _, _, written), (status, _, err) in zip(MISSING_EXTRAS,
+                                                          results[:len(MISSING_EXTRAS)],
+                                                          strict=True):  # fmt: skip
         assert status == 2, (extra, err)
         assert "Traceback" not in err and len(err.splitlines()) == 1, (extra, err)
         assert f"pip install 'asymslip[{extra}]'" in err, (extra, err)
@@ -1258,14 +1286,14 @@ def test_a_missing_optional_dependency_is_one_line_naming_the_extra(files: Path,
 
 
 def test_what_needs_no_optional_dependency_works_without_them(files: Path, processes: dict):
-    results = finish(processes, "without")
+    results = dict(zip((package for package, _ in WITHOUT_EXTRAS),
+                       extras_results(processes)[len(MISSING_EXTRAS):], strict=True))  # fmt: skip
     for package, _ in WITHOUT_EXTRAS:
         status, out, err = results[package]
         assert status == 0 and "Traceback" not in err, (package, err)
     assert json.loads(results["scipy"][1])["a1"] > 0  # the power law's slip zone: no 2F1
     with open(files / "without_pyarrow.csv", newline="") as handle:
         assert [float(row["lam"]) for row in csv.DictReader(handle)] == [0.2, 0.12]
-    assert results["matplotlib"][1].endswith("fresh\n")  # Fig. 5's CSV needs no matplotlib
 
 
 def test_a_reader_that_goes_away_stops_the_command_quietly(processes: dict):
