@@ -23,8 +23,10 @@ from __future__ import annotations
 import io
 import keyword
 import re
+import sys
 import tokenize
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
 from typing import Any
 
 from .errors import InputError
@@ -55,6 +57,13 @@ _NUMBER = re.compile(r"^(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
 IDENTIFIER = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
 # Names generated modules use themselves; a parameter must not shadow them.
 _RESERVED = {"numpy", "ArrayLike", "NDArray", "FloatArray", "annotations"}
+
+
+#: How a formula's parameters are given, by the option the formula came in.
+_PARAMETER_HINT = {
+    "P_of_a": "declare parameters with --params; ",
+    "profile": "give each parameter's value with --param NAME=VALUE; ",
+}
 
 
 def allowed_names(variable: str, params: Sequence[str]) -> list[str]:
@@ -136,7 +145,7 @@ def screen_formula(text: str, variable: str, params: Sequence[str], option: str)
         plural = "s" if len(unknown) > 1 else ""
         raise InputError(
             option,
-            f"unknown name{plural} {', '.join(unknown)}: declare parameters with --params; "
+            f"unknown name{plural} {', '.join(unknown)}: {_PARAMETER_HINT.get(option, '')}"
             f"the names allowed are {', '.join(allowed_names(variable, params))}",
             _shown(text),
         )
@@ -150,6 +159,56 @@ def sympy_module() -> Any:
         raise InputError("derive", "needs SymPy: install asymslip with the derive extra "
                          "(pip install 'asymslip[derive]')") from None  # fmt: skip
     return sympy
+
+
+def check_numbers(expr: Any, option: str, text: str) -> None:
+    """Refuse a formula whose constant parts are not finite real numbers within double range.
+
+    ``expr`` is the unevaluated parse.  Each constant part is evaluated in floating point
+    (15 digits, from its parts' values: cheap however large), innermost first, so that a
+    tower such as ``9**9**9`` stops at the first level beyond double range and ``1/0``,
+    ``log(0)`` or ``sqrt(-1)`` are refused for what they are.  The generated code computes in
+    doubles: a constant beyond about 1.8e308 would be inf there, one below 5e-324 zero.
+    """
+    sympy = sympy_module()
+    values: dict[Any, Any] = {}
+    stack: list[tuple[Any, bool]] = [(expr, False)]
+    while stack:  # children before parents, without recursion (a long sum is a deep tree)
+        node, children_done = stack.pop()
+        if node in values:
+            continue
+        if not children_done:
+            stack.append((node, True))
+            stack.extend((arg, False) for arg in node.args)
+            continue
+        if not isinstance(node, sympy.Expr) or node.free_symbols:
+            continue  # not a constant: its constant parts are checked
+        parts = [values.get(arg, arg) for arg in node.args]
+        value = (node.func(*parts) if parts else node).evalf(15)
+        values[node] = value
+        shown = sympy.sstr(node)
+        if value.has(sympy.zoo, sympy.nan, sympy.oo, -sympy.oo) or value.is_real is not True:
+            raise InputError(option, f"{_shown(shown)} is not a finite real number (a division "
+                             "by zero, a logarithm of 0, a root of a negative number?)",
+                             _shown(text))  # fmt: skip
+        if abs(value) > sys.float_info.max or (value != 0 and float(value) == 0):
+            if len(shown) > 40:
+                shown = sympy.sstr(sympy.Float(value, 3))
+            raise InputError(option, f"the number {shown} is outside double precision (about "
+                             "5e-324 to 1.8e308 in magnitude), in which the law is computed",
+                             _shown(text))  # fmt: skip
+
+
+@contextmanager
+def _recursion_limit(limit: int) -> Iterator[None]:
+    """Python's recursion limit raised to ``limit`` for a while: SymPy's unevaluated parse
+    visits the syntax tree recursively, one level per operator of a long sum."""
+    old = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(old, limit))
+    try:
+        yield
+    finally:
+        sys.setrecursionlimit(old)
 
 
 def parse_formula(
@@ -197,9 +256,22 @@ def parse_formula(
     # Only the number constructors auto_number writes; no builtins, no SymPy namespace.
     globals_ = {"__builtins__": {}, "Integer": sympy.Integer, "Float": sympy.Float,
                 "Rational": sympy.Rational}  # fmt: skip
+    transformations = (auto_number, rationalize, convert_xor)
     try:
+        # First unevaluated, to check its numbers before SymPy computes them exactly: "9**9**9"
+        # would otherwise take minutes (369 million digits).
+        # (evaluate=False writes the operators as calls to SymPy's Add, Mul and Pow.)
+        operators = {"Add": sympy.Add, "Mul": sympy.Mul, "Pow": sympy.Pow}
+        with _recursion_limit(10 * MAX_CHARACTERS):
+            unevaluated = parse_expr(text, local_dict=namespace,
+                                     global_dict=globals_ | operators,
+                                     transformations=transformations, evaluate=False)  # fmt: skip
+        if isinstance(unevaluated, sympy.Expr):  # else refused below as not one expression
+            check_numbers(unevaluated, option, text)
         expr = parse_expr(text, local_dict=namespace, global_dict=globals_,
-                          transformations=(auto_number, rationalize, convert_xor))  # fmt: skip
+                          transformations=transformations)  # fmt: skip
+    except InputError:
+        raise
     except (SyntaxError, TypeError, ValueError, AttributeError, NameError,
             RecursionError) as error:  # fmt: skip
         reason = "too deeply nested" if isinstance(error, RecursionError) else str(error)

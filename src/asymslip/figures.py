@@ -224,15 +224,19 @@ def write_fig5(directory: Path) -> list[Path]:
     Raises
     ------
     InputError
-        If ``directory`` exists and is not a folder, or matplotlib (the ``plot`` extra) is not
-        installed (checked before anything is written).
+        If ``directory`` exists and is not a folder or cannot be created, or matplotlib (the
+        ``plot`` extra) is not installed (checked before anything is written).
     """
     directory = Path(directory)
     if directory.exists() and not directory.is_dir():
         raise InputError("out", "must be a folder, not an existing file", str(directory))
     figure_class()  # fail before writing anything
+    try:  # before the second of computing: an unusable folder fails at once
+        directory.mkdir(parents=True, exist_ok=True)
+    except OSError as error:  # a file where a folder must be, no permission, a full disk
+        raise InputError("out", f"cannot create the folder {directory}: "
+                         f"{error.strerror or error}") from None  # fmt: skip
     curves = fig5_curves()
-    directory.mkdir(parents=True, exist_ok=True)
     csv_path = directory / "fig5.csv"
     png_path = directory / "fig5.png"
     with atomic_write(csv_path, "out", mode="w") as handle:

@@ -29,6 +29,7 @@ asymslip.errors.InputError: mu: must be > 0 (got 0.0; at element 1; 2 of 3 eleme
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -57,10 +58,20 @@ class Rule:
     def message(self, shown: float | None, values: Mapping[str, object]) -> InputError:
         """The error for one element that broke this rule."""
         fields = {
-            key: (f"{value:.6g}" if isinstance(value, float) else value)
+            key: (_number_text(value) if isinstance(value, float) else value)
             for key, value in values.items()
         }
         return InputError(self.parameter, self.text.format(**fields), shown)
+
+
+def _number_text(value: float) -> str:
+    """A value named in a message: 6 digits, or in words where it is not a finite number (a
+    message never prints inf or nan as though they were numbers)."""
+    if math.isfinite(value):
+        return f"{value:.6g}"
+    if math.isnan(value):
+        return "undefined in double precision"
+    return ("a negative number" if value < 0 else "a number") + " beyond double precision"
 
 
 def _rule_table() -> dict[str, Rule]:
@@ -85,9 +96,11 @@ def _rule_table() -> dict[str, Rule]:
          "would slide as a whole (gross sliding), not slip partially"),
         # The contact law at the loads of the cycle.
         ("law_range_1", "P1", "no contact half-width of the {law} law carries this load "
-         "(P(a) = P1 has no root a > 0): the load is outside the law's range{range}"),
+         "(P(a) = P1 has no root a > 0 where P increases with a): the load is outside the "
+         "law's range{range}"),
         ("law_range_2", "P2", "no contact half-width of the {law} law carries this load "
-         "(P(a) = P2 has no root a > 0): the load is outside the law's range{range}"),
+         "(P(a) = P2 has no root a > 0 where P increases with a): the load is outside the "
+         "law's range{range}"),
         ("law_finite_1", "P1", "the {law} law gives a non-finite contact half-width or edge "
          "multiplier at this load (overflow in double precision)"),
         ("law_finite_2", "P2", "the {law} law gives a non-finite contact half-width or edge "
@@ -98,11 +111,11 @@ def _rule_table() -> dict[str, Rule]:
         ("denominator", "mu", "at the {side} edge the denominator of (17), mu (L_I1 + L_I2) + "
          "L_II1 - L_II2, is not positive ({denominator}) for this friction coefficient and load "
          "path: no steady partial-slip state exists (the stick boundary would lie beyond a2)"),
-        ("b_range", "cycle", "at the {side} edge the slip zone would cover the whole contact "
-         "(b = {b}, outside (0, a2]): the asymptotic solution is outside its range, eq25 = "
-         "|b - a1|/a1 = {eq25} is not small (eq24 = {eq24}, eq27 = {eq27})"),
         ("result_finite", "cycle", "the {law} law gives a non-finite {quantity} at the {side} "
          "edge (overflow in double precision)"),
+        ("b_range", "cycle", "at the {side} edge the stick boundary b = {b} lies outside the "
+         "contact (0, a2]: the asymptotic solution is outside its range, eq25 = "
+         "|b - a1|/a1 = {eq25} is not small (eq24 = {eq24}, eq27 = {eq27})"),
         ("slip_zones_meet", "cycle", "the slip zones of the two edges meet (b_right + b_left = "
          "{b_sum} <= 0): no stick zone is left, so the contact cannot be in steady partial "
          "slip"),

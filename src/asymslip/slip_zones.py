@@ -71,6 +71,13 @@ DISAGREE_FIRST_ORDER = 1 << 8
 DISAGREE_CORRECTIVE_STICK = 1 << 9
 DISAGREE_EXACT = 1 << 10
 OTHER_EDGE_STICKS = 1 << 11
+#: The other estimates of b, left out (null) where they fall outside the contact (0, a2]: a
+#: stick boundary there is no answer, and printing it would pass it off as one.  Each with its
+#: equation and the disagreement flag it then replaces.
+ESTIMATES_CHECKED = {"b_paper": ("(22)", DISAGREE_PAPER),
+                     "b_first_order": ("(28)", DISAGREE_FIRST_ORDER),
+                     "b_corrective_stick": ("(40)", DISAGREE_CORRECTIVE_STICK)}  # fmt: skip
+_OUTSIDE_FLAGS = {key: 1 << (12 + i) for i, key in enumerate(ESTIMATES_CHECKED)}
 _DISAGREEMENT_TEXT = {
     DISAGREE_PAPER: "(22) (b_paper) differs from b by more than their stated accuracies: with "
     "bulk tension (22) carries a spurious dP^2 term (erratum 22-T); take b",
@@ -104,6 +111,11 @@ def warning_texts(flags: int, law: ContactLaw) -> list[str]:
         if flags & bit:
             texts.append(law.extrapolation_note(label))
     texts.extend(text for bit, text in _DISAGREEMENT_TEXT.items() if flags & bit)
+    for key, bit in _OUTSIDE_FLAGS.items():
+        if flags & bit:
+            texts.append(f"{key}: the estimate {ESTIMATES_CHECKED[key][0]} puts the stick "
+                         "boundary outside the contact (0, a2], so it is no answer for this "
+                         "cycle and is left out (null)")  # fmt: skip
     return texts
 
 
@@ -204,8 +216,15 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
     # the global frame when the two own-frame directions differ in sign (the left edge's frame
     # is mirrored); +1 too where it does not slip (derivations/second_order_slip_zone.py).
     other_edge = _where(other_direction == 0, 1.0, -direction * other_direction)
-    width = _where(slips, kernels.slip_zone_width_second_order_from_multiplier(
-        mu, lam_o, eta_o, a1, state.a_slope1, L_I1, state.L_I_slope1, dP, other_edge), 0.0)
+    # The kernel is a polynomial whose terms (a1^3 eta^2 dL_I/dP dP, mu^2 ...) overflow or
+    # underflow for loads of 1e300 or mu = 1e-300 though the width does not; it depends on
+    # lam and eta through lam/mu and eta/mu and is homogeneous in length and load, so it is
+    # evaluated with mu = 1 in units of a1 and dP (the same digits at ordinary values) and
+    # scaled back.
+    scale = a1**1.5 / dP
+    width = _where(slips, a1 * kernels.slip_zone_width_second_order_from_multiplier(
+        1.0, lam_o / mu, eta_o * a1 / mu, 1.0, state.a_slope1 * dP / a1, L_I1 * scale,
+        state.L_I_slope1 * a1**1.5, 1.0, other_edge), 0.0)  # fmt: skip
     b = a1 - width
     stick_width = kernels.corrective_stick_slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, dP)
     # Jaeger-Ciavarella: b = a(P_K) is exact for a symmetric law without bulk tension.
@@ -263,19 +282,25 @@ def _finish_edge(law: ContactLaw, state: LawState, mu: FloatArray, verdict: Verd
     verdict.require("denominator", ~slips | (denominator > tolerance) if not
                     isinstance(slips, (bool, np.bool_)) else (not slips) or denominator > tolerance,
                     mu, side=side, denominator=denominator)  # fmt: skip
-    verdict.require("b_range", (b > 0) & (b <= a2), None, side=side, b=b,
-                    eq25=values["eq25"], eq24=values["eq24"], eq27=values["eq27"])  # fmt: skip
+    # Non-finite results first: a b that overflowed is not "outside the contact".
     checked = ("b", "slip_zone_width", "b_first_order", "L_II1", "L_II2", *MEASURE_KEYS)
     total = sum(values[key] for key in checked)
     if not (finite(total).all() if _is_array(total) else finite(total)):
         for key in checked:
             verdict.require("result_finite", finite(values[key]), None, side=side,
                             law=law.name, quantity=key)  # fmt: skip
+    verdict.require("b_range", (b > 0) & (b <= a2), None, side=side, b=b,
+                    eq25=values["eq25"], eq24=values["eq24"], eq27=values["eq27"])  # fmt: skip
     flags = _where(slips, 0, NO_SLIP) | disagree
     for key, bit in _MEASURE_FLAGS.items():
         flags = flags | _where(values[key] > VALIDITY_THRESHOLD, bit, 0)
     flags = flags | _where(law.extrapolated(state.P1), EXTRAPOLATED_P1, 0)
     flags = flags | _where(law.extrapolated(state.P2), EXTRAPOLATED_P2, 0)
+    for key, (_, disagreement) in ESTIMATES_CHECKED.items():
+        inside = (values[key] > 0) & (values[key] <= a2) | (values[key] != values[key])
+        if not (inside.all() if _is_array(inside) else inside):  # NaN: not derived here
+            values[key] = _where(inside, values[key], np.nan)
+            flags = _where(inside, flags, (flags & ~disagreement) | _OUTSIDE_FLAGS[key])
     return EdgeValues(values, flags)
 
 
@@ -417,7 +442,9 @@ class SlipZoneResult:
     direction (for the left edge, the distance of the left stick boundary from the centre).
     ``b_exact`` is None (NaN in arrays) where no exact solution exists (eta != 0, an
     asymmetric contact); so are ``b_paper``, ``b_corrective_stick`` and ``P_K``-based values
-    for an edge with its own multipliers (a calibrated contact), where they are not derived.
+    for an edge with its own multipliers (a calibrated contact), where they are not derived,
+    and ``b_paper``, ``b_first_order`` and ``b_corrective_stick`` where they fall outside the
+    contact (0, a2], which ``warnings`` then says.
     ``errors`` is None when every element is valid; with ``invalid="mark"`` it lists each
     element's reason (None where valid) and the invalid elements' numbers are NaN.
     """

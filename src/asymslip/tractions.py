@@ -49,7 +49,7 @@ class TractionResult:
     edge: str
     x: list[float]
     q_diff: list[float]
-    q_diff_exact: list[float] | None
+    q_diff_exact: list[float | None] | None
     near_edge: list[bool]
     near_edge_from: float
     b: float
@@ -161,15 +161,29 @@ def traction_difference(
     )  # fmt: skip
     exact = None
     if not np.isnan(q["b_exact"]):
-        try:
-            pressures = [law.pressure(points, P)
-                         for P in (float(cycle.P2), float(cycle.P1), q["P_K"])]  # fmt: skip
-        except NotImplementedError:
-            pressures = None
-        if pressures is not None:
-            exact = direction * jaeger_ciavarella_traction_difference(*pressures, mu)
+        # The wedge's pressure is infinite at its apex, so (47) is inf - inf there; a pressure
+        # can also overflow (a huge contact).  Such points are left out below, not warned.
+        with np.errstate(all="ignore"):
+            try:
+                pressures = [law.pressure(points, P)
+                             for P in (float(cycle.P2), float(cycle.P1), q["P_K"])]  # fmt: skip
+            except NotImplementedError:
+                pressures = None
+            if pressures is not None:
+                exact = direction * jaeger_ciavarella_traction_difference(*pressures, mu)
     near_from = q["a2"] * (1 - NEAR_EDGE_FRACTION)
     flags = int(evaluation.edges[edge].flags)
+    warnings = warning_texts(flags, law.for_edge(edge))
+    exact_values = None
+    if exact is not None:
+        exact = np.asarray(exact, dtype=float) * np.ones(points.shape)
+        defined = np.isfinite(exact)
+        exact_values = [float(value) if ok else None
+                        for value, ok in zip(exact.tolist(), defined.tolist(), strict=True)]
+        if not defined.all():
+            warnings.append(f"q_diff_exact (47) is left out (null) at {int((~defined).sum())} "
+                            "point(s) where it is not a finite double: the law's pressure is "
+                            "infinite there (the apex x = 0 of a wedge) or overflows")  # fmt: skip
     # The left edge is the right edge of the mirrored cycle: back in the global frame a
     # traction along x changes sign.
     global_sign = 1.0 if edge == "right" else -1.0
@@ -177,13 +191,13 @@ def traction_difference(
         edge=edge,
         x=points.tolist(),
         q_diff=(global_sign * np.asarray(asymptotic, dtype=float)).tolist(),
-        q_diff_exact=None if exact is None
-        else (global_sign * np.asarray(exact, dtype=float)).tolist(),
+        q_diff_exact=None if exact_values is None
+        else [None if value is None else global_sign * value for value in exact_values],
         near_edge=(outward >= near_from).tolist(),
         near_edge_from=near_from,
         b=float(b),
         stick_boundary=stick_boundary,
-        warnings=warning_texts(flags, law.for_edge(edge)),
+        warnings=warnings,
     )
 
 
@@ -226,14 +240,23 @@ def slip_displacement(
     direction = q["slip_direction"]
     # Along the edge's outward direction, then back to the global x (the left edge's outward
     # direction is -x, which flips the sign of a displacement measured along x).
-    along = direction * slip_on_loading(outward, q["b_consistent"], q["a1"], mu, q["L_I1"],
-                                        q["L_I2"], direction * q["L_II1"],
-                                        direction * q["L_II2"], E_star)  # fmt: skip
-    global_sign = 1.0 if edge == "right" else -1.0
+    with np.errstate(all="ignore"):  # an overflow is refused below, not warned
+        along = direction * slip_on_loading(outward, q["b_consistent"], q["a1"], mu,
+                                            q["L_I1"], q["L_I2"], direction * q["L_II1"],
+                                            direction * q["L_II2"], E_star)  # fmt: skip
+        global_sign = 1.0 if edge == "right" else -1.0
+        slip = global_sign * np.asarray(along, dtype=float)
+        inverse_modulus = np.float64(1.0) / np.float64(E_star)
+    if not np.isfinite(slip).all():
+        if not np.isfinite(inverse_modulus):
+            raise InputError("E_star", "is too small: the slip displacement scales as 1/E*, "
+                             "which overflows double precision", E_star)  # fmt: skip
+        raise InputError("cycle", "the slip displacement overflows double precision at these "
+                         "positions")  # fmt: skip
     return SlipResult(
         edge=edge,
         x=points.tolist(),
-        slip=(global_sign * np.asarray(along, dtype=float)).tolist(),
+        slip=slip.tolist(),
         b=q["b_consistent"],
         warnings=warning_texts(int(evaluation.edges[edge].flags), law.for_edge(edge)),
     )

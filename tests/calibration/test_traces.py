@@ -198,7 +198,7 @@ def test_the_same_errors_from_arrays_name_the_row(tmp_path):
     P = np.repeat(LOADS, 41)
     p = np.concatenate([HERTZ.pressure(_x(), load) for load in LOADS])
     p[20] = np.nan
-    with pytest.raises(InputError, match=r"arrays: row 20: column p: nan is not a finite number"):
+    with pytest.raises(InputError, match=r"arrays: row 20: column p: is not a finite number"):
         Traces.from_arrays(P, x, p)
     p[20] = 0.0
     x[50], x[51] = x[51], x[50]

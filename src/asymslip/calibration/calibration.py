@@ -301,7 +301,10 @@ def calibrate(
         when an edge has data at one load only, or when the origin is outside the contact.
     """
     if noise is not None and not (math.isfinite(noise) and noise >= 0):
-        raise InputError("noise", "must be a finite number >= 0", noise)
+        raise InputError("noise", "must be a finite number >= 0",
+                         noise if math.isfinite(noise) else None)  # never print inf or nan
+    if origin is not None and not math.isfinite(origin):  # before the fits, not after them
+        raise InputError("origin", "must be a finite number (not inf or nan)")
     fits: dict[Side, list[EdgeFit]] = {"right": [], "left": []}
     seen: dict[tuple[float, Side], str] = {}
     for trace in traces.traces:
@@ -334,8 +337,6 @@ def calibrate(
     symmetric = not (right and left)
     if origin is None:
         origin = 0.0 if symmetric else _centre_at_smallest_load(right, left)
-    elif not math.isfinite(origin):
-        raise InputError("origin", "must be a finite number", origin)
     elif symmetric and origin != 0.0:
         raise InputError(
             "origin",

@@ -38,7 +38,10 @@ def register(commands: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     from ..calibration import calibrate, read_traces
     from ..calibration.report import checks, format_calibration
+    from ..files.atomic import refuse_same_file
 
+    if args.out is not None:  # before anything is read: the traces must survive a typo
+        refuse_same_file(args.out, "out", args.traces)
     traces = read_traces(args.traces, loads=args.loads)
     calibration = calibrate(traces, noise=args.noise, origin=args.origin)
     if args.out is not None:

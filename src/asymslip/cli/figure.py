@@ -7,6 +7,8 @@ import argparse
 import sys
 from pathlib import Path
 
+from ..errors import InputError
+
 FIGURES = ("fig5", "error-map")
 
 
@@ -20,7 +22,8 @@ def register(commands: argparse._SubParsersAction) -> None:
         "CSV (--redraw); or recompute a few rows (--check DIR, every row with --every-row) and "
         "compare them with DIR/error_map.csv at its printed precision.",
     )  # fmt: skip
-    figure.add_argument("name", choices=FIGURES, help="which figure")
+    figure.add_argument("name", choices=FIGURES, metavar="FIGURE",
+                        help="which figure: fig5 or error-map")  # an error names FIGURE
     where = figure.add_mutually_exclusive_group(required=True)
     where.add_argument("--out", type=Path, metavar="DIR", help="output folder")
     where.add_argument("--check", type=Path, metavar="DIR",
@@ -59,6 +62,10 @@ def _fig5(args: argparse.Namespace) -> int:
     from ..figures import stale_fig5_lines, write_fig5
 
     if args.check is not None:
+        committed = args.check / "fig5.csv"
+        if not committed.is_file():  # nothing to compare: not "stale", a wrong folder
+            raise InputError("check", f"{committed} does not exist: give the folder that holds "
+                             "the fig5.csv to check (write one with --out)")  # fmt: skip
         diff = stale_fig5_lines(args.check)
         if diff:
             sys.stdout.writelines(diff)

@@ -41,7 +41,14 @@ def _calibrated(args: argparse.Namespace) -> ContactLaw:
 def _module(args: argparse.Namespace) -> ContactLaw:
     from ..laws.module_law import ModuleLaw
 
-    return ModuleLaw.from_file(args.module, **parse_assignments("param", args.param))
+    values = parse_assignments("param", args.param)
+    try:
+        return ModuleLaw.from_file(args.module, **values)
+    except InputError as error:
+        if error.parameter not in values:
+            raise
+        # The API names the law's parameter (R); on the command line it was set by --param.
+        raise InputError("param", f"{error.parameter} {error.rule}", error.value) from None
 
 
 LAWS: dict[str, LawEntry] = {
@@ -70,7 +77,7 @@ OPTION_OF = {
     "figure": "figure", "derive": "derive", "P": "--P1/--P2",
     "calibration": "--calibration", "traces": "TRACES", "origin": "--origin", "noise": "--noise",
     "loads": "--loads", "path": "--path", "profile": "--profile", "elements": "--elements",
-    "steps": "--steps",
+    "steps": "--steps", "profile_table": "--profile-table",
 }  # fmt: skip
 
 

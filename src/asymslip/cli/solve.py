@@ -16,6 +16,7 @@ from pathlib import Path
 
 from ..cycle import LoadCycle
 from ..errors import InputError
+from ..rules import Verdict, check_friction, check_partial_slip
 from .laws import add_law_options, build_law, parse_assignments
 from .parser import number, whole_number
 
@@ -75,7 +76,12 @@ def _contact(args: argparse.Namespace):  # noqa: ANN202 - a law or a profile
     if args.profile is not None:
         return ExpressionProfile(args.profile, parse_assignments("param", args.param)), None
     if args.profile_table is not None:
-        return TableProfile.from_csv(args.profile_table), None
+        try:
+            return TableProfile.from_csv(args.profile_table), None
+        except InputError as error:  # the API names its profile; here it is --profile-table
+            if error.parameter != "profile":
+                raise
+            raise InputError("profile_table", error.rule, error.value, error.where) from None
     law = build_law(args)
     if not hasattr(law, "profile"):
         raise InputError("law", f"the {law.name} law has no profile for the solver: use "
@@ -97,11 +103,17 @@ def _loading(args: argparse.Namespace) -> tuple[object, LoadCycle | None]:
         raise InputError("cycle", f"needs {' '.join(missing)} (or --path PATH.csv)")
     cycle = LoadCycle(args.P1, args.Q1, args.P2, args.Q2, args.sigma1 or 0.0,
                       args.sigma2 or 0.0)  # fmt: skip
+    # Gross sliding by the rules slip-zone applies, naming --Q1/--Q2 as typed (the solver's
+    # own check names the points of a --path).
+    verdict = Verdict(())
+    check_friction(verdict, args.mu)
+    check_partial_slip(verdict, args.mu, cycle.values())
+    verdict.raise_first()
     return cycle, cycle
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..solver import refine, solve, write_outputs
+    from ..solver import SolverError, refine, solve, write_outputs
     from ..solver.compare import with_asymptotes
 
     contact, law = _contact(args)
@@ -110,8 +122,13 @@ def run(args: argparse.Namespace) -> int:
     if law is None and E_star is None:
         raise InputError("E_star", "is required with --profile or --profile-table")
     options = {"elements": args.elements, "steps": args.steps, "E_star": E_star}
-    result = refine(contact, loading, args.mu, **options) if args.refine \
-        else solve(contact, loading, args.mu, **options)  # fmt: skip
+    try:
+        result = refine(contact, loading, args.mu, **options) if args.refine \
+            else solve(contact, loading, args.mu, **options)  # fmt: skip
+    except SolverError as error:  # not the input's fault: one line, and the failure status
+        print(f"asymslip: error: the reference solver did not converge: {error}",
+              file=sys.stderr)  # fmt: skip
+        return 1
     if law is not None and cycle is not None:
         result = with_asymptotes(result, law, cycle, args.mu)
     if args.out is not None:

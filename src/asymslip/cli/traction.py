@@ -43,7 +43,8 @@ def register(commands: argparse._SubParsersAction) -> None:
         "the integral of the dislocation density (15): the change of the tangential "
         "displacement of the body the tractions act on relative to the other body, along +x.  "
         "Friction resists slip, so h has the sign opposite to q2 - q1 in a slip zone; h = 0 in "
-        "the stick zone; |h| is the slip amplitude (peak to peak) of the steady cycle.",
+        "the stick zone; |h| is the slip amplitude (peak to peak) of the steady cycle.  The slip "
+        "scales as 1/E*: a table or module law needs --E-star.",
     )
     _common(slip)
     slip.set_defaults(run=run_slip)

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import functools
 import keyword
+import math
 import pprint
 import textwrap
 from collections.abc import Mapping, Sequence
@@ -102,10 +103,9 @@ def derive_law(text: str, params: Sequence[str]) -> dict[str, Any]:
     }
 
 
-def _check_increasing(derived: Mapping[str, Any], values: Mapping[str, float],
-                      half_widths: Sequence[float], text: str) -> None:  # fmt: skip
-    sympy = sympy_module()
-    names = [symbol.name for symbol in derived["params"]]
+def _check_values(names: Sequence[str], values: Mapping[str, float],
+                  half_widths: Sequence[float]) -> None:  # fmt: skip
+    """The values of --check and --check-a, refused before anything is derived."""
     missing = [name for name in names if name not in values]
     if missing:
         raise InputError("check", f"needs a value for every parameter to check dP/da > 0; "
@@ -113,13 +113,24 @@ def _check_increasing(derived: Mapping[str, Any], values: Mapping[str, float],
     unknown = sorted(set(values) - set(names))
     if unknown:
         raise InputError("check", f"{', '.join(unknown)} is not a parameter of the law")
+    # Non-finite values first, and without showing them: SymPy would turn them into oo or nan
+    # and the message would blame the law.
     for name, value in values.items():
+        if not math.isfinite(value):
+            raise InputError("check", f"{name} must be finite (not inf or nan)")
         if not value > 0:
             raise InputError("check", f"{name} must be > 0 (parameters are {PARAMETER_RULE})",
                              value)  # fmt: skip
     for half_width in half_widths:
+        if not math.isfinite(half_width):
+            raise InputError("check_a", "half-widths must be finite (not inf or nan)")
         if not half_width > 0:
             raise InputError("check_a", "half-widths must be > 0", half_width)
+
+
+def _check_increasing(derived: Mapping[str, Any], values: Mapping[str, float],
+                      half_widths: Sequence[float], text: str) -> None:  # fmt: skip
+    sympy = sympy_module()
     substitution = {symbol: sympy.Float(values[symbol.name], 30) for symbol in derived["params"]}
     for half_width in half_widths:
         at = {**substitution, derived["a"]: sympy.Float(half_width, 30)}
@@ -277,6 +288,8 @@ def write_law_module(
     out = Path(out)
     if out.suffix != ".py":
         raise InputError("out", "must be a .py file", str(out))
+    if check_half_widths:  # before the derivation: a typo in a value costs no SymPy time
+        _check_values(check_params(params, HALF_WIDTH), dict(check or {}), check_half_widths)
     derived = derive_law(P_of_a, params)
     law_range = analyse_law(derived["load"], derived["load_slope"], derived["a"], P_of_a)
     if check_half_widths:

@@ -180,8 +180,9 @@ def read_table(
     ------
     InputError
         For the file as a whole, naming ``option``, the file and the line: unreadable, not
-        UTF-8 text, a NUL byte, no header, an unnamed, repeated or missing required column, a
-        quote never closed.  Bad rows are not raised: they are listed in ``errors``.
+        UTF-8 text, a NUL byte, no header, no row below the header, an unnamed, repeated or
+        missing required column, a quote never closed.  Bad rows are not raised: they are
+        listed in ``errors``.
     """
     path = Path(path)
     if engine is None:
@@ -195,6 +196,9 @@ def read_table(
     layout = (_simple_layout(data, path, option, required) if engine == "pyarrow" else None)
     if layout is None:
         layout = _scan(data, path, option, required)
+    if (not len(layout.starts)) if layout.body is None else layout.body[0] >= layout.body[1]:
+        raise _fail(option, path, None, "has a header but no rows: there is nothing to read "
+                    "(one case per row below the header)")  # fmt: skip
     wanted = [name for name in wanted if name in layout.header]
     if engine == "pyarrow":
         parsed = _parse_arrow(layout, wanted)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import hashlib
 import importlib.util
 from collections.abc import Callable, Mapping
+from dataclasses import replace
 from pathlib import Path
 from types import ModuleType
 
@@ -18,7 +19,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ..errors import InputError, as_float_array
-from .base import BoolArray, ContactLaw, FloatArray
+from .base import BoolArray, ContactLaw, FloatArray, LawState
 from .roots import invert_increasing_where_possible
 
 REQUIRED_FUNCTIONS = ("load", "load_slope", "normal_edge_multiplier")
@@ -144,6 +145,21 @@ class ModuleLaw(ContactLaw):
         a, found = invert_increasing_where_possible(
             self.load, np.where(inside, P, np.nan), self.load_slope, lower=lower, upper=upper)
         return a, np.asarray(found) & inside
+
+    def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
+        """As for every law, with state 2 marked where P2 lies outside the law's valid loads.
+
+        a2 comes from Newton's method started at a1, which does not know the range: near a
+        bounded law's supremum (k tanh(a) at P = k) it settles where P(a) rounds to the bound.
+        """
+        state = super().cycle_state(P1, dP)
+        low, high = self.valid_loads
+        if low <= 0 and high == np.inf:
+            return state
+        inside = (state.P2 > low) & (state.P2 < high)
+        if np.all(inside):
+            return state
+        return replace(state, found2=np.asarray(state.found2) & inside)
 
     def _call(self, function: Callable[..., FloatArray], a: ArrayLike) -> FloatArray:
         return np.asarray(function(np.asarray(a, dtype=np.float64), *self._values),

@@ -88,6 +88,11 @@ class PowerLaw(ContactLaw):
         object.__setattr__(self, "A", float(positive("A", self.A)))
         exponent = as_float_array("n", self.n)
         require(exponent >= 1, "n", "must be >= 1 (n < 1 is not an incomplete contact)", exponent)
+        try:
+            shape_factor(float(exponent))
+        except OverflowError:  # log Gamma(n/2) beyond the double range: n above about 5e305
+            raise InputError("n", "is too large: the factor K(n) of P = K E* A a^n overflows "
+                             "double precision", float(exponent)) from None  # fmt: skip
         object.__setattr__(self, "n", float(exponent))
         object.__setattr__(self, "E_star", float(positive("E_star", self.E_star)))
 
@@ -97,8 +102,11 @@ class PowerLaw(ContactLaw):
         return shape_factor(self.n)
 
     @property
-    def _parameters(self) -> tuple[float, float, float, float]:
-        return self.n, self.A, self.E_star, self.shape_factor
+    def _parameters(self) -> tuple[np.float64, np.float64, np.float64, np.float64]:
+        # NumPy scalars, not Python floats: a kernel's A**(3/2) of a huge A is then inf (which
+        # the rules refuse, naming the load) instead of Python's OverflowError.
+        return (np.float64(self.n), np.float64(self.A), np.float64(self.E_star),
+                np.float64(self.shape_factor))  # fmt: skip
 
     def load(self, a: ArrayLike) -> FloatArray:
         return power_law_load(a, *self._parameters)
@@ -180,8 +188,9 @@ class PowerLaw(ContactLaw):
         position = as_float_array("x", x)
         a = self.half_width(P)
         if self.n == 1.0:
-            # The wedge's pressure is logarithmically infinite at the apex: +inf, not a warning.
-            with np.errstate(divide="ignore"):
+            # The wedge's pressure is logarithmically infinite at the apex: +inf, not a warning
+            # (a/|x| overflows for a subnormal x).
+            with np.errstate(divide="ignore", over="ignore"):
                 return wedge_pressure(position, a, self.A, self.E_star)
         if self.n == 2.0:
             factor = np.ones(np.broadcast_shapes(position.shape, np.shape(a)))  # 2F1(0, 1; 3/2; z)

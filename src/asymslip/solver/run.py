@@ -31,7 +31,7 @@ from .path import LoadPath, as_path
 from .profiles import Profile, as_profile
 from .result import ORIENTATION, Edge, EdgeResult, EdgeState, SolverResult, StateResult, measured
 from .tangential import TangentialSolver, TangentialState, predict_slip
-from .toeplitz import FloatArray, Runs
+from .toeplitz import FloatArray, Runs, SolverError
 
 #: Fewest elements accepted: the boundary fits need a few elements in every zone.
 MIN_ELEMENTS = 64
@@ -110,6 +110,8 @@ def choose_domain(
         except ContactOutsideGrid:
             half *= 2
             continue
+        except SolverError:  # the normal problem has no solution: a profile falling away (-x**2)
+            break
         if hi - lo < 0.2 * half:  # the contact fills little of the grid: zoom in once more
             centre, half = 0.5 * (lo + hi), 0.75 * (hi - lo)
             continue
@@ -257,23 +259,30 @@ def solve(
     path.check_partial_slip(mu)
     is_cycle = isinstance(loading, LoadCycle)
 
-    if domain is not None:
-        left, right = (float(v) for v in as_float_array("domain", domain))
-        if not right > left:
-            raise InputError("domain", "must be (left, right) with right > left", domain)
-        attempts = [(left, right)]
-    else:
-        left, right = choose_domain(profile, E_star, path)
-        width = right - left
-        attempts = [(left, right), (left - width, right + width)]
-    for left, right in attempts:
-        grid = Grid.spanning(left, right, elements)
+    # Loads, moduli or lengths so far from 1 that the influence sums overflow (loads of 1e300)
+    # are refused, never answered with inf or NaN.
+    with np.errstate(over="raise"):
         try:
-            return _run(
-                profile, E_star, path, mu, grid, steps, tolerance, max_cycles, is_cycle, started
-            )
-        except ContactOutsideGrid:
-            continue
+            if domain is not None:
+                left, right = (float(v) for v in as_float_array("domain", domain))
+                if not right > left:
+                    raise InputError("domain", "must be (left, right) with right > left", domain)
+                attempts = [(left, right)]
+            else:
+                left, right = choose_domain(profile, E_star, path)
+                width = right - left
+                attempts = [(left, right), (left - width, right + width)]
+            for left, right in attempts:
+                grid = Grid.spanning(left, right, elements)
+                try:
+                    return _run(profile, E_star, path, mu, grid, steps, tolerance, max_cycles,
+                                is_cycle, started)  # fmt: skip
+                except ContactOutsideGrid:
+                    continue
+        except FloatingPointError:
+            raise InputError("cycle", "the reference solver overflows double precision for these "
+                             "loads and this modulus: give them in units that keep the "
+                             "pressures far from 1e308") from None  # fmt: skip
     raise InputError(
         "domain", "the contact reaches the end of the computational domain; give a wider domain"
     )
