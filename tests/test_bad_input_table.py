@@ -682,6 +682,16 @@ def command_line_cases() -> list[Bad]:
                                                           "{d}/a_folder"),
             "--check", r"fig5\.csv"),
         Bad("figure: neither --out nor --check", ("figure", "fig5"), "--out", r"required"),
+        Bad("figure: error map --out under a file", ("figure", "error-map", "--out",
+                                                     "{d}/a_file/figs", "--redraw"),
+            "--out", r"cannot create the folder"),
+        Bad("figure: error map --check a folder without error_map.csv",
+            ("figure", "error-map", "--check", "{d}/a_folder"), "--check", r"error_map\.csv"),
+        Bad("figure: error map --redraw without the CSV",
+            ("figure", "error-map", "--out", "{d}/figs", "--data", "{d}/a_folder", "--redraw"),
+            "--data", r"no error_map\.csv"),
+        Bad("figure: --data with fig5", ("figure", "fig5", "--out", "{d}/figs", "--data",
+                                         "{d}/a_folder"), "--data", r"error map only"),
     ]  # fmt: skip
 
 

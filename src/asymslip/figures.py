@@ -227,15 +227,8 @@ def write_fig5(directory: Path) -> list[Path]:
         If ``directory`` exists and is not a folder or cannot be created, or matplotlib (the
         ``plot`` extra) is not installed (checked before anything is written).
     """
-    directory = Path(directory)
-    if directory.exists() and not directory.is_dir():
-        raise InputError("out", "must be a folder, not an existing file", str(directory))
     figure_class()  # fail before writing anything
-    try:  # before the second of computing: an unusable folder fails at once
-        directory.mkdir(parents=True, exist_ok=True)
-    except OSError as error:  # a file where a folder must be, no permission, a full disk
-        raise InputError("out", f"cannot create the folder {directory}: "
-                         f"{error.strerror or error}") from None  # fmt: skip
+    directory = _output_folder(directory, "out")  # before the computing: fail at once
     curves = fig5_curves()
     csv_path = directory / "fig5.csv"
     png_path = directory / "fig5.png"
@@ -274,9 +267,15 @@ _FLOOR = 0.01
 
 
 def _output_folder(directory: Path, option: str) -> Path:
+    """``directory``, created if missing; refused (naming ``option``) if it cannot be."""
     directory = Path(directory)
     if directory.exists() and not directory.is_dir():
         raise InputError(option, "must be a folder, not an existing file", str(directory))
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+    except OSError as error:  # a file where a folder must be, no permission, a full disk
+        raise InputError(option, f"cannot create the folder {directory}: "
+                         f"{error.strerror or error}") from None  # fmt: skip
     return directory
 
 
@@ -386,9 +385,12 @@ def write_error_map(
         If a folder is an existing file, matplotlib is missing (checked before the solver
         runs), or with ``redraw`` the CSV is missing or not an error map.
     """
-    directory = _output_folder(directory, "out")
-    data = directory if data is None else _output_folder(data, "data")
     figure_class()  # fail before running the solver
+    directory = _output_folder(directory, "out")
+    if data is None:
+        data = directory
+    else:  # only read when redrawing: nothing to create
+        data = Path(data) if redraw else _output_folder(data, "data")
     csv_path, png_path = data / ERROR_MAP_CSV, directory / ERROR_MAP_PNG
     written = []
     if redraw:
@@ -398,11 +400,9 @@ def write_error_map(
         text = csv_path.read_text(encoding="utf-8")
     else:
         text = error_map_module.csv_text(error_map_module.error_map(progress=progress))
-        data.mkdir(parents=True, exist_ok=True)
         with atomic_write(csv_path, "data", mode="w") as handle:
             handle.write(text)
         written.append(csv_path)
-    directory.mkdir(parents=True, exist_ok=True)
     _draw_error_map(error_map_module.read_csv(text), png_path)
     return [*written, png_path]
 

@@ -84,8 +84,11 @@ def _error_map(args: argparse.Namespace) -> int:
     from ..solver.error_map import map_cases
 
     if args.check is not None:
-        problems = stale_error_map_lines(args.check, every_row=args.every_row)
         path = args.check / ERROR_MAP_CSV
+        if not path.is_file():  # nothing to compare: not "stale", a wrong folder
+            raise InputError("check", f"{path} does not exist: give the folder that holds the "
+                             "error_map.csv to check (write one with --out)")  # fmt: skip
+        problems = stale_error_map_lines(args.check, every_row=args.every_row)
         if problems:
             print("\n".join(problems))
             print(f"{path} is stale: run `make error-map`", file=sys.stderr)

@@ -77,7 +77,7 @@ OPTION_OF = {
     "figure": "figure", "derive": "derive", "P": "--P1/--P2",
     "calibration": "--calibration", "traces": "TRACES", "origin": "--origin", "noise": "--noise",
     "loads": "--loads", "path": "--path", "profile": "--profile", "elements": "--elements",
-    "steps": "--steps", "profile_table": "--profile-table",
+    "steps": "--steps", "profile_table": "--profile-table", "data": "--data",
 }  # fmt: skip
 
 
