@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import subprocess
 import sys
 import textwrap
@@ -244,6 +245,44 @@ def test_what_sympy_cannot_settle_is_recorded_as_not_established(tmp_path):
     assert module.__asymslip_law__["range"]["established"] is False
     assert written.range_summary.startswith("Where P(a) is positive and increasing was not "
                                             "established symbolically")  # fmt: skip
+
+
+@pytest.fixture(scope="module")
+def sine_law(tmp_path_factory):
+    # P = sin(a): SymPy cannot settle where it increases, and P(a) = 0.98 has roots on every
+    # rising branch (1.37, 7.65, ...); a contact grows from a = 0, so only the first is one.
+    path = write_law_module("sin(a)", [], "sine", tmp_path_factory.mktemp("sine") / "sine.py")
+    return ModuleLaw.from_file(path.path)
+
+
+def test_a_law_of_unestablished_range_takes_the_root_on_the_branch_from_zero(sine_law):
+    result = slip_zone(sine_law, LoadCycle(P1=0.98, Q1=0, P2=0.985, Q2=0.002), mu=0.3)
+    assert result.a1 == pytest.approx(math.asin(0.98), rel=1e-14)
+    assert result.a2 == pytest.approx(math.asin(0.985), rel=1e-14)
+
+
+def test_a_load_beyond_the_first_branch_of_an_unestablished_law_is_refused(sine_law):
+    # sin(a) rises on (0, pi/2] only: it carries loads up to 1; 0.999 has the root asin(0.999)
+    # on that branch and more on later ones (7.81, ...), which are not contacts.
+    assert sine_law.valid_half_widths[1] == pytest.approx(math.pi / 2, rel=1e-12)
+    assert sine_law.valid_loads[1] == pytest.approx(1.0, rel=1e-15)
+    with pytest.raises(InputError, match=r"^P2: .*sine law.* loads from 0 to 1 only"):
+        slip_zone(sine_law, LoadCycle(P1=0.98, Q1=0, P2=1.01, Q2=0.002), mu=0.3)
+    a, found = sine_law.half_width_where_possible(np.array([0.5, 0.999, 1.5]))
+    np.testing.assert_allclose(a[:2], np.arcsin([0.5, 0.999]), rtol=1e-13)
+    assert found.tolist() == [True, True, False]
+
+
+def test_a_load_reached_only_past_a_fall_of_the_law_is_refused(tmp_path):
+    # P = a + 2 sin(a) rises to 2 pi/3 + sqrt(3) = 3.826 at a = 2 pi/3, falls, then rises
+    # again: a contact loaded to 4 would have jumped, so 4 is refused; 3 is on the first rise.
+    written = write_law_module("a + 2*sin(a)", [], "dip", tmp_path / "dip.py")
+    law = ModuleLaw.from_file(written.path)
+    assert not law.range_established
+    assert law.valid_loads[1] == pytest.approx(2 * math.pi / 3 + math.sqrt(3), rel=1e-12)
+    a, found = law.half_width_where_possible(np.array([3.0, 4.0]))
+    assert found.tolist() == [True, False]
+    assert a[0] + 2 * math.sin(a[0]) == pytest.approx(3.0, rel=1e-14) and a[0] < 2 * math.pi / 3
 
 
 def test_check_values_must_be_positive_as_the_parameters_are(tmp_path):

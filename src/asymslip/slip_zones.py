@@ -79,8 +79,8 @@ ESTIMATES_CHECKED = {"b_paper": ("(22)", DISAGREE_PAPER),
                      "b_corrective_stick": ("(40)", DISAGREE_CORRECTIVE_STICK)}  # fmt: skip
 _OUTSIDE_FLAGS = {key: 1 << (12 + i) for i, key in enumerate(ESTIMATES_CHECKED)}
 _DISAGREEMENT_TEXT = {
-    DISAGREE_PAPER: "(22) (b_paper) differs from b by more than their stated accuracies: with "
-    "bulk tension (22) carries a spurious dP^2 term (erratum 22-T); take b",
+    DISAGREE_PAPER: "(22) (b_paper) differs from b by more than their stated accuracies (with "
+    "bulk tension (22) carries a spurious dP^2 term, erratum 22-T); take b",
     DISAGREE_FIRST_ORDER: "the first-order (28) (b_first_order) differs from b by more than "
     "their stated accuracies: the load change is too large for a first-order estimate",
     DISAGREE_CORRECTIVE_STICK: "the corrective-stick (40) (b_corrective_stick) differs from b "

@@ -102,6 +102,11 @@ class ModuleLaw(ContactLaw):
                                      "parameters", value)  # fmt: skip
         self._values = tuple(self.params.values())
         self.valid_half_widths, self.valid_loads = self._range()
+        #: False when ``asymslip derive`` could not establish where P(a) increases (P =
+        #: sin(a)); the first rising branch is then found numerically (:meth:`_first_branch`).
+        self.range_established = bool(description.get("range", {}).get("established", True))
+        if not self.range_established:
+            self.valid_half_widths, self.valid_loads = self._first_branch()
 
     @classmethod
     def from_file(cls, path: str | Path, **param_values: float) -> ModuleLaw:
@@ -123,6 +128,41 @@ class ModuleLaw(ContactLaw):
             a_min, a_max, P_min, P_max = (float(function(*self._values))
                                           for function in functions)  # fmt: skip
         return (a_min, a_max), (P_min, P_max)
+
+    #: The scan of :meth:`_first_branch`: half-widths from 1e-12 to 1e12, log-spaced.
+    BRANCH_SCAN = np.geomspace(1e-12, 1e12, 20_001)
+
+    def _first_branch(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        """Where P(a) rises from a = 0, for a law whose range SymPy could not establish.
+
+        A contact grows from a = 0 as the load rises, so its half-width is on the first branch
+        of P(a) that rises from there: P = sin(a) at P = 0.98 has the root 7.65 as well as
+        asin(0.98) = 1.37, with dP/da > 0 at both, and only 1.37 is a contact.  dP/da is
+        sampled on 20001 log-spaced half-widths (ratio 1.0028) from 1e-12 to 1e12; the first
+        sample where it is <= 0 (NaN samples do not count) is refined by bisection to the end
+        of the branch, a_end, and the law carries the loads below P(a_end) only.  A sampling
+        check: a dip narrower than 0.28 % of a can pass it.
+        """
+        (a_min, a_max), (P_min, P_max) = self.valid_half_widths, self.valid_loads
+        with np.errstate(all="ignore"):
+            falling = np.flatnonzero((self.load_slope(self.BRANCH_SCAN) <= 0)
+                                     & (self.BRANCH_SCAN > a_min))  # fmt: skip
+        if falling.size == 0:
+            return (a_min, a_max), (P_min, P_max)
+        first = int(falling[0])
+        high = float(self.BRANCH_SCAN[first])
+        low = float(self.BRANCH_SCAN[first - 1]) if first > 0 else 0.0
+        with np.errstate(all="ignore"):
+            for _ in range(60):  # to the double next to the turn (60 halvings of < 0.3 %)
+                middle = 0.5 * (low + high)
+                if middle in (low, high):
+                    break
+                if self.load_slope(middle) > 0:
+                    low = middle
+                else:
+                    high = middle
+            P_end = float(self.load(low))
+        return (a_min, min(a_max, low)), (P_min, min(P_max, P_end))
 
     @property
     def range_note(self) -> str:
