@@ -110,7 +110,8 @@ def _rule_table() -> dict[str, Rule]:
         # What the asymptotic solution can answer, per edge.
         ("denominator", "mu", "at the {side} edge the denominator of (17), mu (L_I1 + L_I2) + "
          "L_II1 - L_II2, is not positive ({denominator}) for this friction coefficient and load "
-         "path: no steady partial-slip state exists (the stick boundary would lie beyond a2)"),
+         "path: no steady partial-slip state exists (the stick boundary would lie beyond a2)"
+         "{note}"),
         ("result_finite", "cycle", "the {law} law gives a non-finite {quantity} at the {side} "
          "edge (overflow in double precision)"),
         ("b_range", "cycle", "at the {side} edge the stick boundary b = {b} lies outside the "

@@ -279,9 +279,13 @@ def _finish_edge(law: ContactLaw, state: LawState, mu: FloatArray, verdict: Verd
     b, a2 = values["b"], values["a2"]
     scale = 2 * mu * (L_I1 + L_I2) + abs(L_II1) + abs(L_II2)
     tolerance = _DENOMINATOR_TOLERANCE * scale
-    verdict.require("denominator", ~slips | (denominator > tolerance) if not
-                    isinstance(slips, (bool, np.bool_)) else (not slips) or denominator > tolerance,
-                    mu, side=side, denominator=denominator)  # fmt: skip
+    admits = ~slips | (denominator > tolerance) if not isinstance(slips, (bool, np.bool_)) \
+        else (not slips) or denominator > tolerance  # fmt: skip
+    refused = ~np.asarray(admits)
+    note = law.resolution_note(np.broadcast_to(state.P1, refused.shape)[refused],
+                               np.broadcast_to(state.P2, refused.shape)[refused]) \
+        if refused.any() else ""  # fmt: skip
+    verdict.require("denominator", admits, mu, side=side, denominator=denominator, note=note)
     # Non-finite results first: a b that overflowed is not "outside the contact".
     checked = ("b", "slip_zone_width", "b_first_order", "L_II1", "L_II2", *MEASURE_KEYS)
     total = sum(values[key] for key in checked)

@@ -230,6 +230,14 @@ class ContactLaw(abc.ABC):
     #: Appended to the message for a load the law cannot carry (a user law's known range).
     range_note: str = ""
 
+    def resolution_note(self, P1: ArrayLike, P2: ArrayLike) -> str:
+        """Appended where (17) has no partial-slip state: why the law may not resolve the cycle.
+
+        A closed-form law is exact, so nothing (the default); a law known from data says when
+        its own error at the loads exceeds the edge's advance between them.
+        """
+        return ""
+
     def for_edge(self, side: Side) -> ContactLaw:
         """The law of one edge: a symmetric contact has the same law at both."""
         return self

@@ -29,7 +29,7 @@ Runtime needs NumPy only.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Protocol
@@ -303,6 +303,26 @@ class CalibratedEdge:
         """Estimated error of ``quantity(edge)`` (see :meth:`CalibratedLaw.error_of`)."""
         return self.law.error_of(lambda law: quantity(law.for_edge(self.side)))
 
+    def resolution_note(self, P1: ArrayLike, P2: ArrayLike) -> str:
+        """Where the edge's error at P1 or P2 exceeds its advance a(P2) - a(P1), say so.
+
+        Then the sign of (17)'s denominator is not decided by the data: the refusal is the
+        calibrated law's answer, and finer data near the edge may give a partial-slip state.
+        """
+        P1, P2 = np.broadcast_arrays(np.asarray(P1, np.float64), np.asarray(P2, np.float64))
+        error = self.error_estimate(np.concatenate([P1.ravel(), P2.ravel()]))["a"]
+        error = np.maximum(error[: P1.size], error[P1.size :])
+        advance = np.abs(self.half_width(P2.ravel()) - self.half_width(P1.ravel()))
+        unresolved = ~(error <= advance)
+        if not unresolved.any():
+            return ""
+        k = int(np.flatnonzero(unresolved)[0])
+        return (
+            f"; but the calibrated {self.side} edge is known only to +-{error[k]:.3g} at these "
+            f"loads, more than its advance a2 - a1 = {advance[k]:.3g}: the data cannot resolve "
+            "this load step (finer pressure data near the edge, or loads further apart)"
+        )
+
     def error_estimate(self, P: ArrayLike) -> dict[str, FloatArray]:
         """Estimated errors of a(P), a'(P) and L_I(P) at loads P (keys a, a_slope, L_I)."""
         P = np.asarray(P, dtype=np.float64)
@@ -424,62 +444,102 @@ class CalibratedLaw:
         return tuple(refits)
 
     @cached_property
-    def _perturbed(self) -> tuple[tuple[CalibratedLaw, float], ...]:
-        """Each calibrated a and L_I moved by its error, one at a time: (law, scale).
+    def _perturbed(self) -> tuple[_Ladder, ...]:
+        """Each calibrated a and L_I moved by its error, one at a time.
 
-        Where moving a point by its whole error would stop the edge advancing, it is moved by a
-        fraction of it (halving until the fit is increasing) and the change is scaled back up
-        (``scale``): a linear propagation of that point's error.
+        One entry per calibrated point: its variants (law, scale), largest move first.  The
+        whole error comes first, then fractions of it (halving, both signs) with the change
+        scaled back up (``scale``): a linear propagation of that point's error.  A fraction is
+        skipped where the moved fit would stop the edge advancing; ``error_of`` also falls
+        back to a smaller move where the quantity has no value for the larger one (e.g. the
+        moved law admits no partial-slip state).
         """
         points = {side: edge.points for side, edge in self._edges.items()}
-        variants = []
+        ladders = []
         for side, values in points.items():
             for name, errors in (("a", values.a_error), ("L_I", values.L_I_error)):
                 for k in range(values.P.size):
                     if errors[k] == 0:
                         continue
-                    variant = _moved_law(self, points, side, values, name, k, errors[k])
-                    if variant is not None:
-                        variants.append(variant)
-        return tuple(variants)
+                    ladders.append(_Ladder(self, points, side, values, name, k, errors[k]))
+        return tuple(ladders)
 
     def error_of(self, quantity: Callable[[CalibratedLaw], ArrayLike]) -> FloatArray:
         """Estimated error of any result computed from this law, e.g. each edge's stick boundary.
 
         ``ERROR_SAFETY_FACTOR`` (2) times the largest change of ``quantity(law)`` over the
         leave-one-out refits (the fit between the loads), plus the root sum of squares of its
-        changes when each calibrated a and L_I is moved by its own error (the data).
+        changes when each calibrated a and L_I is moved by its own error (the data).  A refit
+        or a moved law for which ``quantity`` raises ``InputError`` (say the refit admits no
+        partial-slip state for the cycle) makes the error infinite: the calibration cannot
+        bound it, and says so -- unless a smaller move of the same point has an answer, in
+        which case that move is propagated linearly.
         """
         reference = np.asarray(quantity(self), dtype=np.float64)
         fit = np.zeros_like(reference)
         for refit in self._refits:
-            change = np.abs(np.asarray(quantity(refit), dtype=np.float64) - reference)
+            try:
+                change = np.abs(np.asarray(quantity(refit), dtype=np.float64) - reference)
+            except InputError:
+                change = np.full_like(reference, np.inf)
             fit = np.maximum(fit, change)
         data = np.zeros_like(reference)
-        for variant, scale in self._perturbed:
-            change = (np.asarray(quantity(variant), dtype=np.float64) - reference) * scale
+        for ladder in self._perturbed:
+            # No move keeps the edge advancing: nothing to propagate; every move raises:
+            # unbounded; otherwise the largest move that answers.
+            change = np.zeros_like(reference)
+            for variant, scale in ladder:
+                change = np.full_like(reference, np.inf)
+                try:
+                    change = (np.asarray(quantity(variant), dtype=np.float64) - reference) * scale
+                except InputError:
+                    continue
+                break
             data = data + change**2
         return ERROR_SAFETY_FACTOR * fit + np.sqrt(data)
 
 
-def _moved_law(
-    law: CalibratedLaw,
-    points: dict[Side, _Points],
-    side: Side,
-    values: _Points,
-    name: str,
-    k: int,
-    error: float,
-) -> tuple[CalibratedLaw, float] | None:
-    for fraction in (1.0, -1.0, 0.5, -0.5, 0.25, -0.25, 0.125, -0.125):
-        moved = values.moved(name, k, fraction * error)
-        if name == "a" and not (np.all(np.diff(moved.a) > 0) and np.all(moved.a > 0)):
-            continue
-        if name == "L_I" and not moved.L_I[k] > 0:
-            continue
-        variant = law._variant({**points, side: moved}, cubic_ends=False)
-        return variant, 1.0 / abs(fraction)
-    return None
+class _Ladder:
+    """One calibrated point's moves that keep the edge advancing, largest first.
+
+    Iterating gives (law, 1/|fraction|); each variant law is fitted only when first reached
+    and then kept, so the usual case (the whole error answers) fits one law per point.
+    """
+
+    FRACTIONS = (1.0, -1.0, 0.5, -0.5, 0.25, -0.25, 0.125, -0.125)
+
+    def __init__(
+        self,
+        law: CalibratedLaw,
+        points: dict[Side, _Points],
+        side: Side,
+        values: _Points,
+        name: str,
+        k: int,
+        error: float,
+    ) -> None:
+        self._make = (law, points, side, values, name, k, error)
+        self._built: dict[float, CalibratedLaw | None] = {}
+
+    def _variant(self, fraction: float) -> CalibratedLaw | None:
+        if fraction not in self._built:
+            law, points, side, values, name, k, error = self._make
+            moved = values.moved(name, k, fraction * error)
+            advancing = (
+                bool(np.all(np.diff(moved.a) > 0) and np.all(moved.a > 0))
+                if name == "a"
+                else bool(moved.L_I[k] > 0)
+            )
+            self._built[fraction] = (
+                law._variant({**points, side: moved}, cubic_ends=False) if advancing else None
+            )
+        return self._built[fraction]
+
+    def __iter__(self) -> Iterator[tuple[CalibratedLaw, float]]:
+        for fraction in self.FRACTIONS:
+            variant = self._variant(fraction)
+            if variant is not None:
+                yield variant, 1.0 / abs(fraction)
 
 
 def _log(P: ArrayLike) -> FloatArray:
