@@ -308,15 +308,16 @@ class CalibratedEdge:
 
         Then the sign of (17)'s denominator is not decided by the data: the refusal is the
         calibrated law's answer, and finer data near the edge may give a partial-slip state.
+        ``P1``, ``P2``: the refused cycles; one text serves them all, so it is given only
+        when every one of them is unresolved (it names the largest error).
         """
         P1, P2 = np.broadcast_arrays(np.asarray(P1, np.float64), np.asarray(P2, np.float64))
         error = self.error_estimate(np.concatenate([P1.ravel(), P2.ravel()]))["a"]
         error = np.maximum(error[: P1.size], error[P1.size :])
         advance = np.abs(self.half_width(P2.ravel()) - self.half_width(P1.ravel()))
-        unresolved = ~(error <= advance)
-        if not unresolved.any():
+        if not np.all(~(error <= advance)):
             return ""
-        k = int(np.flatnonzero(unresolved)[0])
+        k = int(np.argmax(error))
         return (
             f"; but the calibrated {self.side} edge is known only to +-{error[k]:.3g} at these "
             f"loads, more than its advance a2 - a1 = {advance[k]:.3g}: the data cannot resolve "
@@ -485,16 +486,13 @@ class CalibratedLaw:
             fit = np.maximum(fit, change)
         data = np.zeros_like(reference)
         for ladder in self._perturbed:
-            # No move keeps the edge advancing: nothing to propagate; every move raises:
-            # unbounded; otherwise the largest move that answers.
-            change = np.zeros_like(reference)
-            for variant, scale in ladder:
-                change = np.full_like(reference, np.inf)
+            change = np.zeros_like(reference)  # no move keeps the edge advancing: nothing
+            for variant, scale in ladder:  # the largest move that answers
                 try:
                     change = (np.asarray(quantity(variant), dtype=np.float64) - reference) * scale
+                    break
                 except InputError:
-                    continue
-                break
+                    change = np.full_like(reference, np.inf)  # unbounded, unless a smaller one
             data = data + change**2
         return ERROR_SAFETY_FACTOR * fit + np.sqrt(data)
 
