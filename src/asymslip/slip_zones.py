@@ -35,6 +35,20 @@ import asymslip_gen
 from asymslip_gen import scalar as scalar_kernels
 
 from .cycle import LoadCycle
+from .edge_estimates import disagreement_limits, edge_estimates, stated_accuracy
+from .edge_flags import (
+    ESTIMATES_CHECKED,
+    EXTRAPOLATED_P1,
+    EXTRAPOLATED_P2,
+    MEASURE_FLAGS,
+    MEASURE_KEYS,
+    NO_SLIP,
+    NUMBER_KEYS,
+    OTHER_EDGE_STICKS,
+    OUTSIDE_FLAGS,
+    VALIDITY_THRESHOLD,
+    warning_texts,
+)
 from .errors import InputError, as_numbers
 from .laws.base import ContactLaw, LawState
 from .rules import Verdict, check_friction, check_partial_slip, finite
@@ -42,82 +56,6 @@ from .rules import Verdict, check_friction, check_partial_slip, finite
 FloatArray = NDArray[np.float64]
 Side = Literal["right", "left"]
 SIDES: tuple[Side, Side] = ("right", "left")
-
-#: A validity measure above this is reported in ``warnings`` ("<< 1" made concrete).
-VALIDITY_THRESHOLD = 0.1
-
-VALIDITY_MEANING = {
-    "eq24": "contact growth dP a'(P)/a1",
-    "eq25": "slip-zone size |b - a1|/a1",
-    "eq26": "edge-multiplier growth dP |L_I'(P)|/L_I1",
-    "eq27": "necessary condition dP a'(P)/a1 |1 - lam/mu - pi eta a1/(4 mu)| (0 where the edge "
-    "does not slip)",
-}
-
-#: The numeric fields of one edge's result, in JSON order (validity measures flattened).
-NUMBER_KEYS = (
-    "a1", "a2", "lam", "eta", "L_I1", "L_I2", "L_II1", "L_II2", "b", "slip_zone_width",
-    "b_accuracy", "b_paper", "b_first_order", "b_exact", "b_corrective_stick", "slip_direction",
-)  # fmt: skip
-MEASURE_KEYS = tuple(VALIDITY_MEANING)
-
-# --- warnings as flags --------------------------------------------------------------------------
-NO_SLIP = 1 << 0
-_MEASURE_FLAGS = {key: 1 << (1 + i) for i, key in enumerate(MEASURE_KEYS)}
-EXTRAPOLATED_P1 = 1 << 5
-EXTRAPOLATED_P2 = 1 << 6
-DISAGREE_PAPER = 1 << 7
-DISAGREE_FIRST_ORDER = 1 << 8
-DISAGREE_CORRECTIVE_STICK = 1 << 9
-DISAGREE_EXACT = 1 << 10
-OTHER_EDGE_STICKS = 1 << 11
-#: The other estimates of b, left out (null) where they fall outside the contact (0, a2]: a
-#: stick boundary there is no answer, and printing it would pass it off as one.  Each with its
-#: equation and the disagreement flag it then replaces.
-ESTIMATES_CHECKED = {"b_paper": ("(22)", DISAGREE_PAPER),
-                     "b_first_order": ("(28)", DISAGREE_FIRST_ORDER),
-                     "b_corrective_stick": ("(40)", DISAGREE_CORRECTIVE_STICK)}  # fmt: skip
-_OUTSIDE_FLAGS = {key: 1 << (12 + i) for i, key in enumerate(ESTIMATES_CHECKED)}
-_DISAGREEMENT_TEXT = {
-    DISAGREE_PAPER: "(22) (b_paper) differs from b by more than their stated accuracies (with "
-    "bulk tension (22) carries a spurious dP^2 term, erratum 22-T); take b",
-    DISAGREE_FIRST_ORDER: "the first-order (28) (b_first_order) differs from b by more than "
-    "their stated accuracies: the load change is too large for a first-order estimate",
-    DISAGREE_CORRECTIVE_STICK: "the corrective-stick (40) (b_corrective_stick) differs from b "
-    "by more than their stated accuracies",
-    DISAGREE_EXACT: "b differs from the exact a(P_K) by more than its stated accuracy: the load "
-    "change is too large for the second-order estimate; take b_exact",
-    OTHER_EDGE_STICKS: "the other edge does not slip: b uses the second-order branch that joins "
-    "continuously where the other edge starts to slip (checked against the reference solver, "
-    "not derived)",
-}
-
-_NO_SLIP_TEXT = (
-    "no slip at this edge: |L_II2| <= mu L_I2 (|lam + pi eta a2/4| <= mu), so the edge sticks "
-    "wherever it is in contact; b = a1 and the slip-zone width is 0"
-)
-
-
-def warning_texts(flags: int, law: ContactLaw) -> list[str]:
-    """The warnings of one element, in words, from its flags."""
-    texts = []
-    if flags & NO_SLIP:
-        texts.append(_NO_SLIP_TEXT)
-    for key, bit in _MEASURE_FLAGS.items():
-        if flags & bit:
-            texts.append(f"{key} > {VALIDITY_THRESHOLD}: {VALIDITY_MEANING[key]} is not small, so "
-                         "the asymptotic solution is doubtful")  # fmt: skip
-    for bit, label in ((EXTRAPOLATED_P1, "P1"), (EXTRAPOLATED_P2, "P2")):
-        if flags & bit:
-            texts.append(law.extrapolation_note(label))
-    texts.extend(text for bit, text in _DISAGREEMENT_TEXT.items() if flags & bit)
-    for key, bit in _OUTSIDE_FLAGS.items():
-        if flags & bit:
-            texts.append(f"{key}: the estimate {ESTIMATES_CHECKED[key][0]} puts the stick "
-                         "boundary outside the contact (0, a2], so it is no answer for this "
-                         "cycle and is left out (null)")  # fmt: skip
-    return texts
-
 
 # --- the evaluation -----------------------------------------------------------------------------
 @dataclass
@@ -204,69 +142,47 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
     if hasattr(law, "shear_multiplier"):
         return _edge_with_own_multipliers(law, state, mu, lam, eta, dP, verdict, side, shear,
                                           slips, orientation, kernels)  # fmt: skip
-    # (22), the paper's headline, and its cancellation-free width a1 - b.
-    paper_width = _where(slips, kernels.slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, L_I2),
-                         0.0)  # fmt: skip
-    denominator = kernels.stick_boundary_denominator(mu, lam_o, eta_o, a1, a2, L_I1, L_I2)
-    worst_slope = _maximum(state.a_slope1, state.a_slope2)
-    worst_multiplier_slope = _maximum(abs(state.L_I_slope1), abs(state.L_I_slope2))
-    first_order = a1 * kernels.stick_ratio_first_order(mu, lam_o, eta_o, a1, dP, state.a_slope1)
-    # The headline: b to second order with both edges and bulk tension (b2), the estimate the
-    # evidence supports (README, "How far to trust b").  The other edge slips the same way in
-    # the global frame when the two own-frame directions differ in sign (the left edge's frame
-    # is mirrored); +1 too where it does not slip (derivations/second_order_slip_zone.py).
+    # The other edge slips the same way in the global frame when the two own-frame directions
+    # differ in sign (the left edge's frame is mirrored); +1 too where it does not slip
+    # (derivations/second_order_slip_zone.py).
     other_edge = _where(other_direction == 0, 1.0, -direction * other_direction)
-    # The kernel is a polynomial whose terms (a1^3 eta^2 dL_I/dP dP, mu^2 ...) overflow or
-    # underflow for loads of 1e300 or mu = 1e-300 though the width does not; it depends on
-    # lam and eta through lam/mu and eta/mu and is homogeneous in length and load, so it is
-    # evaluated with mu = 1 in units of a1 and dP (the same digits at ordinary values) and
-    # scaled back.
-    scale = a1**1.5 / dP
-    width = _where(slips, a1 * kernels.slip_zone_width_second_order_from_multiplier(
-        1.0, lam_o / mu, eta_o * a1 / mu, 1.0, state.a_slope1 * dP / a1, L_I1 * scale,
-        state.L_I_slope1 * a1**1.5, 1.0, other_edge), 0.0)  # fmt: skip
+    estimates = edge_estimates(kernels, mu, lam_o, eta_o, state, dP, other_edge)
+    # (22), the paper's headline, and its cancellation-free width a1 - b.
+    paper_width = _where(slips, estimates.paper_width, 0.0)
+    denominator = estimates.denominator
+    # The headline: b to second order with both edges and bulk tension (b2), the estimate the
+    # evidence supports (README, "How far to trust b").
+    width = _where(slips, estimates.width, 0.0)
     b = a1 - width
-    stick_width = kernels.corrective_stick_slip_zone_width(mu, lam_o, eta_o, a1, da, L_I1, dP)
     # Jaeger-Ciavarella: b = a(P_K) is exact for a symmetric law without bulk tension.
     exact = (eta == 0) & law.symmetric
-    P_K = _where(slips, kernels.permanent_stick_load(state.P1, dP, lam_o, mu), state.P1)
+    P_K = _where(slips, estimates.P_K, state.P1)
     if exact is True or (_is_array(exact) and exact.any()):
         b_exact = _where(exact, law.half_width_near(_where(exact, P_K, state.P1), state.P1, a1),
                          np.nan)  # fmt: skip
     else:
         b_exact = np.full(np.shape(a1), np.nan) if _is_array(a1) else np.nan
-    # Stated accuracies (README): b2 within (da/a1)^2 |a1 - b| (measured |C| <= 0.78 against
-    # the exact steady-state conditions, within 1.2 solver elements), a second-order formula
-    # within twice that, a first-order one within 2 (da/a1) |a1 - b|, a(P_K) exact.
-    growth = da / a1
-    accuracy = growth * growth * abs(width)
+    accuracy = stated_accuracy(a1, da, width)
     values = {
         "a1": a1, "a2": a2, "lam": lam, "eta": eta, "L_I1": L_I1, "L_I2": L_I2,
         "L_II1": L_II1, "L_II2": L_II2, "b": b, "slip_zone_width": width,
         "b_accuracy": accuracy,
         "b_paper": a1 - paper_width,
-        "b_first_order": _where(slips, first_order, a1),
+        "b_first_order": _where(slips, estimates.b_first_order, a1),
         "b_exact": b_exact,
-        "b_corrective_stick": _where(slips, a1 - stick_width, a1),
+        "b_corrective_stick": _where(slips, a1 - estimates.corrective_stick_width, a1),
         "slip_direction": direction,
         "P_K": P_K,
         "paper_width": paper_width,
         "b_consistent": a1 - paper_width,  # (17)/(22): the b for which (15) solves (12)
-        "eq24": kernels.contact_growth_measure(dP, worst_slope, a1),
+        "eq24": estimates.eq24,
         "eq25": abs(width) / a1,
-        "eq26": kernels.multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),
-        "eq27": _where(slips, kernels.slip_zone_growth_measure(mu, lam_o, eta_o, a1, dP,
-                                                               worst_slope), 0.0),
+        "eq26": estimates.eq26,
+        "eq27": _where(slips, estimates.eq27, 0.0),
     }  # fmt: skip
-    rounding = 1e-12 * a1
     disagree = 0
-    for key, bit, own in (("b_paper", DISAGREE_PAPER, 2 * accuracy),
-                          ("b_first_order", DISAGREE_FIRST_ORDER, 2 * growth * abs(width)),
-                          ("b_corrective_stick", DISAGREE_CORRECTIVE_STICK,
-                           2 * growth * abs(width)),
-                          ("b_exact", DISAGREE_EXACT, 0.0)):  # fmt: skip
-        gap = abs(values[key] - b)
-        disagree = disagree | _where(slips & (gap > own + accuracy + rounding), bit, 0)
+    for key, bit, limit in disagreement_limits(a1, da, width, accuracy):
+        disagree = disagree | _where(slips & (abs(values[key] - b) > limit), bit, 0)
     disagree = disagree | _where(slips & (other_direction == 0), OTHER_EDGE_STICKS, 0)
     return _finish_edge(law, state, mu, verdict, side, values, denominator, slips, disagree)
 
@@ -296,7 +212,7 @@ def _finish_edge(law: ContactLaw, state: LawState, mu: FloatArray, verdict: Verd
     verdict.require("b_range", (b > 0) & (b <= a2), None, side=side, b=b,
                     eq25=values["eq25"], eq24=values["eq24"], eq27=values["eq27"])  # fmt: skip
     flags = _where(slips, 0, NO_SLIP) | disagree
-    for key, bit in _MEASURE_FLAGS.items():
+    for key, bit in MEASURE_FLAGS.items():
         flags = flags | _where(values[key] > VALIDITY_THRESHOLD, bit, 0)
     flags = flags | _where(law.extrapolated(state.P1), EXTRAPOLATED_P1, 0)
     flags = flags | _where(law.extrapolated(state.P2), EXTRAPOLATED_P2, 0)
@@ -304,7 +220,7 @@ def _finish_edge(law: ContactLaw, state: LawState, mu: FloatArray, verdict: Verd
         inside = (values[key] > 0) & (values[key] <= a2) | (values[key] != values[key])
         if not (inside.all() if _is_array(inside) else inside):  # NaN: not derived here
             values[key] = _where(inside, values[key], np.nan)
-            flags = _where(inside, flags, (flags & ~disagreement) | _OUTSIDE_FLAGS[key])
+            flags = _where(inside, flags, (flags & ~disagreement) | OUTSIDE_FLAGS[key])
     return EdgeValues(values, flags)
 
 

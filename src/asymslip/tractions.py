@@ -25,9 +25,10 @@ from asymslip_gen.slip_displacement import slip_on_loading
 from asymslip_gen.tractions import jaeger_ciavarella_traction_difference, shear_traction_difference
 
 from .cycle import LoadCycle
+from .edge_flags import warning_texts
 from .errors import InputError, as_float_array, positive, require
 from .laws.base import ContactLaw
-from .slip_zones import Evaluation, evaluate, warning_texts
+from .slip_zones import Evaluation, evaluate
 
 StickBoundaryChoice = Literal["consistent", "exact"]
 Side = Literal["right", "left"]

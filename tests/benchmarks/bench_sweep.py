@@ -29,7 +29,8 @@ from pathlib import Path
 import numpy as np
 
 from asymslip import HertzLaw, LoadCycle
-from asymslip.slip_zones import MEASURE_KEYS, NUMBER_KEYS, evaluate, warning_texts
+from asymslip.edge_flags import MEASURE_KEYS, NUMBER_KEYS, warning_texts
+from asymslip.slip_zones import evaluate
 from asymslip.sweep import WARNING_SEPARATOR, output_columns, sweep_file
 
 from .timing import Row, duration, interleaved, times, verdict

@@ -5,7 +5,8 @@ from __future__ import annotations
 import argparse
 import json
 
-from ..slip_zones import VALIDITY_MEANING, SlipZoneResult, slip_zone
+from ..edge_flags import VALIDITY_MEANING
+from ..slip_zones import SlipZoneResult, slip_zone
 from .cycle_options import add_cycle_options, build_cycle
 from .laws import add_law_options, build_law
 

@@ -60,9 +60,10 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..cycle import LoadCycle
+from ..edge_flags import VALIDITY_THRESHOLD
 from ..errors import InputError
 from ..laws import FlatRoundedLaw, HertzLaw, PowerLaw
-from ..slip_zones import VALIDITY_THRESHOLD, slip_zone
+from ..slip_zones import slip_zone
 from .run import solve
 from .toeplitz import SolverError
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Literal
 
-from ..slip_zones import MEASURE_KEYS, NUMBER_KEYS
+from ..edge_flags import MEASURE_KEYS, NUMBER_KEYS
 
 Edges = Literal["right", "left", "both"]
 

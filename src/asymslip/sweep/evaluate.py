@@ -14,8 +14,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..cycle import LoadCycle
+from ..edge_flags import MEASURE_KEYS, NUMBER_KEYS, warning_texts
 from ..laws.base import ContactLaw
-from ..slip_zones import MEASURE_KEYS, NUMBER_KEYS, evaluate, warning_texts
+from ..slip_zones import evaluate
 from .columns import CYCLE_COLUMNS, PREFIX, WARNING_SEPARATOR, Edges, edges_of
 
 FloatArray = NDArray[np.float64]
