@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -55,6 +55,8 @@ class LoadCycle:
     checked: bool
     #: The broadcast shape of the six fields (() for one cycle).
     shape: tuple[int, ...]
+    #: One cycle's six loads as Python floats, in the order of :data:`FIELDS` (None for many).
+    numbers: tuple[float, ...] | None = field(default=None, repr=False, compare=False)
 
     def __init__(self, P1: ArrayLike, Q1: ArrayLike, P2: ArrayLike, Q2: ArrayLike,
                  sigma1: ArrayLike = 0.0, sigma2: ArrayLike = 0.0) -> None:  # fmt: skip
@@ -69,6 +71,8 @@ class LoadCycle:
         shapes = [value.shape for value in arrays]
         shape = () if not any(shapes) else np.broadcast_shapes(*shapes)
         object.__setattr__(self, "shape", shape)
+        numbers = tuple(float(value) for value in arrays) if shape == () else None
+        object.__setattr__(self, "numbers", numbers)
 
     @classmethod
     def unchecked(cls, P1: ArrayLike, Q1: ArrayLike, P2: ArrayLike, Q2: ArrayLike,

@@ -15,15 +15,15 @@ The Fig. 5 cycle (Hertz, R = E* = 1, P 100 -> 105, lambda = 0.2, mu = 0.1) at it
 >>> from asymslip_gen import scalar
 >>> from asymslip.laws.hertz import HertzLaw
 >>> state = HertzLaw(1.0, 1.0).cycle_state(100.0, 5.0)
->>> estimates = edge_estimates(scalar, 0.1, 0.2, 0.0, state, 5.0, 1.0)
->>> round(estimates.width, 6), round(estimates.P_K, 6)
+>>> estimates = dict(zip(ESTIMATES, edge_estimates(scalar, 0.1, 0.2, 0.0, state, 5.0, 1.0)))
+>>> round(estimates["width"], 6), round(estimates["P_K"], 6)
 (0.141929, 97.5)
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from types import ModuleType
-from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -38,31 +38,36 @@ from .laws.base import LawState
 
 Number = NDArray | float
 
+#: (17)'s denominator counts as zero below this many units in the last place of its terms.
+DENOMINATOR_TOLERANCE = 64 * float(np.finfo(float).eps)
 
-class EdgeEstimates(NamedTuple):
-    """What the kernels give at one slipping edge (arrays or floats alike)."""
 
-    #: a1 - b by (22), cancellation-free (25).
-    paper_width: Number
-    #: (17)'s denominator mu (L_I1 + L_I2) + L_II1 - L_II2, in (21)'s multipliers.
-    denominator: Number
-    #: b to first order (28).
-    b_first_order: Number
-    #: a1 - b to second order with both edges and bulk tension (b2, the headline).
-    width: Number
-    #: a1 - b of the corrective stick zone (40).
-    corrective_stick_width: Number
-    #: The permanent-stick load P_K of (33).
-    P_K: Number
-    #: The validity measures (24), (26), (27).
-    eq24: Number
-    eq26: Number
-    eq27: Number
+@dataclass
+class EdgeValues:
+    """One edge, elementwise: every number of the result, and the warning flags."""
+
+    values: dict[str, Number]
+    flags: NDArray[np.int64] | int
+
+
+
+#: What :func:`edge_estimates` returns, in order (a plain tuple: one cycle's fast path builds one
+#: per edge, and a NamedTuple costs more than the arithmetic of half its entries).
+ESTIMATES = (
+    "paper_width",             # a1 - b by (22), cancellation-free (25)
+    "denominator",             # (17)'s mu (L_I1 + L_I2) + L_II1 - L_II2 in (21)'s multipliers
+    "b_first_order",           # b to first order (28)
+    "width",                   # a1 - b to second order, both edges, bulk tension (b2)
+    "corrective_stick_width",  # a1 - b of the corrective stick zone (40)
+    "P_K",                     # the permanent-stick load of (33)
+    "eq24", "eq26", "eq27",    # the validity measures
+)  # fmt: skip
 
 
 def edge_estimates(kernels: ModuleType, mu: Number, lam: Number, eta: Number, state: LawState,
-                   dP: Number, other_edge: Number) -> EdgeEstimates:  # fmt: skip
-    """Every estimate of one edge, ``lam`` and ``eta`` oriented so that the edge slips forward.
+                   dP: Number, other_edge: Number) -> tuple[Number, ...]:  # fmt: skip
+    """Every estimate of one edge (:data:`ESTIMATES`), ``lam`` and ``eta`` oriented so that the
+    edge slips forward.
 
     Parameters
     ----------
@@ -89,17 +94,16 @@ def edge_estimates(kernels: ModuleType, mu: Number, lam: Number, eta: Number, st
     width = a1 * kernels.slip_zone_width_second_order_from_multiplier(
         1.0, lam / mu, eta * a1 / mu, 1.0, a_slope1 * dP / a1, L_I1 * root / dP,
         state.L_I_slope1 * root, 1.0, other_edge)  # fmt: skip
-    return EdgeEstimates(
-        paper_width=kernels.slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2),
-        denominator=kernels.stick_boundary_denominator(mu, lam, eta, a1, a2, L_I1, L_I2),
-        b_first_order=a1 * kernels.stick_ratio_first_order(mu, lam, eta, a1, dP, a_slope1),
-        width=width,
-        corrective_stick_width=kernels.corrective_stick_slip_zone_width(mu, lam, eta, a1, da,
-                                                                        L_I1, dP),  # fmt: skip
-        P_K=kernels.permanent_stick_load(state.P1, dP, lam, mu),
-        eq24=kernels.contact_growth_measure(dP, worst_slope, a1),
-        eq26=kernels.multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),
-        eq27=kernels.slip_zone_growth_measure(mu, lam, eta, a1, dP, worst_slope),
+    return (
+        kernels.slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2),
+        kernels.stick_boundary_denominator(mu, lam, eta, a1, a2, L_I1, L_I2),
+        a1 * kernels.stick_ratio_first_order(mu, lam, eta, a1, dP, a_slope1),
+        width,
+        kernels.corrective_stick_slip_zone_width(mu, lam, eta, a1, da, L_I1, dP),
+        kernels.permanent_stick_load(state.P1, dP, lam, mu),
+        kernels.contact_growth_measure(dP, worst_slope, a1),
+        kernels.multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),
+        kernels.slip_zone_growth_measure(mu, lam, eta, a1, dP, worst_slope),
     )
 
 
@@ -113,19 +117,24 @@ def stated_accuracy(a1: Number, da: Number, width: Number) -> Number:
     return growth * growth * abs(width)
 
 
-def disagreement_limits(a1: Number, da: Number, width: Number,
-                        accuracy: Number) -> tuple[tuple[str, int, Number], ...]:  # fmt: skip
-    """(estimate, flag, limit): an estimate further than ``limit`` from b disagrees with it.
+#: The estimates checked against b, in the order of :func:`disagreement_limits`, each with the
+#: warning flag it sets where it disagrees.
+DISAGREEMENTS = (("b_paper", DISAGREE_PAPER), ("b_first_order", DISAGREE_FIRST_ORDER),
+                 ("b_corrective_stick", DISAGREE_CORRECTIVE_STICK), ("b_exact", DISAGREE_EXACT))
 
-    The limit is the two stated accuracies added (a second-order formula within twice b's,
-    a first-order one within 2 (da/a1) |a1 - b|, a(P_K) exact) and 1e-12 a1 for rounding.
+
+def disagreement_limits(a1: Number, da: Number, width: Number,
+                        accuracy: Number) -> tuple[Number, Number, Number, Number]:  # fmt: skip
+    """How far each estimate of :data:`DISAGREEMENTS` may lie from b before they disagree.
+
+    The two stated accuracies added -- a second-order formula within twice b's, a first-order
+    one within 2 (da/a1) |a1 - b|, a(P_K) exact -- and 1e-12 a1 for rounding.
     """
     first_order = 2 * (da / a1) * abs(width)
     rounding = 1e-12 * a1
-    return (("b_paper", DISAGREE_PAPER, 2 * accuracy + accuracy + rounding),
-            ("b_first_order", DISAGREE_FIRST_ORDER, first_order + accuracy + rounding),
-            ("b_corrective_stick", DISAGREE_CORRECTIVE_STICK, first_order + accuracy + rounding),
-            ("b_exact", DISAGREE_EXACT, accuracy + rounding))  # fmt: skip
+    first_order_limit = first_order + accuracy + rounding
+    return (2 * accuracy + accuracy + rounding, first_order_limit, first_order_limit,
+            accuracy + rounding)  # fmt: skip
 
 
 def _larger(first: Number, second: Number) -> Number:

@@ -226,6 +226,12 @@ class ContactLaw(abc.ABC):
     #: A half-width where the law is defined, evaluated in place of a load it cannot carry.
     stand_in_half_width: float = 1.0
 
+    #: True when :meth:`cycle_state`, :meth:`half_width_near` and :meth:`extrapolated` of one
+    #: cycle on Python floats compute on Python floats alone (the ``math`` kernels), so that
+    #: they raise where NumPy would warn; a law on NumPy is called inside
+    #: ``numpy.errstate(all="ignore")`` and its overflows are named by the rules.
+    floats_only: bool = False
+
     # --- the rest ------------------------------------------------------------------------------
     #: Appended to the message for a load the law cannot carry (a user law's known range).
     range_note: str = ""

@@ -38,6 +38,7 @@ class HertzLaw(ContactLaw):
     R: float
     E_star: float
     name = "hertz"
+    floats_only = True  # one cycle: the math kernels throughout
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "R", float(positive("R", self.R)))
@@ -58,6 +59,8 @@ class HertzLaw(ContactLaw):
         return a, np.asarray(np.isfinite(a))
 
     def half_width_near(self, P: ArrayLike, P_ref: ArrayLike, a_ref: ArrayLike) -> FloatArray:
+        if type(P) is float:  # one cycle: the math kernel (the same CSE'd body)
+            return scalar_kernels.hertz_half_width(P, self.R, self.E_star)
         return hertz_half_width(P, self.R, self.E_star)
 
     def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:

@@ -1,0 +1,121 @@
+"""One cycle's fast path gives exactly what the array path gives for the same cycle.
+
+``slip_zone`` answers a single valid cycle of a symmetric law on Python floats
+(:mod:`asymslip.single_cycle`) and everything else on arrays (:func:`asymslip.slip_zones.evaluate`).
+The reference here is the array path itself, asked about the same cycle as an array of one
+element: a different code path through the same kernels, so every double and every warning
+flag must agree exactly -- and a cycle the fast path does not answer must be refused with the
+array path's message.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+from asymslip import FlatRoundedLaw, HertzLaw, LoadCycle, PowerLaw, TableLaw, slip_zone
+from asymslip.edge_flags import MEASURE_KEYS, NUMBER_KEYS
+from asymslip.errors import InputError
+from asymslip.single_cycle import evaluate_one
+
+_FLAT = FlatRoundedLaw(c=1.0, R=10.0, E_star=1.0)
+_LOADS = np.geomspace(2.0, 400.0, 20)
+LAWS = {
+    "hertz": HertzLaw(R=1.0, E_star=1.0),
+    "power": PowerLaw(A=0.1, n=1.5, E_star=1.0),
+    "flat-rounded": _FLAT,
+    "table": TableLaw(_LOADS, _FLAT.half_width(_LOADS)),
+}
+
+
+def _cycles(seed: int, count: int) -> list[tuple[float, ...]]:
+    """(P1, Q1, P2, Q2, sigma1, sigma2, mu): load steps from 1e-4 to 2 times P1, shear changes
+    that slip forward, backward or not at all, with and without bulk tension, and some whose
+    slip zones leave the contact or have no steady state (refused)."""
+    rng = np.random.default_rng(seed)
+    cycles = []
+    for _ in range(count):
+        P1 = float(rng.uniform(5.0, 150.0))
+        P2 = P1 * (1 + float(10 ** rng.uniform(-4, np.log10(2.0))))
+        mu = float(rng.uniform(0.05, 0.8))
+        lam = float(rng.uniform(-1.6, 1.6)) * mu
+        Q1 = float(rng.uniform(-0.9, 0.9)) * mu * P1
+        sigma1 = float(rng.uniform(-1, 1))
+        eta = 0.0 if rng.random() < 0.5 else float(rng.uniform(-0.3, 0.3))
+        cycles.append((P1, Q1, P2, Q1 + lam * (P2 - P1), sigma1, sigma1 + eta * (P2 - P1), mu))
+    # Refused for certain: gross sliding at state 2, and a load step three times P1 with the
+    # shear near its limit.
+    return [*cycles, (100.0, 0.0, 105.0, 20.0, 0.0, 0.0, 0.1),
+            (10.0, 0.0, 40.0, 11.9, 0.0, 0.0, 0.3)]
+
+
+def _array_result(law, loads: tuple[float, ...], mu: float):
+    cycle = LoadCycle(*(np.array([value]) for value in loads))
+    return slip_zone(law, cycle, np.array([mu]), edge="both", invalid="mark")
+
+
+def _same_edge(one, many) -> None:
+    for key in NUMBER_KEYS:
+        single, element = getattr(one, key), float(getattr(many, key)[0])
+        if single is None:
+            assert np.isnan(element), key
+        else:
+            assert single == element, (key, single, element)
+    for key in MEASURE_KEYS:
+        assert one.validity[key] == float(many.validity[key][0]), key
+    assert one.warning_flags == int(many.warning_flags[0])
+
+
+@pytest.mark.parametrize("name", LAWS)
+def test_every_answered_cycle_has_the_array_paths_doubles_and_flags(name):
+    law = LAWS[name]
+    answered = refused = 0
+    for *loads, mu in _cycles(seed=len(name), count=60):
+        cycle = LoadCycle(*loads)
+        array = _array_result(law, tuple(loads), mu)
+        if array.errors is not None:
+            with pytest.raises(InputError) as refusal:
+                slip_zone(law, cycle, mu, edge="both")
+            assert str(refusal.value) == array.errors[0]
+            refused += 1
+            continue
+        assert evaluate_one(law, cycle, mu) is not None  # the fast path answered it
+        one = slip_zone(law, cycle, mu, edge="both")
+        _same_edge(one, array)
+        _same_edge(one.left, array.left)
+        answered += 1
+    assert answered >= 30 and refused >= 1, (answered, refused)
+
+
+def test_the_fig5_cycle_answers_both_edges_from_one_set_of_kernel_calls_and_mirrors_them():
+    # Without bulk tension the left edge is the right edge mirrored: the same b, the opposite
+    # shear multipliers and slip direction.
+    result = slip_zone(LAWS["hertz"], LoadCycle(100, 0, 105, 1), 0.1, edge="both")
+    assert result.left.b == result.b and result.left.slip_zone_width == result.slip_zone_width
+    assert (result.left.L_II2, result.left.slip_direction) == (-result.L_II2, -1)
+    assert result.slip_direction == 1
+
+
+def test_a_broken_rule_is_left_to_the_array_path_and_named_there():
+    law, cycle = LAWS["hertz"], LoadCycle(100, 0, 105, 20)  # |Q2| = 20 > mu P2 = 10.5
+    assert evaluate_one(law, cycle, 0.1) is None
+    with pytest.raises(InputError, match="gross sliding"):
+        slip_zone(law, cycle, 0.1)
+
+
+@pytest.mark.parametrize("name", ["flat-rounded", "table"])
+def test_a_law_on_numpy_gives_no_warning_on_the_fast_path(name):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        result = slip_zone(LAWS[name], LoadCycle(50, 0, 52, 0.5, 0, 0.1), 0.3, edge="both")
+    assert 0 < result.b < result.a1
+
+
+def test_many_cycles_and_asymmetric_input_shapes_take_the_array_path():
+    law = LAWS["hertz"]
+    assert evaluate_one(law, LoadCycle([100, 101], 0, 105, 1), 0.1) is None
+    assert evaluate_one(law, LoadCycle(100, 0, 105, 1), np.array([0.1, 0.2])) is None
+    assert evaluate_one(law, LoadCycle(100, 0, 105, 1), "0.1") is None
+    assert evaluate_one(law, LoadCycle(100, 0, 105, 1), np.float64(0.1)) is not None
