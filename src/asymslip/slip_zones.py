@@ -14,7 +14,9 @@ arrays) and friction coefficients (broadcast together), and
 
 :func:`slip_zone` wraps it for people: scalars in, scalars out, as NumPy does; invalid input
 raises :class:`~asymslip.errors.InputError` (or, with ``invalid="mark"``, comes back as NaN
-with its reason in ``errors``).  Warnings are kept as bit flags per element and turned into
+with its reason in ``errors``).  A single valid cycle of a symmetric law is answered on Python
+floats by :mod:`asymslip.single_cycle` (the same estimates and flags, without the machinery of
+arrays); anything it cannot answer comes here.  Warnings are kept as bit flags per element and turned into
 words only when asked, so that 10^6 cycles cost no 10^6 lists of strings.
 
 Edges and slip direction (``derivations/edge_symmetry.py``): the left edge is the right edge of
