@@ -22,6 +22,7 @@ The Fig. 5 cycle (Hertz, R = E* = 1, P 100 -> 105, lambda = 0.2, mu = 0.1) at it
 
 from __future__ import annotations
 
+import sys
 from dataclasses import dataclass
 from types import ModuleType
 
@@ -39,7 +40,7 @@ from .laws.base import LawState
 Number = NDArray | float
 
 #: (17)'s denominator counts as zero below this many units in the last place of its terms.
-DENOMINATOR_TOLERANCE = 64 * float(np.finfo(float).eps)
+DENOMINATOR_TOLERANCE = 64 * sys.float_info.epsilon
 
 
 @dataclass

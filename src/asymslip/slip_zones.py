@@ -16,8 +16,8 @@ arrays) and friction coefficients (broadcast together), and
 raises :class:`~asymslip.errors.InputError` (or, with ``invalid="mark"``, comes back as NaN
 with its reason in ``errors``).  A single valid cycle of a symmetric law is answered on Python
 floats by :mod:`asymslip.single_cycle` (the same estimates and flags, without the machinery of
-arrays); anything it cannot answer comes here.  Warnings are kept as bit flags per element and turned into
-words only when asked, so that 10^6 cycles cost no 10^6 lists of strings.
+arrays); anything it cannot answer comes here.  Warnings are kept as bit flags per element
+and turned into words only when asked, so that 10^6 cycles cost no 10^6 lists of strings.
 
 Edges and slip direction (``derivations/edge_symmetry.py``): the left edge is the right edge of
 the mirrored cycle (lam -> -lam, eta kept); backward slip is forward slip with
