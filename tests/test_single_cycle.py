@@ -89,13 +89,28 @@ def test_every_answered_cycle_has_the_array_paths_doubles_and_flags(name):
     assert answered >= 30 and refused >= 1, (answered, refused)
 
 
-def test_the_fig5_cycle_answers_both_edges_from_one_set_of_kernel_calls_and_mirrors_them():
-    # Without bulk tension the left edge is the right edge mirrored: the same b, the opposite
-    # shear multipliers and slip direction.
+def test_without_tension_the_mirrored_left_edge_reuses_the_right_edges_estimates(monkeypatch):
+    # The left edge of the Fig. 5 cycle is the right edge mirrored: one call of the kernels
+    # answers both, and the left edge reports the same b with the opposite shear multipliers
+    # and slip direction.  With bulk tension the mirror breaks and both edges are computed.
+    import asymslip.single_cycle as single_cycle
+
+    calls = []
+    original = single_cycle.edge_estimates
+
+    def counted(*arguments):
+        calls.append(arguments)
+        return original(*arguments)
+
+    monkeypatch.setattr(single_cycle, "edge_estimates", counted)
     result = slip_zone(LAWS["hertz"], LoadCycle(100, 0, 105, 1), 0.1, edge="both")
+    assert len(calls) == 1
     assert result.left.b == result.b and result.left.slip_zone_width == result.slip_zone_width
-    assert (result.left.L_II2, result.left.slip_direction) == (-result.L_II2, -1)
-    assert result.slip_direction == 1
+    assert (result.left.L_II2, result.left.slip_direction, result.slip_direction) == \
+        (-result.L_II2, -1, 1)
+    calls.clear()
+    slip_zone(LAWS["hertz"], LoadCycle(100, 0, 105, 1, 0, 0.5), 0.1, edge="both")
+    assert len(calls) == 2
 
 
 def test_a_broken_rule_is_left_to_the_array_path_and_named_there():

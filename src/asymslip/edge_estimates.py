@@ -84,8 +84,8 @@ def edge_estimates(kernels: ModuleType, mu: Number, lam: Number, eta: Number, st
     """
     a1, a2, da, L_I1, L_I2 = state.a1, state.a2, state.da, state.L_I1, state.L_I2
     a_slope1 = 1.0 / state.load_slope1
-    worst_slope = _larger(a_slope1, 1.0 / state.load_slope2)
-    worst_multiplier_slope = _larger(abs(state.L_I_slope1), abs(state.L_I_slope2))
+    worst_slope = larger(a_slope1, 1.0 / state.load_slope2)
+    worst_multiplier_slope = larger(abs(state.L_I_slope1), abs(state.L_I_slope2))
     # The b2 kernel is a polynomial whose terms (a1^3 eta^2 dL_I/dP dP, mu^2 ...) overflow or
     # underflow for loads of 1e300 or mu = 1e-300 though the width does not; it depends on
     # lam and eta through lam/mu and eta/mu and is homogeneous in length and load, so it is
@@ -138,7 +138,17 @@ def disagreement_limits(a1: Number, da: Number, width: Number,
             accuracy + rounding)  # fmt: skip
 
 
-def _larger(first: Number, second: Number) -> Number:
+def slip_direction(mu: Number, L_I2: Number, L_II2: Number) -> Number:
+    """+1 (forward), -1 (backward) or 0 (no slip) on loading at an edge.
+
+    Next to the state-2 edge (a1 < x < a2) the state-1 traction is zero, so loading slips there
+    iff |L_II2| > mu L_I2 (derivations/edge_symmetry.py).
+    """
+    capacity = mu * L_I2
+    return 1.0 * (L_II2 > capacity) - 1.0 * (L_II2 < -capacity)
+
+
+def larger(first: Number, second: Number) -> Number:
     """The larger, elementwise: ``numpy.maximum`` for arrays, plain Python for floats."""
     if isinstance(first, float) and isinstance(second, float):  # np.float64 is a float
         return first if first >= second else second

@@ -38,6 +38,7 @@ from .edge_estimates import (
     DENOMINATOR_TOLERANCE,
     disagreement_limits,
     edge_estimates,
+    slip_direction,
     stated_accuracy,
 )
 from .edge_flags import (
@@ -57,9 +58,6 @@ from .laws.base import ContactLaw, LawState
 
 EQ24_LARGE, EQ25_LARGE, EQ26_LARGE, EQ27_LARGE = (MEASURE_FLAGS[key] for key in
                                                   ("eq24", "eq25", "eq26", "eq27"))
-_STATE_NUMBERS = ("P1", "P2", "a1", "a2", "da", "L_I1", "L_I2", "load_slope1", "load_slope2",
-                  "L_I_slope1", "L_I_slope2")  # fmt: skip
-
 
 def evaluate_one(law: ContactLaw, cycle: LoadCycle,
                  mu: ArrayLike) -> tuple[dict[str, object], dict[str, object]] | None:  # fmt: skip
@@ -99,8 +97,7 @@ def _both_edges(law: ContactLaw, mu: float, P1: float, P2: float, dQ: float,
     lam, eta = dQ / dP, dsigma / dP
     state = law.cycle_state(P1, dP)
     if type(state.a1) is not float:  # a law computed on NumPy: its 0-d results as floats
-        state = LawState(*(float(getattr(state, name)) for name in _STATE_NUMBERS),
-                         bool(state.found1), bool(state.found2))  # fmt: skip
+        state = state.as_floats()
     if not _law_answers(state):
         return None
     right = _shear(mu, lam, eta, state)
@@ -140,8 +137,7 @@ def _shear(mu: float, lam: float, eta: float, state: LawState) -> tuple[float, f
     """L_II1, L_II2 by (21) and the slip direction at an edge (in its own frame)."""
     L_II1 = kernels.shear_edge_multiplier_proportional(lam, eta, state.a1, state.L_I1)
     L_II2 = kernels.shear_edge_multiplier_proportional(lam, eta, state.a2, state.L_I2)
-    capacity = mu * state.L_I2
-    return L_II1, L_II2, 1.0 * (L_II2 > capacity) - 1.0 * (L_II2 < -capacity)
+    return L_II1, L_II2, slip_direction(mu, state.L_I2, L_II2)
 
 
 def _oriented(lam: float, eta: float, direction: float,

@@ -26,7 +26,7 @@ the mirrored cycle (lam -> -lam, eta kept); backward slip is forward slip with
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field
 from types import ModuleType
 from typing import Literal
 
@@ -43,6 +43,8 @@ from .edge_estimates import (
     EdgeValues,
     disagreement_limits,
     edge_estimates,
+    larger,
+    slip_direction,
     stated_accuracy,
 )
 from .edge_flags import (
@@ -78,10 +80,6 @@ class Evaluation:
     edges: dict[str, EdgeValues]
 
 
-#: The numeric fields of a LawState, in order (the two found flags follow them).
-_STATE_NUMBERS = tuple(item.name for item in fields(LawState))[:11]
-
-
 def _where(condition: ArrayLike, yes: ArrayLike, no: ArrayLike) -> ArrayLike:
     """``numpy.where``, without its cost for a single cycle (plain Python then)."""
     if isinstance(condition, (bool, np.bool_)):
@@ -89,25 +87,8 @@ def _where(condition: ArrayLike, yes: ArrayLike, no: ArrayLike) -> ArrayLike:
     return np.where(condition, yes, no)
 
 
-def _maximum(first: ArrayLike, second: ArrayLike) -> ArrayLike:
-    """``numpy.maximum``, without its cost for a single cycle."""
-    if isinstance(first, float) and isinstance(second, float):  # np.float64 is a float
-        return first if first >= second else second
-    return np.maximum(first, second)
-
-
 def _is_array(value: object) -> bool:
     return isinstance(value, np.ndarray) and value.ndim > 0
-
-
-def _slip_direction(mu: FloatArray, L_I2: FloatArray, L_II2: FloatArray) -> FloatArray:
-    """+1 (forward), -1 (backward) or 0 (no slip) on loading at an edge.
-
-    Next to the state-2 edge (a1 < x < a2) the state-1 traction is zero, so loading slips there
-    iff |L_II2| > mu L_I2 (derivations/edge_symmetry.py).
-    """
-    capacity = mu * L_I2
-    return 1.0 * (L_II2 > capacity) - 1.0 * (L_II2 < -capacity)
 
 
 def _shear_multipliers(
@@ -125,7 +106,7 @@ def _shear_multipliers(
     else:
         L_II1 = kernels.shear_edge_multiplier_proportional(lam, eta, state.a1, state.L_I1)
         L_II2 = kernels.shear_edge_multiplier_proportional(lam, eta, state.a2, state.L_I2)
-    return L_II1, L_II2, _slip_direction(mu, state.L_I2, L_II2)
+    return L_II1, L_II2, slip_direction(mu, state.L_I2, L_II2)
 
 
 def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta: FloatArray,
@@ -248,8 +229,8 @@ def _edge_with_own_multipliers(law: ContactLaw, state: LawState, mu: FloatArray,
     b = a1 - width
     denominator = kernels.stick_boundary_denominator_from_multipliers(mu, L_I1, L_I2, L_II1_o,
                                                                        L_II2_o)  # fmt: skip
-    worst_slope = _maximum(state.a_slope1, state.a_slope2)
-    worst_multiplier_slope = _maximum(abs(state.L_I_slope1), abs(state.L_I_slope2))
+    worst_slope = larger(state.a_slope1, state.a_slope2)
+    worst_multiplier_slope = larger(abs(state.L_I_slope1), abs(state.L_I_slope2))
     ratio = L_II1_o / L_I1  # the edge's own lambda + pi eta a1/4
     first_order = a1 * kernels.stick_ratio_first_order(mu, ratio, 0.0, a1, dP, state.a_slope1)
     missing = np.full(np.shape(a1), np.nan) if _is_array(a1) else np.nan
@@ -278,7 +259,7 @@ def _check_law(verdict: Verdict, state: LawState, law: ContactLaw) -> None:
                                ("2", (state.a2, state.da, state.L_I2, state.load_slope2))):
         verdict.require(f"law_finite_{number}", finite(sum(quantities)),
                         getattr(state, f"P{number}"), law=name)  # fmt: skip
-    slope = -_maximum(-state.load_slope1, -state.load_slope2)
+    slope = -larger(-state.load_slope1, -state.load_slope2)
     verdict.require("law_increasing", slope > 0, slope, law=name, slope=slope)
 
 
@@ -331,8 +312,7 @@ def _evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike,
         edge_law = law.for_edge(side)
         state = edge_law.cycle_state(P1, dP)
         if shape == ():  # plain scalars from here (kernels return NumPy scalars or 0-d arrays)
-            state = LawState(*(scalar(getattr(state, name)) for name in _STATE_NUMBERS),
-                             bool(state.found1), bool(state.found2))  # fmt: skip
+            state = state.as_floats(scalar)
         _check_law(verdict, state, edge_law)
         states[side] = state
     if law.symmetric:

@@ -75,6 +75,15 @@ class LawState:
     found1: BoolArray | bool
     found2: BoolArray | bool
 
+    def as_floats(self, number: type[float] = float) -> LawState:
+        """One cycle's state with every number as ``number`` (Python floats by default) and
+        the found flags as bools: a law computed on NumPy returns 0-d arrays."""
+        return LawState(number(self.P1), number(self.P2), number(self.a1),
+                        number(self.a2), number(self.da), number(self.L_I1), number(self.L_I2),
+                        number(self.load_slope1), number(self.load_slope2),
+                        number(self.L_I_slope1), number(self.L_I_slope2),
+                        bool(self.found1), bool(self.found2))  # fmt: skip
+
     @property
     def a_slope1(self) -> FloatArray:
         """a'(P1) = 1/(dP/da)."""
