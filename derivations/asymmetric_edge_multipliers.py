@@ -79,12 +79,19 @@ moment_slope = sympy.Function("Mprime")  # dM_c/dc_r: moment of the increment ab
 shear_slope = sympy.Function("Qprime")
 tension_slope = sympy.Function("sigmaprime")
 
-WIDTH = Argument(width, "Contact width w = a_right + a_left (both edges' distances from one "
-                 "point inside the contact) at the load considered [length].")  # fmt: skip
-EDGE_SLOPE = Argument(da_dP, "Slope a'(P) of this edge's own law along the load path, > 0 "
-                      "(the edge advances) [length^2/force].")  # fmt: skip
-EDGE_MULTIPLIER = Argument(L_I, "Normal edge multiplier L_I of this edge, p ~ L_I sqrt(a - x) "
-                           "(4) [force/length^(5/2)].")  # fmt: skip
+WIDTH = Argument(
+    width,
+    "Contact width w = a_right + a_left (both edges' distances from one "
+    "point inside the contact) at the load considered [length].",
+)
+EDGE_SLOPE = Argument(
+    da_dP,
+    "Slope a'(P) of this edge's own law along the load path, > 0 "
+    "(the edge advances) [length^2/force].",
+)
+EDGE_MULTIPLIER = Argument(
+    L_I, "Normal edge multiplier L_I of this edge, p ~ L_I sqrt(a - x) (4) [force/length^(5/2)]."
+)
 
 
 def _edge_multiplier(increment, values: dict) -> sympy.Expr:
@@ -231,11 +238,13 @@ def derive() -> Derivation:
             how="reduces to (19) for a symmetric contact (w = 2a, no moment about the centre)",
         )
         load, moment = contact["P"], contact["M"]
-        by_right = normal_multiplier_asymmetric().subs({
-            width: w_profile,
-            dP_da_edge: _along_right(load),
-            dMc_da: _along_right(moment) - centre_ * _along_right(load),
-        })  # fmt: skip
+        by_right = normal_multiplier_asymmetric().subs(
+            {
+                width: w_profile,
+                dP_da_edge: _along_right(load),
+                dMc_da: _along_right(moment) - centre_ * _along_right(load),
+            }
+        )
         eq.holds(
             by_right - contact["L_I_right"],
             how="equals the edge multiplier of the closed-form pressure of the asymmetric "
@@ -305,16 +314,19 @@ def derive() -> Derivation:
         # ... while any other direction changes the rotation, so f != 1 there.
         assert sympy.simplify(sympy.diff(rotation, centre_)) != 0
     with d.equation("AS6", "Both edges' multipliers balance whatever M does") as eq:
-        eq.beyond_paper("a check of calibrated data that needs no knowledge of M",
-                        derived=multiplier_balance())  # fmt: skip
+        eq.beyond_paper(
+            "a check of calibrated data that needs no knowledge of M", derived=multiplier_balance()
+        )
         right_edge_value = normal_multiplier_asymmetric().subs(dP_da_edge, 1 / da_dP_right)
         # The left edge is the right edge of the mirrored contact: M (hence dM_c) changes sign.
         left_edge_value = normal_multiplier_asymmetric().subs(dP_da_edge, 1 / da_dP_left)
         moment_per_load = sympy.Symbol("dMc_dP", real=True)
-        balance = multiplier_balance().subs({
-            L_I_right: right_edge_value.subs(dMc_da, moment_per_load / da_dP_right),
-            L_I_left: left_edge_value.subs(dMc_da, -moment_per_load / da_dP_left),
-        })  # fmt: skip
+        balance = multiplier_balance().subs(
+            {
+                L_I_right: right_edge_value.subs(dMc_da, moment_per_load / da_dP_right),
+                L_I_left: left_edge_value.subs(dMc_da, -moment_per_load / da_dP_left),
+            }
+        )
         eq.holds(
             balance - 1,
             how="(pi sqrt w/4)(L_I,r a_r' + L_I,l a_l') = 1 for every moment increment",
@@ -340,28 +352,32 @@ def derive() -> Derivation:
         )
         a1_, growth = sympy.symbols("a1 da", positive=True)
         shear = shear_multiplier_asymmetric().subs({eta: 0, da_dP: path_slope})
-        b17 = stick_boundary().subs({
-            sympy.Symbol("a1", positive=True): a1_,
-            sympy.Symbol("a2", positive=True): a1_ + growth,
-            sympy.Symbol("L_I1", positive=True): multiplier,
-            sympy.Symbol("L_I2", positive=True): multiplier,
-            sympy.Symbol("L_II1", real=True): shear,
-            sympy.Symbol("L_II2", real=True): shear,
-        })  # fmt: skip
+        b17 = stick_boundary().subs(
+            {
+                sympy.Symbol("a1", positive=True): a1_,
+                sympy.Symbol("a2", positive=True): a1_ + growth,
+                sympy.Symbol("L_I1", positive=True): multiplier,
+                sympy.Symbol("L_I2", positive=True): multiplier,
+                sympy.Symbol("L_II1", real=True): shear,
+                sympy.Symbol("L_II2", real=True): shear,
+            }
+        )
         first_order = sympy.diff(b17.subs(growth, path_slope * dP), dP).subs(dP, 0) * dP
         eq.holds(
             first_order - exact_shift,
             how="(17) with (AS3) and the multipliers at P1: b - a1 = the first-order shift of "
             "the exact stick edge c_r(P_K, (theta1 + theta2)/2), for any rotation rate",
         )
-        naive = stick_boundary().subs({
-            sympy.Symbol("a1", positive=True): a1_,
-            sympy.Symbol("a2", positive=True): a1_ + growth,
-            sympy.Symbol("L_I1", positive=True): multiplier,
-            sympy.Symbol("L_I2", positive=True): multiplier,
-            sympy.Symbol("L_II1", real=True): lam * multiplier,
-            sympy.Symbol("L_II2", real=True): lam * multiplier,
-        })  # fmt: skip
+        naive = stick_boundary().subs(
+            {
+                sympy.Symbol("a1", positive=True): a1_,
+                sympy.Symbol("a2", positive=True): a1_ + growth,
+                sympy.Symbol("L_I1", positive=True): multiplier,
+                sympy.Symbol("L_I2", positive=True): multiplier,
+                sympy.Symbol("L_II1", real=True): lam * multiplier,
+                sympy.Symbol("L_II2", real=True): lam * multiplier,
+            }
+        )
         naive_first = sympy.diff(naive.subs(growth, path_slope * dP), dP).subs(dP, 0) * dP
         gap = sympy.factor(naive_first - exact_shift)
         eq.holds(
@@ -373,9 +389,11 @@ def derive() -> Derivation:
         rotation_pair = contact["theta"]
         r_P_profile = sympy.simplify(
             (sympy.diff(rotation_pair, half_) - sympy.diff(rotation_pair, centre_))
-            / (sympy.diff(contact["P"], centre_) * sympy.diff(rotation_pair, half_)
-               - sympy.diff(contact["P"], half_) * sympy.diff(rotation_pair, centre_))
-        )  # fmt: skip
+            / (
+                sympy.diff(contact["P"], centre_) * sympy.diff(rotation_pair, half_)
+                - sympy.diff(contact["P"], half_) * sympy.diff(rotation_pair, centre_)
+            )
+        )
         eq.holds(
             multiplier.subs({at_fixed_rotation: r_P_profile, width: w_profile})
             - contact["L_I_right"],
@@ -397,10 +415,18 @@ def derive() -> Derivation:
     )
     d.emit(
         name="normal_edge_multiplier_asymmetric",
-        args=(WIDTH, Argument(dP_da_edge, "Load slope dP/da along the path, with a this "
-                              "edge's position [force/length^2]."),
-              Argument(dMc_da, "Slope dM_c/da of the moment of the increments about the "
-                       "current contact centre (positive towards this edge) [force].")),
+        args=(
+            WIDTH,
+            Argument(
+                dP_da_edge,
+                "Load slope dP/da along the path, with a this edge's position [force/length^2].",
+            ),
+            Argument(
+                dMc_da,
+                "Slope dM_c/da of the moment of the increments about the "
+                "current contact centre (positive towards this edge) [force].",
+            ),
+        ),
         expr=normal_multiplier_asymmetric(),
         equations=("19",),
         summary="Normal edge multiplier L_I of one edge of an asymmetric, tilting contact.",
@@ -408,7 +434,7 @@ def derive() -> Derivation:
         "contact (AS1).  (19) when the contact is symmetric.",
         module="asymmetric_edges",
         returns="L_I [force/length^(5/2)].",
-    )  # fmt: skip
+    )
     d.emit(
         name="edge_moment_factor",
         args=(WIDTH, EDGE_MULTIPLIER, EDGE_SLOPE),
@@ -422,12 +448,15 @@ def derive() -> Derivation:
     )
     d.emit(
         name="edge_multiplier_balance",
-        args=(WIDTH,
-              Argument(L_I_right, "Normal edge multiplier of the right edge."),
-              Argument(da_dP_right, "Slope a'(P) of the right edge's law."),
-              Argument(L_I_left, "Normal edge multiplier of the left edge."),
-              Argument(da_dP_left, "Slope a'(P) of the left edge's law (its distance, growing "
-                       "leftwards).")),
+        args=(
+            WIDTH,
+            Argument(L_I_right, "Normal edge multiplier of the right edge."),
+            Argument(da_dP_right, "Slope a'(P) of the right edge's law."),
+            Argument(L_I_left, "Normal edge multiplier of the left edge."),
+            Argument(
+                da_dP_left, "Slope a'(P) of the left edge's law (its distance, growing leftwards)."
+            ),
+        ),
         expr=multiplier_balance(),
         equations=("19",),
         summary="(pi sqrt w/4)(L_I,r a_r' + L_I,l a_l'), which is exactly 1 for any contact.",
@@ -435,5 +464,5 @@ def derive() -> Derivation:
         "data of both edges can be checked against 1 without knowing M.",
         module="asymmetric_edges",
         returns="Dimensionless; 1 for consistent data.",
-    )  # fmt: skip
+    )
     return d

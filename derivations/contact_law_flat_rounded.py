@@ -171,11 +171,13 @@ def emitted_at_angle(expr: sympy.Expr) -> sympy.Expr:
     return expr.subs(c, c_emit)
 
 
-ANGLE = Argument(psi, "Corner angle psi = arccos(c/a) at this half-width, from "
-                 "flat_rounded_corner_angle [rad].")
+ANGLE = Argument(
+    psi, "Corner angle psi = arccos(c/a) at this half-width, from flat_rounded_corner_angle [rad]."
+)
 assert chord.name == "D" and psi.name == "psi"
-CHORD = Argument(chord, "Chord D = sqrt(a^2 - c^2) at this half-width, from flat_rounded_chord "
-                 "[length].")
+CHORD = Argument(
+    chord, "Chord D = sqrt(a^2 - c^2) at this half-width, from flat_rounded_chord [length]."
+)
 
 
 @functools.cache
@@ -223,11 +225,19 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
     )
     load, slope = flat_rounded_load(), flat_rounded_load_slope()
     multiplier, multiplier_slope = flat_rounded_multiplier(), flat_rounded_multiplier_slope()
-    law_mp = {name: _mp(expr, a, c, R, E_star) for name, expr in
-              [("load", load), ("slope", slope), ("multiplier", multiplier),
-               ("multiplier_slope", multiplier_slope)]}  # fmt: skip
-    law_points = [{"a_value": a_, "c_value": c_} for a_, c_ in
-                  [("2", "1"), ("1.001", "1"), ("5", "0.5"), ("3", "0")]]  # fmt: skip
+    law_mp = {
+        name: _mp(expr, a, c, R, E_star)
+        for name, expr in [
+            ("load", load),
+            ("slope", slope),
+            ("multiplier", multiplier),
+            ("multiplier_slope", multiplier_slope),
+        ]
+    }
+    law_points = [
+        {"a_value": a_, "c_value": c_}
+        for a_, c_ in [("2", "1"), ("1.001", "1"), ("5", "0.5"), ("3", "0")]
+    ]
 
     def emitted_matches(eq, name: str, expr: sympy.Expr) -> None:
         function = _mp(emitted(in_angle(expr)), a, c_emit, R, E_star)
@@ -253,8 +263,10 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
             printed=r"P=\frac{E^* a^2}{4R}\left(\pi-2\phi_0-\sin 2\phi_0\right),"
             r"\ \phi_0=\arcsin\frac{c}{a}",
         )
-        eq.holds(load.subs(c, 0) - sympy.pi * E_star * a**2 / (4 * R),
-                 how="c = 0 gives the Hertz law (29)")  # fmt: skip
+        eq.holds(
+            load.subs(c, 0) - sympy.pi * E_star * a**2 / (4 * R),
+            how="c = 0 gives the Hertz law (29)",
+        )
         eq.holds(
             in_angle(load) - E_star * (a**2 * psi - c * chord) / (2 * R),
             how="with psi = arccos(c/a), D = sqrt(a^2 - c^2): P = E* (a^2 psi - c D)/(2R)",
@@ -278,8 +290,10 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
             how="(19): L_I = E* sqrt(2a) arccos(c/a)/(pi R)",
             derived=multiplier,
         )
-        eq.holds(multiplier.subs(c, 0) - E_star / R * sympy.sqrt(a / 2),
-                 how="c = 0 gives the Hertz multiplier (31)")  # fmt: skip
+        eq.holds(
+            multiplier.subs(c, 0) - E_star / R * sympy.sqrt(a / 2),
+            how="c = 0 gives the Hertz multiplier (31)",
+        )
         emitted_matches(eq, "multiplier", multiplier)
     with d.equation("FR-26", "Slope dL_I/dP of the rounded-flat multiplier") as eq:
         eq.beyond_paper(
@@ -293,8 +307,10 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
             how="dL_I/dP = (dL_I/da)/(dP/da) = sqrt(2)/(pi a^(3/2)) (1/2 + c/(D arccos(c/a)))",
             derived=multiplier_slope,
         )
-        eq.holds(multiplier_slope.subs(c, 0) - multiplier.subs(c, 0) / (4 * load.subs(c, 0)),
-                 how="c = 0 gives the Hertz L_I' = L_I/(4P) of (30)")  # fmt: skip
+        eq.holds(
+            multiplier_slope.subs(c, 0) - multiplier.subs(c, 0) / (4 * load.subs(c, 0)),
+            how="c = 0 gives the Hertz L_I' = L_I/(4P) of (30)",
+        )
         emitted_matches(eq, "multiplier_slope", multiplier_slope)
 
     closed = flat_rounded_pressure_closed()
@@ -316,8 +332,10 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
             "(E* c/R) int u d(s^2)/(2 s^2) with u = sqrt((s^2 - x^2)/(s^2 - c^2))",
         )
         square = pieces["square"]
-        eq.holds((square - X**2) / (square - c**2) - u**2,
-                 how="s^2 = (c^2 u^2 - x^2)/(u^2 - 1) inverts that u")  # fmt: skip
+        eq.holds(
+            (square - X**2) / (square - c**2) - u**2,
+            how="s^2 = (c^2 u^2 - x^2)/(u^2 - 1) inverts that u",
+        )
         eq.holds(
             sympy.diff(pieces["antiderivative"].replace(sympy.Abs, lambda w: w), u)
             - pieces["rational"],
@@ -334,41 +352,60 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
 
         def emitted_bracket(a_value, c_value, x_value):
             a_value, c_value, x_value = map(mpmath.mpf, (a_value, c_value, x_value))
-            return bracket_mp(
-                a_value, c_value, abs(x_value), mpmath.acos(c_value / a_value),
-                mpmath.sqrt(a_value**2 - c_value**2), mpmath.sqrt(a_value**2 - x_value**2),
-            ) / mpmath.pi  # fmt: skip
+            return (
+                bracket_mp(
+                    a_value,
+                    c_value,
+                    abs(x_value),
+                    mpmath.acos(c_value / a_value),
+                    mpmath.sqrt(a_value**2 - c_value**2),
+                    mpmath.sqrt(a_value**2 - x_value**2),
+                )
+                / mpmath.pi
+            )
 
         eq.matches_numerically(
             emitted_bracket,
             lambda a_value, c_value, x_value: closed_mp(a_value, c_value, x_value, 1, 1),
-            [{"a_value": a_, "c_value": c_, "x_value": x_}
-             for a_, c_, x_ in [("2", "1", "0.3"), ("2", "1", "1.5"), ("2", "1", "1.9999"),
-                                ("1.01", "1", "0.5"), ("3", "0.1", "0.05"), ("3", "0.1", "2")]],
+            [
+                {"a_value": a_, "c_value": c_, "x_value": x_}
+                for a_, c_, x_ in [
+                    ("2", "1", "0.3"),
+                    ("2", "1", "1.5"),
+                    ("2", "1", "1.9999"),
+                    ("1.01", "1", "0.5"),
+                    ("3", "0.1", "0.05"),
+                    ("3", "0.1", "2"),
+                ]
+            ],
             how="the emitted rearrangement equals the derived form on both sides of |x| = c",
             symbolic=True,
-        )  # fmt: skip
+        )
         kernel_mp = _mp(flat_rounded_pressure(), x, a, c_emit, R, E_star)
         eq.matches_numerically(
             lambda a_value, c_value, x_value: kernel_mp(x_value, a_value, c_value, 1, 1),
-            lambda a_value, c_value, x_value: 0 if abs(x_value) >= a_value
-            else closed_mp(a_value, c_value, abs(x_value), 1, 1) if c_value > 0
+            lambda a_value, c_value, x_value: 0
+            if abs(x_value) >= a_value
+            else closed_mp(a_value, c_value, abs(x_value), 1, 1)
+            if c_value > 0
             else mpmath.sqrt(a_value**2 - x_value**2) / 2,  # c = 0: Hertz's (48), E* = R = 1
-            [{"a_value": mpmath.mpf(2), "c_value": mpmath.mpf(c_), "x_value": mpmath.mpf(x_)}
-             for c_, x_ in [(1, "-0.3"), (1, "1.5"), (1, "-2.5"), (0, "0.5")]],
+            [
+                {"a_value": mpmath.mpf(2), "c_value": mpmath.mpf(c_), "x_value": mpmath.mpf(x_)}
+                for c_, x_ in [(1, "-0.3"), (1, "1.5"), (1, "-2.5"), (0, "0.5")]
+            ],
             how="the emitted kernel (|x| clamped to a) equals the derived form inside, 0 "
             "outside, and Hertz's (48) for c = 0",
             symbolic=True,
-        )  # fmt: skip
+        )
         eq.matches_numerically(
-            lambda a_value, c_value: 2 * mpmath.quad(
-                lambda t: emitted_bracket(a_value, c_value, t), [0, c_value, a_value]),
+            lambda a_value, c_value: 2
+            * mpmath.quad(lambda t: emitted_bracket(a_value, c_value, t), [0, c_value, a_value]),
             lambda a_value, c_value: law_mp["load"](a_value, c_value, 1, 1),
             [{"a_value": mpmath.mpf(2), "c_value": mpmath.mpf(1)}],
             how="int_{-a}^{a} p dx = P(a)",
             digits=15,
             symbolic=True,
-        )  # fmt: skip
+        )
         gap = mpmath.mpf(10) ** -40
         eq.matches_numerically(
             lambda a_value, c_value: emitted_bracket(a_value, c_value, a_value * (1 - gap))
@@ -380,12 +417,23 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
         )
 
     def emit(name, args, expr, equations, summary, doc, returns):
-        d.emit(name=name, args=args, expr=expr, equations=equations, summary=summary, doc=doc,
-               module="flat_rounded", returns=returns)  # fmt: skip
+        d.emit(
+            name=name,
+            args=args,
+            expr=expr,
+            equations=equations,
+            summary=summary,
+            doc=doc,
+            module="flat_rounded",
+            returns=returns,
+        )
 
     with d.equation("FR-h", "Profile of the flat punch with rounded corners") as eq:
-        eq.given("the gap h = 0 over the flat |x| < c and (|x| - c)^2/(2R) beyond: the "
-                 "starting point of the rounded-flat law", derived=profile())  # fmt: skip
+        eq.given(
+            "the gap h = 0 over the flat |x| < c and (|x| - c)^2/(2R) beyond: the "
+            "starting point of the rounded-flat law",
+            derived=profile(),
+        )
         inside, beyond_ = sympy.symbols("f e", positive=True)
         (left, _), (flat, _), (right, _) = profile().args  # the pieces x < -c, |x| < c, x > c
         for piece, point, how in (
@@ -394,64 +442,118 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
             (right, {x: c + beyond_}, "beyond the right corner x > c"),
             (left, {x: -c - beyond_}, "beyond the left corner x < -c"),
         ):
-            eq.holds(profile_branch_free().subs(c_emit, c).subs(point) - piece.subs(point),
-                     how=f"the branch-free Max(0, |x| - c)^2/(2R) equals it {how}")  # fmt: skip
-    emit("flat_rounded_profile", (POSITION, FLAT, RADIUS), profile_branch_free(), ("29",),
-         "Gap profile h(x) = Max(0, |x| - c)^2/(2R) of the flat punch with rounded corners.",
-         "Flat (h = 0) over |x| < c, circular of radius R (in the parabolic, half-plane "
-         "approximation) beyond; c = 0 is the cylinder of (29).  The starting point of the law; "
-         "the reference solver's normal problem starts from it.",
-         "h [length].")  # fmt: skip
+            eq.holds(
+                profile_branch_free().subs(c_emit, c).subs(point) - piece.subs(point),
+                how=f"the branch-free Max(0, |x| - c)^2/(2R) equals it {how}",
+            )
+    emit(
+        "flat_rounded_profile",
+        (POSITION, FLAT, RADIUS),
+        profile_branch_free(),
+        ("29",),
+        "Gap profile h(x) = Max(0, |x| - c)^2/(2R) of the flat punch with rounded corners.",
+        "Flat (h = 0) over |x| < c, circular of radius R (in the parabolic, half-plane "
+        "approximation) beyond; c = 0 is the cylinder of (29).  The starting point of the law; "
+        "the reference solver's normal problem starts from it.",
+        "h [length].",
+    )
 
-    emit("flat_rounded_load", LAW_ARGS, emitted(in_angle(load)), ("29",),
-         "Normal load P(a) of the flat punch with rounded corners at half-width a.",
-         "The counterpart of (29): P = E* (a^2 psi - c sqrt(a^2 - c^2))/(2R) with psi = "
-         "arccos(c/a) = atan2(sqrt((a - c)(a + c)), c), accurate as a -> c and equal to Hertz's "
-         "law for c = 0.  Zero for a <= c: any load P > 0 gives a > c.  For a close to c, P "
-         "is a difference of nearly equal terms (relative error about 1e-16 (c/a)/(1 - c/a)), as "
-         "ill-conditioned as the law itself there.",
-         "P [force/length].")  # fmt: skip
-    emit("flat_rounded_load_slope", LAW_ARGS, emitted(in_angle(slope)), ("29",),
-         "Slope dP/da = E* a arccos(c/a)/R of the rounded-flat law.",
-         "Positive for a > c, so the law is increasing; zero for a <= c.",
-         "dP/da [force/length^2].")  # fmt: skip
-    emit("flat_rounded_normal_edge_multiplier", LAW_ARGS, emitted(in_angle(multiplier)),
-         ("19",), "Normal edge multiplier L_I of the rounded flat at half-width a.",
-         "(19) with the slope of the law: L_I = E* sqrt(2a) arccos(c/a)/(pi R).",
-         "L_I [force/length^(5/2)].")  # fmt: skip
-    emit("flat_rounded_normal_edge_multiplier_slope", LAW_ARGS,
-         emitted(in_angle(multiplier_slope)), ("26",),
-         "Slope dL_I/dP of the rounded-flat edge multiplier at half-width a > c.",
-         "(dL_I/da)/(dP/da) = sqrt(2)/(pi a^(3/2)) (1/2 + c/(sqrt(a^2 - c^2) arccos(c/a))); it "
-         "grows without bound as a -> c, where the contact is nearly a flat punch.",
-         "dL_I/dP [1/length^(3/2)].")  # fmt: skip
+    emit(
+        "flat_rounded_load",
+        LAW_ARGS,
+        emitted(in_angle(load)),
+        ("29",),
+        "Normal load P(a) of the flat punch with rounded corners at half-width a.",
+        "The counterpart of (29): P = E* (a^2 psi - c sqrt(a^2 - c^2))/(2R) with psi = "
+        "arccos(c/a) = atan2(sqrt((a - c)(a + c)), c), accurate as a -> c and equal to Hertz's "
+        "law for c = 0.  Zero for a <= c: any load P > 0 gives a > c.  For a close to c, P "
+        "is a difference of nearly equal terms (relative error about 1e-16 (c/a)/(1 - c/a)), as "
+        "ill-conditioned as the law itself there.",
+        "P [force/length].",
+    )
+    emit(
+        "flat_rounded_load_slope",
+        LAW_ARGS,
+        emitted(in_angle(slope)),
+        ("29",),
+        "Slope dP/da = E* a arccos(c/a)/R of the rounded-flat law.",
+        "Positive for a > c, so the law is increasing; zero for a <= c.",
+        "dP/da [force/length^2].",
+    )
+    emit(
+        "flat_rounded_normal_edge_multiplier",
+        LAW_ARGS,
+        emitted(in_angle(multiplier)),
+        ("19",),
+        "Normal edge multiplier L_I of the rounded flat at half-width a.",
+        "(19) with the slope of the law: L_I = E* sqrt(2a) arccos(c/a)/(pi R).",
+        "L_I [force/length^(5/2)].",
+    )
+    emit(
+        "flat_rounded_normal_edge_multiplier_slope",
+        LAW_ARGS,
+        emitted(in_angle(multiplier_slope)),
+        ("26",),
+        "Slope dL_I/dP of the rounded-flat edge multiplier at half-width a > c.",
+        "(dL_I/da)/(dP/da) = sqrt(2)/(pi a^(3/2)) (1/2 + c/(sqrt(a^2 - c^2) arccos(c/a))); it "
+        "grows without bound as a -> c, where the contact is nearly a flat punch.",
+        "dL_I/dP [1/length^(3/2)].",
+    )
     # The same four quantities from psi and D computed once (a Newton step needs P and P').
-    emit("flat_rounded_chord", (HALF_WIDTH, FLAT), chord_value(), ("29",),
-         "Chord D = sqrt(a^2 - c^2) of the rounded flat at half-width a (0 for a <= c).",
-         "The length shared by the law, its slope and the edge multiplier.", "D [length].")
-    emit("flat_rounded_corner_angle", (CHORD, FLAT), angle_value().subs(chord_value(), chord),
-         ("29",), "Corner angle psi = arccos(c/a) of the rounded flat, from its chord D.",
-         "atan2(D, c) with D = sqrt(a^2 - c^2) from flat_rounded_chord: accurate as a -> c "
-         "(where arccos(c/a) loses digits), pi/2 for c = 0 and 0 for a <= c.", "psi [rad].")
-    for name, expr in (("load", load), ("load_slope", slope), ("normal_edge_multiplier",
-                       multiplier), ("normal_edge_multiplier_slope", multiplier_slope)):
+    emit(
+        "flat_rounded_chord",
+        (HALF_WIDTH, FLAT),
+        chord_value(),
+        ("29",),
+        "Chord D = sqrt(a^2 - c^2) of the rounded flat at half-width a (0 for a <= c).",
+        "The length shared by the law, its slope and the edge multiplier.",
+        "D [length].",
+    )
+    emit(
+        "flat_rounded_corner_angle",
+        (CHORD, FLAT),
+        angle_value().subs(chord_value(), chord),
+        ("29",),
+        "Corner angle psi = arccos(c/a) of the rounded flat, from its chord D.",
+        "atan2(D, c) with D = sqrt(a^2 - c^2) from flat_rounded_chord: accurate as a -> c "
+        "(where arccos(c/a) loses digits), pi/2 for c = 0 and 0 for a <= c.",
+        "psi [rad].",
+    )
+    for name, expr in (
+        ("load", load),
+        ("load_slope", slope),
+        ("normal_edge_multiplier", multiplier),
+        ("normal_edge_multiplier_slope", multiplier_slope),
+    ):
         at_angle = emitted_at_angle(in_angle(expr))
         used = [arg for arg in (ANGLE, CHORD) if arg.symbol in at_angle.free_symbols]
-        emit(f"flat_rounded_{name}_at_angle", (*LAW_ARGS, *used), at_angle,
-             ("26",) if name.endswith("slope") and "multiplier" in name else
-             ("19",) if "multiplier" in name else ("29",),
-             f"flat_rounded_{name} from the corner angle (and chord) at half-width a.",
-             f"Equals flat_rounded_{name}(a, c, R, E_star) with psi and D passed in, so that "
-             "several quantities at one half-width share one atan2 and one sqrt.",
-             "As flat_rounded_" + name + ".")  # fmt: skip
-    emit("flat_rounded_pressure", (POSITION, *LAW_ARGS), flat_rounded_pressure(), ("4", "48"),
-         "Contact pressure p(x) under the flat punch with rounded corners; 0 for |x| >= a.",
-         "The counterpart of (48), with the edge asymptote (4): (E*/(pi R)) [psi S - c ln((S + "
-         "D)/a) + |x| ln((c S + |x| D)/a^2) + ((c - |x|)/2) ln(|c^2 - x^2|/a^2)], S = sqrt(a^2 - "
-         "x^2), D = sqrt(a^2 - c^2), psi = arccos(c/a).  The logarithmic singularities at |x| = "
-         "c cancel; t ln t terms are written ln(t^t), so x = 0, +-c, +-a give no warning.  Needs "
-         "a > c.  The terms are larger than p near the edges and, for a close to c, everywhere: "
-         "the relative error grows there (about 1e-13 at a - |x| = 1e-6 a, 1e-10 at c/a = "
-         "0.9999).",
-         "p [force/length^2].")  # fmt: skip
+        emit(
+            f"flat_rounded_{name}_at_angle",
+            (*LAW_ARGS, *used),
+            at_angle,
+            ("26",)
+            if name.endswith("slope") and "multiplier" in name
+            else ("19",)
+            if "multiplier" in name
+            else ("29",),
+            f"flat_rounded_{name} from the corner angle (and chord) at half-width a.",
+            f"Equals flat_rounded_{name}(a, c, R, E_star) with psi and D passed in, so that "
+            "several quantities at one half-width share one atan2 and one sqrt.",
+            "As flat_rounded_" + name + ".",
+        )
+    emit(
+        "flat_rounded_pressure",
+        (POSITION, *LAW_ARGS),
+        flat_rounded_pressure(),
+        ("4", "48"),
+        "Contact pressure p(x) under the flat punch with rounded corners; 0 for |x| >= a.",
+        "The counterpart of (48), with the edge asymptote (4): (E*/(pi R)) [psi S - c ln((S + "
+        "D)/a) + |x| ln((c S + |x| D)/a^2) + ((c - |x|)/2) ln(|c^2 - x^2|/a^2)], S = sqrt(a^2 - "
+        "x^2), D = sqrt(a^2 - c^2), psi = arccos(c/a).  The logarithmic singularities at |x| = "
+        "c cancel; t ln t terms are written ln(t^t), so x = 0, +-c, +-a give no warning.  Needs "
+        "a > c.  The terms are larger than p near the edges and, for a close to c, everywhere: "
+        "the relative error grows there (about 1e-13 at a - |x| = 1e-6 a, 1e-10 at c/a = "
+        "0.9999).",
+        "p [force/length^2].",
+    )
     return d

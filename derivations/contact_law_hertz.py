@@ -116,8 +116,10 @@ def derive() -> Derivation:
         )
     d.emit(
         name="hertz_profile",
-        args=(Argument(x, "Position along the interface from the contact centre [length]."),
-              RADIUS),
+        args=(
+            Argument(x, "Position along the interface from the contact centre [length]."),
+            RADIUS,
+        ),
         expr=hertz_profile(),
         equations=("29",),
         summary="Gap profile h(x) = x^2/(2R) of the cylinder, from which (29) is derived.",

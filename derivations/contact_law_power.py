@@ -244,12 +244,16 @@ def _pressure_by_superposition(n_value, a_value, x_value):
     """
     n_value, a_value, x_value = map(mpmath.mpf, (n_value, a_value, x_value))
     K_value = mpmath.sqrt(mpmath.pi) * mpmath.gamma((n_value + 1) / 2) / mpmath.gamma(n_value / 2)
-    return mpmath.quad(
-        # A node rounded onto the integrable endpoint singularity contributes nothing.
-        lambda t: 0 if t <= abs(x_value) else
-        n_value * K_value * t ** (n_value - 1) / mpmath.sqrt(t**2 - x_value**2),
-        [abs(x_value), a_value],
-    ) / mpmath.pi
+    return (
+        mpmath.quad(
+            # A node rounded onto the integrable endpoint singularity contributes nothing.
+            lambda t: 0
+            if t <= abs(x_value)
+            else n_value * K_value * t ** (n_value - 1) / mpmath.sqrt(t**2 - x_value**2),
+            [abs(x_value), a_value],
+        )
+        / mpmath.pi
+    )
 
 
 def derive() -> Derivation:  # noqa: C901 - one block per established result
@@ -351,21 +355,23 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
         eq.matches_numerically(
             closed,
             _pressure_by_superposition,
-            [{"n_value": n_, "a_value": "1.3", "x_value": x_}
-             for n_, x_ in [("1.5", "0.2"), ("7", "-1.2")]],
+            [
+                {"n_value": n_, "a_value": "1.3", "x_value": x_}
+                for n_, x_ in [("1.5", "0.2"), ("7", "-1.2")]
+            ],
             how="mpmath quadrature of the superposition integral (n = 1.5, 7)",
             digits=15,
             symbolic=True,
-        )  # fmt: skip
+        )
         eq.matches_numerically(
-            lambda n_value, a_value: 2 * mpmath.quad(
-                lambda t: closed(n_value, a_value, t), [0, a_value]),
+            lambda n_value, a_value: 2
+            * mpmath.quad(lambda t: closed(n_value, a_value, t), [0, a_value]),
             lambda n_value, a_value: load_mp(n_value, a_value),
             [{"n_value": "2.5", "a_value": "1.3"}],
             how="int_{-a}^{a} p dx = P(a) (n = 2.5)",
             digits=15,
             symbolic=True,
-        )  # fmt: skip
+        )
         cylinder = {n: 2, A: 1 / (2 * R), K: shape_factor().subs(n, 2)}
         at_two = sympy.hyperexpand(pressure.subs(cylinder))
         hertz_P = hertz_load()
@@ -404,56 +410,122 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
 
     def emit(name, args, expr, equations, summary, doc, returns):
         assert not expr.has(sympy.gamma), name  # K stands for the Gamma ratio
-        d.emit(name=name, args=args, expr=expr, equations=equations, summary=summary, doc=doc,
-               module="power_law", returns=returns)  # fmt: skip
+        d.emit(
+            name=name,
+            args=args,
+            expr=expr,
+            equations=equations,
+            summary=summary,
+            doc=doc,
+            module="power_law",
+            returns=returns,
+        )
 
-    emit("power_law_profile", (POSITION, EXPONENT, COEFFICIENT), power_profile(), ("29",),
-         "Gap profile h(x) = A |x|^n of the power-law punch.",
-         "The starting point of the power law (its slope n A x^(n-1), x > 0, is what the "
-         "plane-contact relation integrates); the reference solver's normal problem starts "
-         "from it.", "h [length].")  # fmt: skip
-    emit("power_law_load", (HALF_WIDTH, *PARAMETERS), with_shape_factor(load), ("29",),
-         "Normal load P(a) = K E* A a^n of the power-law punch h = A |x|^n.",
-         "The counterpart of (29), from the plane-contact relation and Euler's Beta integral.",
-         "P [force/length].")  # fmt: skip
-    emit("power_law_load_slope", (HALF_WIDTH, *PARAMETERS),
-         sympy.diff(with_shape_factor(load), a), ("29",),
-         "Slope dP/da = n K E* A a^(n-1) of the power law.", "Positive: the law is increasing.",
-         "dP/da [force/length^2].")  # fmt: skip
-    emit("power_law_half_width", (LOAD, *PARAMETERS), half_width, ("29",),
-         "Contact half-width a(P) = (P/(K E* A))^(1/n) of the power-law punch.",
-         "The inverse of the law, in closed form.", "a [length].")  # fmt: skip
-    emit("power_law_half_width_growth", (LOAD1, LOAD_CHANGE, *PARAMETERS), growth, ("23", "42"),
-         "Growth a(P1 + dP) - a(P1) of the power-law contact, without cancellation.",
-         "a1 expm1(log1p(dP/P1)/n) from a2/a1 = (1 + dP/P1)^(1/n): keeps full relative "
-         "precision for any dP/P1 > 0, down to dP/P1 of 1e-300.",
-         "a2 - a1 [length].")  # fmt: skip
-    emit("power_law_normal_edge_multiplier", (LOAD, *PARAMETERS), multiplier, ("19",),
-         "Normal edge multiplier L_I = sqrt(2) n P/(pi a^(3/2)) of the power law at load P.",
-         "(19) with dP/da = n P/a.", "L_I [force/length^(5/2)].")  # fmt: skip
-    emit("power_law_normal_edge_multiplier_slope", (LOAD, *PARAMETERS), multiplier_slope,
-         ("26",), "Slope dL_I/dP = (1 - 3/(2n)) L_I/P of the power-law edge multiplier.",
-         "Negative for n < 3/2 (the wedge's L_I falls as the load grows), zero at n = 3/2.",
-         "dL_I/dP [1/length^(3/2)].")  # fmt: skip
-    emit("power_law_hypergeometric_argument", (POSITION, HALF_WIDTH), hypergeometric_argument(),
-         ("48",),
-         "Argument z = 1 - x^2/a^2 of the hypergeometric factor of the power-law pressure.",
-         "Formed as (a - |x|)(a + |x|)/a^2, without cancellation near the edges, and clamped "
-         "to 0 outside the contact.", "z in [0, 1].")  # fmt: skip
-    emit("power_law_pressure",
-         (POSITION, HALF_WIDTH, *PARAMETERS,
-          Argument(F, "The value 2F1(1 - n/2, 1; 3/2; z) at z from "
-                      "power_law_hypergeometric_argument (1 for n = 2; scipy.special.hyp2f1).")),
-         power_pressure(), ("4", "48"),
-         "Contact pressure under the power-law punch, given its hypergeometric factor.",
-         "(n K E* A/pi) a^(n-2) sqrt(a^2 - x^2) 2F1(1 - n/2, 1; 3/2; 1 - x^2/a^2), from "
-         "Mossakovskii's superposition; the counterpart of (48) (n = 2), with the edge "
-         "asymptote (4).  0 outside the contact.", "p [force/length^2].")  # fmt: skip
-    emit("wedge_pressure",
-         (POSITION, HALF_WIDTH, COEFFICIENT, MODULUS), wedge_pressure(), ("4", "48"),
-         "Contact pressure (E* A/pi) arccosh(a/|x|) under a wedge (power law with n = 1).",
-         "Written (E* A/pi) log1p((a - |x| + sqrt(a^2 - x^2))/|x|): sums of non-negative terms, "
-         "accurate near the edges and the apex, 0 outside the contact.  The apex x = 0 is a "
-         "logarithmic singularity: it divides by zero there (the law class returns +inf).",
-         "p [force/length^2].")  # fmt: skip
+    emit(
+        "power_law_profile",
+        (POSITION, EXPONENT, COEFFICIENT),
+        power_profile(),
+        ("29",),
+        "Gap profile h(x) = A |x|^n of the power-law punch.",
+        "The starting point of the power law (its slope n A x^(n-1), x > 0, is what the "
+        "plane-contact relation integrates); the reference solver's normal problem starts "
+        "from it.",
+        "h [length].",
+    )
+    emit(
+        "power_law_load",
+        (HALF_WIDTH, *PARAMETERS),
+        with_shape_factor(load),
+        ("29",),
+        "Normal load P(a) = K E* A a^n of the power-law punch h = A |x|^n.",
+        "The counterpart of (29), from the plane-contact relation and Euler's Beta integral.",
+        "P [force/length].",
+    )
+    emit(
+        "power_law_load_slope",
+        (HALF_WIDTH, *PARAMETERS),
+        sympy.diff(with_shape_factor(load), a),
+        ("29",),
+        "Slope dP/da = n K E* A a^(n-1) of the power law.",
+        "Positive: the law is increasing.",
+        "dP/da [force/length^2].",
+    )
+    emit(
+        "power_law_half_width",
+        (LOAD, *PARAMETERS),
+        half_width,
+        ("29",),
+        "Contact half-width a(P) = (P/(K E* A))^(1/n) of the power-law punch.",
+        "The inverse of the law, in closed form.",
+        "a [length].",
+    )
+    emit(
+        "power_law_half_width_growth",
+        (LOAD1, LOAD_CHANGE, *PARAMETERS),
+        growth,
+        ("23", "42"),
+        "Growth a(P1 + dP) - a(P1) of the power-law contact, without cancellation.",
+        "a1 expm1(log1p(dP/P1)/n) from a2/a1 = (1 + dP/P1)^(1/n): keeps full relative "
+        "precision for any dP/P1 > 0, down to dP/P1 of 1e-300.",
+        "a2 - a1 [length].",
+    )
+    emit(
+        "power_law_normal_edge_multiplier",
+        (LOAD, *PARAMETERS),
+        multiplier,
+        ("19",),
+        "Normal edge multiplier L_I = sqrt(2) n P/(pi a^(3/2)) of the power law at load P.",
+        "(19) with dP/da = n P/a.",
+        "L_I [force/length^(5/2)].",
+    )
+    emit(
+        "power_law_normal_edge_multiplier_slope",
+        (LOAD, *PARAMETERS),
+        multiplier_slope,
+        ("26",),
+        "Slope dL_I/dP = (1 - 3/(2n)) L_I/P of the power-law edge multiplier.",
+        "Negative for n < 3/2 (the wedge's L_I falls as the load grows), zero at n = 3/2.",
+        "dL_I/dP [1/length^(3/2)].",
+    )
+    emit(
+        "power_law_hypergeometric_argument",
+        (POSITION, HALF_WIDTH),
+        hypergeometric_argument(),
+        ("48",),
+        "Argument z = 1 - x^2/a^2 of the hypergeometric factor of the power-law pressure.",
+        "Formed as (a - |x|)(a + |x|)/a^2, without cancellation near the edges, and clamped "
+        "to 0 outside the contact.",
+        "z in [0, 1].",
+    )
+    emit(
+        "power_law_pressure",
+        (
+            POSITION,
+            HALF_WIDTH,
+            *PARAMETERS,
+            Argument(
+                F,
+                "The value 2F1(1 - n/2, 1; 3/2; z) at z from "
+                "power_law_hypergeometric_argument (1 for n = 2; scipy.special.hyp2f1).",
+            ),
+        ),
+        power_pressure(),
+        ("4", "48"),
+        "Contact pressure under the power-law punch, given its hypergeometric factor.",
+        "(n K E* A/pi) a^(n-2) sqrt(a^2 - x^2) 2F1(1 - n/2, 1; 3/2; 1 - x^2/a^2), from "
+        "Mossakovskii's superposition; the counterpart of (48) (n = 2), with the edge "
+        "asymptote (4).  0 outside the contact.",
+        "p [force/length^2].",
+    )
+    emit(
+        "wedge_pressure",
+        (POSITION, HALF_WIDTH, COEFFICIENT, MODULUS),
+        wedge_pressure(),
+        ("4", "48"),
+        "Contact pressure (E* A/pi) arccosh(a/|x|) under a wedge (power law with n = 1).",
+        "Written (E* A/pi) log1p((a - |x| + sqrt(a^2 - x^2))/|x|): sums of non-negative terms, "
+        "accurate near the edges and the apex, 0 outside the contact.  The apex x = 0 is a "
+        "logarithmic singularity: it divides by zero there (the law class returns +inf).",
+        "p [force/length^2].",
+    )
     return d

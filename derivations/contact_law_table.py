@@ -66,8 +66,7 @@ def derive() -> Derivation:
         derived = multiplier_slope_in_fit()
         eq.holds(
             derived - L_I / P * (1 - sympy.Rational(3, 2) * ds - d2s / ds),
-            how="(19) differentiated along log a = s(log P): dL_I/dP = (L_I/P)(1 - 3s'/2 - "
-            "s''/s')",
+            how="(19) differentiated along log a = s(log P): dL_I/dP = (L_I/P)(1 - 3s'/2 - s''/s')",
         )
         k = sympy.Symbol("k", positive=True)
         eq.holds(

@@ -58,8 +58,9 @@ def derive() -> Derivation:
         "E2", "Backward slip = forward slip with L_II -> -L_II, traction negated"
     ) as eq:
         eq.beyond_paper("the paper's (8) and (11) assume forward slip on loading (lambda > mu)")
-        forward_reversed = integral_equation().subs({L_II1: -L_II1, L_II2: -L_II2},
-                                                    simultaneous=True)  # fmt: skip
+        forward_reversed = integral_equation().subs(
+            {L_II1: -L_II1, L_II2: -L_II2}, simultaneous=True
+        )
         eq.holds(
             backward_slip_traction() + forward_reversed,
             how="(12) with q2 = -mu p2, q1 = +mu p1 is minus (12) with L_II -> -L_II: the "

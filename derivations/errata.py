@@ -25,10 +25,13 @@ def fig5_errors() -> dict[str, tuple[sympy.Float, sympy.Float]]:
     stick_load = permanent_stick_load().subs(FIG5)
     exact_b = hertz_half_width().subs(P, stick_load).subs(FIG5)
     multipliers = {
-        L_I1: hertz_multiplier().subs(P, P1), L_I2: hertz_multiplier().subs(P, P1 + dP),
-    }  # fmt: skip
-    values = {**{k: v.subs(FIG5) for k, v in half_width.items()},
-              **{k: v.subs(FIG5) for k, v in multipliers.items()}}  # fmt: skip
+        L_I1: hertz_multiplier().subs(P, P1),
+        L_I2: hertz_multiplier().subs(P, P1 + dP),
+    }
+    values = {
+        **{k: v.subs(FIG5) for k, v in half_width.items()},
+        **{k: v.subs(FIG5) for k, v in multipliers.items()},
+    }
     values[L_II1] = FIG5[lam] * values[L_I1]  # (21) with eta = 0
     values[L_II2] = FIG5[lam] * values[L_I2]
     asymptotic = traction_difference().subs({**values, b: exact_b, mu: FIG5[mu]})
@@ -41,8 +44,10 @@ def fig5_errors() -> dict[str, tuple[sympy.Float, sympy.Float]]:
         edge = mpmath.mpf(sympy.N(values[a2], 40))
         for label, where in (("x = 0", mpmath.mpf(0)), ("x = 0.9 a2", edge * 9 / 10)):
             difference = abs(q_asymptotic(where) - q_exact(where))
-            errors[label] = (sympy.Float(difference, 30),
-                             sympy.Float(difference / q_exact(where), 30))  # fmt: skip
+            errors[label] = (
+                sympy.Float(difference, 30),
+                sympy.Float(difference / q_exact(where), 30),
+            )
     return errors
 
 
@@ -51,8 +56,10 @@ def derive() -> Derivation:
     with d.equation("46", "Shear-traction difference q_diff = q2 - q1") as eq:
         eq.given("definition; it removes the tractions locked in on first loading")
     with d.equation("C1", "Conclusion: lambda = dP/dQ") as eq:
-        eq.erratum("the conclusion defines lambda = dP/dQ; (18) and every derivation here use "
-                   "lambda = dQ/dP (the slope of Q against P along the load path)")  # fmt: skip
+        eq.erratum(
+            "the conclusion defines lambda = dP/dQ; (18) and every derivation here use "
+            "lambda = dQ/dP (the slope of Q against P along the load path)"
+        )
     with d.equation("C2", "Conclusion: 'errors of less than 0.01%' in Fig. 5") as eq:
         errors = fig5_errors()
         described = "; ".join(
@@ -67,9 +74,11 @@ def derive() -> Derivation:
             derived=sympy.Tuple(*[absolute for absolute, _ in errors.values()]),
         )
     with d.equation("T1", "Annihilation condition (text after (11))") as eq:
-        eq.erratum("printed as B^{1-2}(x) = -B^{2-1}(x) for b <= x <= a2; the densities are "
-                   "functions of the distance from the edge, so it reads "
-                   "B^{1->2}(a2 - x) = -B^{2->1}(a2 - x) (used in deriving (12))")  # fmt: skip
+        eq.erratum(
+            "printed as B^{1-2}(x) = -B^{2-1}(x) for b <= x <= a2; the densities are "
+            "functions of the distance from the edge, so it reads "
+            "B^{1->2}(a2 - x) = -B^{2->1}(a2 - x) (used in deriving (12))"
+        )
     with d.equation("T2", "(47): 'P_k'") as eq:
         eq.erratum("(47) writes p(x, P_k); it is P_K of (33)")
     return d

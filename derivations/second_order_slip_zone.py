@@ -146,8 +146,9 @@ def _beta_moment(polynomial: sympy.Expr, half_power: int) -> sympy.Expr:
     poly = sympy.Poly(sympy.expand(polynomial), u)
     total = sympy.S.Zero
     for (j,), coefficient in poly.terms():
-        total += coefficient * sympy.beta(sympy.Rational(2 * j + 1, 2),
-                                          sympy.Rational(2 * half_power + 3, 2))  # fmt: skip
+        total += coefficient * sympy.beta(
+            sympy.Rational(2 * j + 1, 2), sympy.Rational(2 * half_power + 3, 2)
+        )
     return sympy.expand(sympy.gammasimp(total))
 
 
@@ -225,8 +226,10 @@ def _slip_zone_integrals(width: sympy.Expr, other: sympy.Expr) -> tuple[sympy.Ex
             force_sum += _ring_beta_moment(integrand, half_power)
             moment_sum += _ring_beta_moment(_ring_truncate(integrand * arm, 3), half_power)
     unring = {_inverse_a1: 1 / a1}
-    return (_ring_truncate(force_sum, 2).as_expr().subs(unring),
-            _ring_truncate(moment_sum, 3).as_expr().subs(unring))  # fmt: skip
+    return (
+        _ring_truncate(force_sum, 2).as_expr().subs(unring),
+        _ring_truncate(moment_sum, 3).as_expr().subs(unring),
+    )
 
 
 @functools.cache
@@ -238,8 +241,10 @@ def width_coefficients(direction: int) -> dict[sympy.Symbol, sympy.Expr]:
     # both rational in a1, a', a''; the load terms then carry sqrt(2 a1)/L = pi a1 a' (19).
     leading, following = pressure_edge_coefficients()
     slope = sympy.diff(multiplier_near(step), step).subs(step, 0)
-    per_multiplier = {_M: sympy.cancel(following / leading) * _L,
-                      _L_slope: sympy.cancel(slope / leading) * _L}  # fmt: skip
+    per_multiplier = {
+        _M: sympy.cancel(following / leading) * _L,
+        _L_slope: sympy.cancel(slope / leading) * _L,
+    }
 
     def relative(expr: sympy.Expr) -> sympy.Expr:
         return sympy.expand(sympy.expand(expr.subs(per_multiplier)) / _L)
@@ -271,8 +276,10 @@ def _solve_linear(equations: list[sympy.Expr], unknowns: tuple[sympy.Symbol, sym
     (a11, a12, r1), (a21, a22, r2) = rows
     determinant = sympy.cancel(a11 * a22 - a12 * a21)
     assert determinant != 0
-    return {x1: sympy.cancel((r1 * a22 - a12 * r2) / determinant),
-            x2: sympy.cancel((a11 * r2 - r1 * a21) / determinant)}  # fmt: skip
+    return {
+        x1: sympy.cancel((r1 * a22 - a12 * r2) / determinant),
+        x2: sympy.cancel((a11 * r2 - r1 * a21) / determinant),
+    }
 
 
 @functools.cache
@@ -413,14 +420,33 @@ def pure_tension_table(ratios=("1.02", "1.05", "1.1")) -> list[tuple]:
             exact = hertz_pure_tension_width(p1, p2, mu_, eta_)
             a2_ = _hertz_half(p2)
             # (31): L_I proportional to sqrt(a) for Hertz; (22) needs only the ratio
-            b22 = _evaluate(paper, {mu: mu_, lam: 0, eta: eta_, a1: a1_, a2: a2_,
-                                    L_I1: mpmath.sqrt(a1_), L_I2: mpmath.sqrt(a2_)})  # fmt: skip
-            values = {mu: mu_, lam: 0, eta: eta_, a1: a1_, da_dP: slope, d2a_dP2: curvature,
-                      dP: p2 - p1, other_edge: -1}  # fmt: skip
+            b22 = _evaluate(
+                paper,
+                {
+                    mu: mu_,
+                    lam: 0,
+                    eta: eta_,
+                    a1: a1_,
+                    a2: a2_,
+                    L_I1: mpmath.sqrt(a1_),
+                    L_I2: mpmath.sqrt(a2_),
+                },
+            )
+            values = {
+                mu: mu_,
+                lam: 0,
+                eta: eta_,
+                a1: a1_,
+                da_dP: slope,
+                d2a_dP2: curvature,
+                dP: p2 - p1,
+                other_edge: -1,
+            }
             first = _evaluate(sympy.expand(second_order_width()).coeff(dP, 1) * dP, values)
             second = _evaluate(second_order_width(), values)
-            rows.append((ratio, exact, (a1_ - b22) / exact - 1, first / exact - 1,
-                         second / exact - 1))  # fmt: skip
+            rows.append(
+                (ratio, exact, (a1_ - b22) / exact - 1, first / exact - 1, second / exact - 1)
+            )
     return rows
 
 
@@ -507,17 +533,22 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
     same, opposite = coefficients[+1][W2], coefficients[-1][W2]
     r = (lam + sympy.pi * eta * a1 / 4) / mu
     rho, tau = lam / mu, sympy.pi * eta * a1 / (4 * mu)
-    phi = {+1: 4 * tau * (2 - 2 * rho - tau),
-           -1: 2 + 8 * tau - 2 * rho**2 - 4 * rho * tau - 6 * tau**2}  # fmt: skip
+    phi = {
+        +1: 4 * tau * (2 - 2 * rho - tau),
+        -1: 2 + 8 * tau - 2 * rho**2 - 4 * rho * tau - 6 * tau**2,
+    }
     with d.equation("X-b2", "Second-order stick boundary with tension (both edges slipping)") as eq:
         for direction, value in ((+1, same), (-1, opposite)):
             eq.holds(
                 _reduced(value + d2a_dP2 * (1 - r) ** 2 / 8 - da_dP**2 * phi[direction] / a1 / 32),
                 how=f"other edge {'same way' if direction > 0 else 'opposite way'}: W2 = "
                 "-a''(1 - r)^2/8 + a'^2 Phi/(32 a1), r = (lam + pi eta a1/4)/mu, Phi = "
-                + ("4 tau (2 - 2 rho - tau)" if direction > 0
-                   else "2 + 8 tau - 2 rho^2 - 4 rho tau - 6 tau^2"),
-            )  # fmt: skip
+                + (
+                    "4 tau (2 - 2 rho - tau)"
+                    if direction > 0
+                    else "2 + 8 tau - 2 rho^2 - 4 rho tau - 6 tau^2"
+                ),
+            )
         exact_k = taylor_coefficients(a1 - half_width_near(permanent_stick_load() - P1), 2)
         eq.holds(
             _reduced(same.subs(eta, 0) - exact_k[2]),
@@ -530,15 +561,20 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
             "-(1 - lam^2/mu^2)(a'' + a'^2/a) dP^2/8 of generic_law_comparison",
         )
         hertz = _hertz_tilted_width_series()
-        hertz_law = {d2a_dP2: sympy.diff(hertz_half_width(), P, 2),
-                     da_dP: sympy.diff(hertz_half_width(), P), a1: hertz_half_width()}  # fmt: skip
+        hertz_law = {
+            d2a_dP2: sympy.diff(hertz_half_width(), P, 2),
+            da_dP: sympy.diff(hertz_half_width(), P),
+            a1: hertz_half_width(),
+        }
         for k in (1, 2):
             eq.holds(
-                _reduced(sympy.expand(width).coeff(dP, k).subs(other_edge, 1).subs(hertz_law)
-                 - hertz[k].subs(P1, P)),
+                _reduced(
+                    sympy.expand(width).coeff(dP, k).subs(other_edge, 1).subs(hertz_law)
+                    - hertz[k].subs(P1, P)
+                ),
                 how=f"Hertz, both edges forward, with tension: the dP^{k} coefficient is that of "
                 "a1 - a(P_K) + R dsigma/(4 mu E*), the tilted-profile closed form",
-            )  # fmt: skip
+            )
         eq.holds(
             _reduced(coefficients[+1][V2] - same.subs(eta, -eta)),
             how="the left edge (same-way branch) is the right edge with eta -> -eta "
@@ -566,8 +602,10 @@ def derive() -> Derivation:  # noqa: C901 - one block per established result
         )
     error = paper_error_coefficient()
     with d.equation("22-T", "(22) with bulk tension: a spurious dP^2 term") as eq:
-        hertz_error = {k: sympy.factor(error.subs(other_edge, k).subs(d2a_dP2, -da_dP**2 / a1))
-                       for k in (+1, -1)}  # fmt: skip
+        hertz_error = {
+            k: sympy.factor(error.subs(other_edge, k).subs(d2a_dP2, -(da_dP**2) / a1))
+            for k in (+1, -1)
+        }
         eq.holds(
             _reduced(
                 hertz_error[+1]
@@ -748,8 +786,15 @@ def _hertz_pure_tension_extracted_coefficient() -> mpmath.mpf:
     with mpmath.workdps(60):
         p1, mu_, eta_ = mpmath.mpf(100), mpmath.mpf("0.3"), mpmath.mpf("0.06")
         a1_, slope, curvature = _hertz_numbers(p1)
-        values = {mu: mu_, lam: 0, eta: eta_, a1: a1_, da_dP: slope, d2a_dP2: curvature,
-                  other_edge: -1}  # fmt: skip
+        values = {
+            mu: mu_,
+            lam: 0,
+            eta: eta_,
+            a1: a1_,
+            da_dP: slope,
+            d2a_dP2: curvature,
+            other_edge: -1,
+        }
         w1 = _evaluate(sympy.expand(second_order_width()).coeff(dP, 1), values)
         w2 = _evaluate(width_second_coefficient(), values)
         h = mpmath.mpf("1e-15")

@@ -170,9 +170,12 @@ def derive() -> Derivation:
         # P = pi E* a^2 / (4 R), whose pressure is (E*/2R) sqrt(a^2 - x^2).
         modulus, radius = sympy.symbols("E_star R", positive=True)
         x_ = sympy.Symbol("x", positive=True)
-        superposed = sympy.integrate(
-            sympy.pi * modulus * c / (2 * radius) / sympy.sqrt(c**2 - x_**2), (c, x_, a)
-        ) / sympy.pi
+        superposed = (
+            sympy.integrate(
+                sympy.pi * modulus * c / (2 * radius) / sympy.sqrt(c**2 - x_**2), (c, x_, a)
+            )
+            / sympy.pi
+        )
         eq.holds(
             superposed - modulus / (2 * radius) * sympy.sqrt(a**2 - x_**2),
             how="the superposition integral reproduces the Hertz pressure for P = pi E* a^2/4R",
@@ -199,22 +202,26 @@ def derive() -> Derivation:
             how="(20) with dQ = lam dP, dsigma = eta dP, divided by (19)",
             printed=r"L_{II}=\left(\lambda+\frac{\pi\eta a}{4}\right)L_I",
         )
-    paper_22 = (
-        _paper_bracket(-1, a2) * L_I2 * a2 + _paper_bracket(+1, a1) * L_I1 * a1
-    ) / (_paper_bracket(-1, a2) * L_I2 + _paper_bracket(+1, a1) * L_I1)
+    paper_22 = (_paper_bracket(-1, a2) * L_I2 * a2 + _paper_bracket(+1, a1) * L_I1 * a1) / (
+        _paper_bracket(-1, a2) * L_I2 + _paper_bracket(+1, a1) * L_I1
+    )
     printed_22 = (
         r"\frac{\left(1-\frac{\lambda}{\mu}-\frac{\pi a_2}{4}\frac{\eta}{\mu}\right)L_{I,2}a_2"
         r"+\left(1+\frac{\lambda}{\mu}+\frac{\pi a_1}{4}\frac{\eta}{\mu}\right)L_{I,1}a_1}"
         r"{\left(1-\frac{\lambda}{\mu}-\frac{\pi a_2}{4}\frac{\eta}{\mu}\right)L_{I,2}"
         r"+\left(1+\frac{\lambda}{\mu}+\frac{\pi a_1}{4}\frac{\eta}{\mu}\right)L_{I,1}}"
     )
-    for number, title in [("22", "Stick boundary on a proportional path"),
-                          ("50", "Stick boundary (conclusion, repeats (22))")]:
+    for number, title in [
+        ("22", "Stick boundary on a proportional path"),
+        ("50", "Stick boundary (conclusion, repeats (22))"),
+    ]:
         with d.equation(number, title) as eq:
             eq.matches_paper(
-                stick_boundary_proportional(), paper_22,
-                how="(17) with (19) and (21) substituted", printed=printed_22,
-            )  # fmt: skip
+                stick_boundary_proportional(),
+                paper_22,
+                how="(17) with (19) and (21) substituted",
+                printed=printed_22,
+            )
 
     d.emit(
         name="normal_edge_multiplier",

@@ -28,9 +28,15 @@ gap = sympy.Symbol("g", positive=True)  # a1 = b + g, so that b < a1
 #: A Fig. 5-like cycle in exact rationals for the numerical checks of Section 2 and 3.4;
 #: mu L_I2 - L_II2 < 0 puts the consistent b of (17) inside a1, as in Fig. 5.
 EXAMPLE_CYCLE = {
-    mu: "3/10", E_star: "2", a1: "1", a2: "21/20",
-    L_I1: "1", L_I2: "11/10", L_II1: "1/2", L_II2: "11/20",
-}  # fmt: skip
+    mu: "3/10",
+    E_star: "2",
+    a1: "1",
+    a2: "21/20",
+    L_I1: "1",
+    L_I2: "11/10",
+    L_II1: "1/2",
+    L_II2: "11/20",
+}
 
 
 def example_cycle() -> dict[sympy.Symbol, sympy.Rational]:
@@ -101,6 +107,7 @@ def derive() -> Derivation:
         def values() -> dict[str, mpmath.mpf]:
             # Converted at call time, inside the caller's raised working precision.
             return {symbol.name: mpmath.mpf(value.p) / value.q for symbol, value in exact.items()}
+
         numeric_density = sympy.lambdify(x, density.subs(exact), modules="mpmath")
 
         def left_side(fraction):

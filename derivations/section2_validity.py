@@ -121,13 +121,17 @@ def derive() -> Derivation:
         r"\left(\frac{\lambda}{\mu}+\frac{\pi a_1}{4}\frac{\eta}{\mu}-1\right)"
     )
     paper_28 = 1 - dP * da_dP / (2 * a1) * (lam / mu + sympy.pi * a1 / 4 * eta / mu - 1)
-    for number, title in [("28", "First-order slip-zone size"),
-                          ("51", "First-order slip-zone size (conclusion, repeats (28))")]:
+    for number, title in [
+        ("28", "First-order slip-zone size"),
+        ("51", "First-order slip-zone size (conclusion, repeats (28))"),
+    ]:
         with d.equation(number, title) as eq:
             eq.matches_paper(
-                first_order_stick_ratio(), paper_28, printed=printed_28,
+                first_order_stick_ratio(),
+                paper_28,
+                printed=printed_28,
                 how="series of (22) in dP with undefined a(P) and L_I(P); L_I'(P) drops out",
-            )  # fmt: skip
+            )
 
     d.emit(
         name="contact_growth_measure",

@@ -82,13 +82,20 @@ def pressure_at(load: sympy.Expr) -> sympy.Expr:
 # The pressures of any symmetric law at the three loads of (47), for its general form.
 pressure2, pressure1, pressure_K = sympy.symbols("p2 p1 p_K", nonnegative=True)
 PRESSURES = (
-    Argument(pressure2, "Contact pressure p(x, P2) at load state 2, zero outside the contact "
-             "[force/length^2]."),
-    Argument(pressure1, "Contact pressure p(x, P1) at load state 1, zero outside the contact "
-             "[force/length^2]."),
-    Argument(pressure_K, "Contact pressure p(x, P_K) at the load P_K of (33), zero outside its "
-             "contact [force/length^2]."),
-)  # fmt: skip
+    Argument(
+        pressure2,
+        "Contact pressure p(x, P2) at load state 2, zero outside the contact [force/length^2].",
+    ),
+    Argument(
+        pressure1,
+        "Contact pressure p(x, P1) at load state 1, zero outside the contact [force/length^2].",
+    ),
+    Argument(
+        pressure_K,
+        "Contact pressure p(x, P_K) at the load P_K of (33), zero outside its "
+        "contact [force/length^2].",
+    ),
+)
 _pressure = sympy.Function("p")  # the law's pressure p(x, P) at x, as a function of the load
 
 
@@ -292,12 +299,18 @@ def derive() -> Derivation:
     with d.equation("47", "Exact shear-traction difference for any symmetric law") as eq:
         general = general_traction_difference()
         eq.holds(
-            general.subs({pressure2: pressure_at(P1 + dP), pressure1: pressure_at(P1),
-                          pressure_K: pressure_at(P_K)}) - hertz_traction_difference(),
+            general.subs(
+                {
+                    pressure2: pressure_at(P1 + dP),
+                    pressure1: pressure_at(P1),
+                    pressure_K: pressure_at(P_K),
+                }
+            )
+            - hertz_traction_difference(),
             how="the Jaeger-Ciavarella superposition in the law's own pressures; with the "
             "Hertz pressures (48) it is the Hertz (47) checked range by range above",
             derived=general,
-        )  # fmt: skip
+        )
 
     with d.equation("49", "Finite Hilbert transform of sqrt((t - c)(a2 - t))") as eq:
         inside, outside = semicircle_transform()

@@ -137,14 +137,16 @@ def _radial_form(
     radial = -2 * magnitude / sympy.pi * cos_beta / r
     n = (x / r, z / r)
     s_xx, s_zz, s_xz = stresses
-    return sympy.Matrix([s_xx - radial * n[0] ** 2, s_zz - radial * n[1] ** 2,
-                         s_xz - radial * n[0] * n[1]])  # fmt: skip
+    return sympy.Matrix(
+        [s_xx - radial * n[0] ** 2, s_zz - radial * n[1] ** 2, s_xz - radial * n[0] * n[1]]
+    )
 
 
 def _equilibrium(stresses: tuple[sympy.Expr, ...]) -> sympy.Matrix:
     s_xx, s_zz, s_xz = stresses
-    return sympy.Matrix([sympy.diff(s_xx, x) + sympy.diff(s_xz, z),
-                         sympy.diff(s_xz, x) + sympy.diff(s_zz, z)])  # fmt: skip
+    return sympy.Matrix(
+        [sympy.diff(s_xx, x) + sympy.diff(s_xz, z), sympy.diff(s_xz, x) + sympy.diff(s_zz, z)]
+    )
 
 
 def _resultant(direction: tuple[int, int], magnitude: sympy.Expr) -> sympy.Matrix:
@@ -236,8 +238,7 @@ def log_element_integral() -> sympy.Expr:
     """
     positive_u = sympy.Symbol("v", positive=True)
     antiderivative = sympy.integrate(sympy.log(positive_u / ell), positive_u)
-    assert sympy.simplify(sympy.diff(antiderivative, positive_u)
-                          - sympy.log(positive_u / ell)) == 0  # fmt: skip
+    assert sympy.simplify(sympy.diff(antiderivative, positive_u) - sympy.log(positive_u / ell)) == 0
     G = antiderivative.subs(positive_u, sympy.Abs(u)) * sympy.sign(u)
     G = sympy.simplify(G.subs(sympy.sign(u) * sympy.Abs(u), u))
     upper, lower = (k + sympy.Rational(1, 2)) * h, (k - sympy.Rational(1, 2)) * h
@@ -279,35 +280,45 @@ def derive() -> Derivation:
     )
     normal, tangential = flamant_normal(), flamant_tangential()
     with d.equation("F-1", "Flamant's point-force fields") as eq:
-        eq.given("Flamant's radial stress field sigma_rr = -(2F/pi) cos(beta)/r of a point "
-                 "force on a half-plane (Johnson, Contact Mechanics, Sec. 2.2)")  # fmt: skip
+        eq.given(
+            "Flamant's radial stress field sigma_rr = -(2F/pi) cos(beta)/r of a point "
+            "force on a half-plane (Johnson, Contact Mechanics, Sec. 2.2)"
+        )
         for name, stresses, direction, magnitude in (
             ("normal", normal, (0, 1), load),
             ("tangential", tangential, (1, 0), force),
         ):
             residual = _radial_form(stresses, direction, magnitude)
-            eq.holds(sympy.simplify(residual).norm(),
-                     how=f"{name}: the Cartesian components are the radial field "
-                     "sigma_rr n n")  # fmt: skip
-            eq.holds(sympy.Matrix([sympy.cancel(c) for c in _equilibrium(stresses)]).norm(),
-                     how=f"{name}: div sigma = 0")  # fmt: skip
+            eq.holds(
+                sympy.simplify(residual).norm(),
+                how=f"{name}: the Cartesian components are the radial field sigma_rr n n",
+            )
+            eq.holds(
+                sympy.Matrix([sympy.cancel(c) for c in _equilibrium(stresses)]).norm(),
+                how=f"{name}: div sigma = 0",
+            )
             surface = [s.subs(z, 0) for s in stresses[1:]]
             eq.holds(
                 sympy.Matrix(surface).norm(),
                 how=f"{name}: sigma_zz = sigma_xz = 0 on the surface z = 0, x != 0",
             )
             applied = sympy.Matrix([force, 0] if magnitude is force else [0, load])
-            eq.holds((_resultant(direction, magnitude) + applied).norm(),
-                     how=f"{name}: the stresses on a half circle balance the applied "
-                     "force")  # fmt: skip
+            eq.holds(
+                (_resultant(direction, magnitude) + applied).norm(),
+                how=f"{name}: the stresses on a half circle balance the applied force",
+            )
     with d.equation("F-2", "Surface displacement gradients of one half-plane") as eq:
         one = 2 * (1 - nu**2) / (sympy.pi * E)
-        eq.holds(tangential_surface_strain() + one * force / r_pos,
-                 how="tangential force F: du_x/dx = eps_xx = -(2 (1 - nu^2)/(pi E)) F/x "
-                 "(sigma_zz = 0 on the surface, plane strain)")  # fmt: skip
-        eq.holds(normal_surface_slope() + one * load / r_pos,
-                 how="normal force P: du_z/dx = -(2 (1 - nu^2)/(pi E)) P/x, from "
-                 "d^2 u_z/dx^2 = d gamma_xz/dx - d eps_xx/dz at z -> 0")  # fmt: skip
+        eq.holds(
+            tangential_surface_strain() + one * force / r_pos,
+            how="tangential force F: du_x/dx = eps_xx = -(2 (1 - nu^2)/(pi E)) F/x "
+            "(sigma_zz = 0 on the surface, plane strain)",
+        )
+        eq.holds(
+            normal_surface_slope() + one * load / r_pos,
+            how="normal force P: du_z/dx = -(2 (1 - nu^2)/(pi E)) P/x, from "
+            "d^2 u_z/dx^2 = d gamma_xz/dx - d eps_xx/dz at z -> 0",
+        )
     with d.equation("F-3", "Two similar bodies: uncoupled relations in E*") as eq:
         eq.beyond_paper(
             "the gap opening w = u_z1 + u_z2 and the relative slip s = u_x2 - u_x1 of two "
@@ -315,19 +326,25 @@ def derive() -> Derivation:
             "body are equal and cancel",
             derived=relative_slip_slope_kernel(),
         )
-        eq.holds(gap_opening_slope_kernel() + 2 / (sympy.pi * E_star) / (x - t),
-                 how="dw/dx = -(2/(pi E*)) int p(t)/(x - t) dt")  # fmt: skip
-        eq.holds(relative_slip_slope_kernel() - 2 / (sympy.pi * E_star) / (x - t),
-                 how="ds/dx = +(2/(pi E*)) int q(t)/(x - t) dt, q the traction on the upper "
-                 "body")  # fmt: skip
+        eq.holds(
+            gap_opening_slope_kernel() + 2 / (sympy.pi * E_star) / (x - t),
+            how="dw/dx = -(2/(pi E*)) int p(t)/(x - t) dt",
+        )
+        eq.holds(
+            relative_slip_slope_kernel() - 2 / (sympy.pi * E_star) / (x - t),
+            how="ds/dx = +(2/(pi E*)) int q(t)/(x - t) dt, q the traction on the upper body",
+        )
         local = (1 - 2 * nu) * (1 + nu) / E  # Johnson (2.25): -local p in u_x', +local q in u_z'
         p_, q_ = sympy.symbols("p q", real=True)
-        eq.holds((-local * p_) - (-local * p_),
-                 how="du_x/dx of both bodies has the same -(1 - 2nu)(1 + nu) p/E: none in "
-                 "ds/dx")  # fmt: skip
-        eq.holds((local * q_) + (local * -q_),
-                 how="du_z/dx gets +(1 - 2nu)(1 + nu) q/E in body 1 and the opposite in body "
-                 "2: none in dw/dx")  # fmt: skip
+        eq.holds(
+            (-local * p_) - (-local * p_),
+            how="du_x/dx of both bodies has the same -(1 - 2nu)(1 + nu) p/E: none in ds/dx",
+        )
+        eq.holds(
+            (local * q_) + (local * -q_),
+            how="du_z/dx gets +(1 - 2nu)(1 + nu) q/E in body 1 and the opposite in body "
+            "2: none in dw/dx",
+        )
         # E* of the paper: (29) a^2 = 4 P R/(pi E*) follows from (1/pi) int p/(x - t) dt =
         # (E*/2) h'(x) with h = x^2/(2R) and p = p0 sqrt(1 - x^2/a^2); checked by the tests.
     with d.equation("F-4", "Relative surface strain of a differential bulk tension") as eq:
@@ -336,15 +353,19 @@ def derive() -> Derivation:
             "sigma_i/E, so ds/dx gains (sigma_2 - sigma_1)/(2 E*)",
             derived=tension_strain(),
         )
-        eq.holds(tension_strain() - sigma / (2 * E_star),
-                 how="ds/dx = sigma/(2 E*), sigma = sigma_2 - sigma_1")  # fmt: skip
+        eq.holds(
+            tension_strain() - sigma / (2 * E_star),
+            how="ds/dx = sigma/(2 E*), sigma = sigma_2 - sigma_1",
+        )
         # Its sign and size under full stick: (1/pi) int q/(x - t) = -sigma/4, so on a Hertz
         # contact q = -sigma x/(4 sqrt(a^2 - x^2)) + ..., and K_II gains +(sigma/4) sqrt(a/2).
         hilbert = sympy.Symbol("H", real=True)  # (1/pi) int q/(x - t) dt
         stick = sympy.solve(sympy.Eq(2 / E_star * hilbert + tension_strain(), 0), hilbert)[0]
-        eq.holds(stick + sigma / 4,
-                 how="full stick, ds/dx = 0: (1/pi) int q/(x - t) dt = -sigma/4, the tension "
-                 "term of (38) (K_II = Q/(pi sqrt(2a)) + (sigma/4) sqrt(a/2))")  # fmt: skip
+        eq.holds(
+            stick + sigma / 4,
+            how="full stick, ds/dx = 0: (1/pi) int q/(x - t) dt = -sigma/4, the tension "
+            "term of (38) (K_II = Q/(pi sqrt(2a)) + (sigma/4) sqrt(a/2))",
+        )
     with d.equation("F-5", "Element influence coefficients") as eq:
         integral = log_element_integral()
         eq.beyond_paper(
@@ -355,23 +376,33 @@ def derive() -> Derivation:
         half, beyond = sympy.Rational(1, 2), sympy.Symbol("k0", positive=True) + 1
         eq.holds(
             sympy.diff(integral.subs(k, (x - t) / h), x).subs({x: t + beyond * h})
-            - sympy.log((beyond + half) * h / ell) + sympy.log((beyond - half) * h / ell),
+            - sympy.log((beyond + half) * h / ell)
+            + sympy.log((beyond - half) * h / ell),
             how="d/dx of the element integral is ln|u|/ell between the element's ends "
             "(k > 1/2): the integral of the point-force slope 1/(x - t) over the element",
-        )  # fmt: skip
+        )
         function = sympy.lambdify((k, h, ell), integral, "mpmath")
         eq.matches_numerically(
             lambda k_value, h_value, ell_value: function(
-                k_value, mpmath.mpf(h_value), mpmath.mpf(ell_value)),
+                k_value, mpmath.mpf(h_value), mpmath.mpf(ell_value)
+            ),
             _mp_element_integral,
-            [{"k_value": k_, "h_value": h_, "ell_value": l_}
-             for k_, h_, l_ in [(0, "0.01", "2"), (1, "0.01", "2"), (-1, "0.01", "2"),
-                                (7, "0.3", "1.5"), (-250, "0.001", "4"), (3999, "0.0005", "8")]],
+            [
+                {"k_value": k_, "h_value": h_, "ell_value": l_}
+                for k_, h_, l_ in [
+                    (0, "0.01", "2"),
+                    (1, "0.01", "2"),
+                    (-1, "0.01", "2"),
+                    (7, "0.3", "1.5"),
+                    (-250, "0.001", "4"),
+                    (3999, "0.0005", "8"),
+                ]
+            ],
             how="mpmath quadrature of ln(|u|/ell) over the element, including the singular "
             "element k = 0",
             digits=25,
             symbolic=True,
-        )  # fmt: skip
+        )
     d.emit(
         name="gap_opening_influence",
         args=(OFFSET, WIDTH, REFERENCE, MODULUS),

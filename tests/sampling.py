@@ -83,7 +83,7 @@ def draw(samples: int = SAMPLES, seed: int = SEED, **ranges: Range) -> dict[str,
                 np.where(corner_bits[:, j] == 1, ranges[name].high, ranges[name].low),
                 ranges[name].sample(rng, samples),
             ]
-        )  # fmt: skip
+        )
         for j, name in enumerate(names)
     }
 
@@ -108,9 +108,10 @@ def assert_within(
     excess over its allowance) with every input at that sample.
     """
     actual, expected, atol = np.broadcast_arrays(
-        np.asarray(actual, dtype=float), np.asarray(expected, dtype=float),
+        np.asarray(actual, dtype=float),
+        np.asarray(expected, dtype=float),
         np.asarray(atol, dtype=float),
-    )  # fmt: skip
+    )
     if actual.size == 0:
         raise AssertionError(f"{what}: no samples to check")
     allowance = atol + rtol * np.abs(expected)

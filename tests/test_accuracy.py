@@ -127,9 +127,13 @@ def test_slip_zone_widths_keep_1e_12_relative_at_dP_over_P1_of_1e_12():
     # random draw can still land near the cancellation (kappa > WELL_CONDITIONED): those are
     # the conditioning tests' business, not this one's.
     widths = harness.run(
-        SAMPLES, SEED, select="slip_zone_width", relative_load_change=1e-12,
-        near_cancellation_share=0.0, every_condition=False,
-    )  # fmt: skip
+        SAMPLES,
+        SEED,
+        select="slip_zone_width",
+        relative_load_change=1e-12,
+        near_cancellation_share=0.0,
+        every_condition=False,
+    )
     checked = {
         r.quantity.name: max(
             (e for e, k in zip(r.errors, r.conditions, strict=True) if not k > WELL_CONDITIONED),

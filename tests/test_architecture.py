@@ -57,8 +57,7 @@ def _is_module(name: str) -> bool:
     return (SOURCE / relative).with_suffix(".py").is_file() or (SOURCE / relative).is_dir()
 
 
-GRAPH = {_module_name(path): _imports(path) - {_module_name(path)}
-         for path in SOURCE.rglob("*.py")}  # fmt: skip
+GRAPH = {_module_name(path): _imports(path) - {_module_name(path)} for path in SOURCE.rglob("*.py")}
 
 
 def _top(module: str) -> str:
@@ -81,9 +80,13 @@ def test_every_module_has_a_layer():
 
 
 def test_no_module_imports_from_a_higher_layer():
-    upward = [(module, imported) for module, imports in GRAPH.items() if module != "asymslip"
-              for imported in imports
-              if imported != "asymslip" and _layer(imported) > _layer(module)]  # fmt: skip
+    upward = [
+        (module, imported)
+        for module, imports in GRAPH.items()
+        if module != "asymslip"
+        for imported in imports
+        if imported != "asymslip" and _layer(imported) > _layer(module)
+    ]
     assert upward == []
 
 
@@ -95,7 +98,7 @@ def test_modules_import_each_other_without_a_circle():
         state[module] = 1
         for imported in sorted(GRAPH.get(module, ())):
             if state.get(imported) == 1:
-                circles.append([*trail[trail.index(imported):], imported])
+                circles.append([*trail[trail.index(imported) :], imported])
             elif imported not in state:
                 visit(imported, [*trail, imported])
         state[module] = 2
@@ -107,18 +110,29 @@ def test_modules_import_each_other_without_a_circle():
 
 
 def test_the_code_generator_never_imports_the_api():
-    allowed = {"asymslip", "asymslip.errors", "asymslip.expressions", "asymslip.files",
-               "asymslip.files.atomic"}  # fmt: skip
-    leaks = {(module, imported) for module, imports in GRAPH.items()
-             if _top(module) == "codegen" for imported in imports
-             if _top(imported) != "codegen" and imported not in allowed}  # fmt: skip
+    allowed = {
+        "asymslip",
+        "asymslip.errors",
+        "asymslip.expressions",
+        "asymslip.files",
+        "asymslip.files.atomic",
+    }
+    leaks = {
+        (module, imported)
+        for module, imports in GRAPH.items()
+        if _top(module) == "codegen"
+        for imported in imports
+        if _top(imported) != "codegen" and imported not in allowed
+    }
     assert leaks == set()
 
 
 def test_only_the_command_line_reaches_the_code_generator():
-    users = {module for module, imports in GRAPH.items()
-             if any(_top(imported) == "codegen" for imported in imports)
-             and _top(module) != "codegen"}  # fmt: skip
+    users = {
+        module
+        for module, imports in GRAPH.items()
+        if any(_top(imported) == "codegen" for imported in imports) and _top(module) != "codegen"
+    }
     assert {_top(module) for module in users} <= {"cli"}
 
 
@@ -126,15 +140,25 @@ def test_only_the_command_line_reaches_the_code_generator():
 def test_the_solver_computes_without_the_asymptotes(folder):
     if not (SOURCE / folder).is_dir():
         pytest.skip(f"no {folder} package yet")
-    asymptotes = {"asymslip.slip_zones", "asymslip.tractions", "asymslip.edge_estimates",
-                  "asymslip.single_cycle"}
+    asymptotes = {
+        "asymslip.slip_zones",
+        "asymslip.tractions",
+        "asymslip.edge_estimates",
+        "asymslip.single_cycle",
+    }
     comparing = {f"asymslip.{folder}.compare", f"asymslip.{folder}.error_map"}
-    computing = {module: imports & asymptotes for module, imports in GRAPH.items()
-                 if _top(module) == folder and module not in comparing}
+    computing = {
+        module: imports & asymptotes
+        for module, imports in GRAPH.items()
+        if _top(module) == folder and module not in comparing
+    }
     assert {module: used for module, used in computing.items() if used} == {}
 
 
 def test_no_source_file_edits_sys_path():
-    edits = [path.name for path in SOURCE.rglob("*.py")
-             if "sys.path.insert" in path.read_text() or "sys.path.append" in path.read_text()]
+    edits = [
+        path.name
+        for path in SOURCE.rglob("*.py")
+        if "sys.path.insert" in path.read_text() or "sys.path.append" in path.read_text()
+    ]
     assert edits == []

@@ -81,8 +81,9 @@ def cycle(**changes: str) -> tuple[str, ...]:
     options = dict(FIG5)
     for key, value in changes.items():
         options[f"--{key}"] = value
-    return tuple(item for key, value in options.items() if value is not None
-                 for item in (key, value))  # fmt: skip
+    return tuple(
+        item for key, value in options.items() if value is not None for item in (key, value)
+    )
 
 
 def hertz(**changes: str) -> tuple[str, ...]:
@@ -220,13 +221,27 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
     (folder / "folder.py").mkdir()
     # The law modules of `asymslip derive` that the table uses (their derivation is a case of
     # its own below too).
-    status, out, err = run(["calibrate", str(folder / "traces.csv"), "--out",
-                            str(folder / "calibration.json")])  # fmt: skip
+    status, out, err = run(
+        ["calibrate", str(folder / "traces.csv"), "--out", str(folder / "calibration.json")]
+    )
     assert status == 0, err
-    for name, formula, params in (("cubic", "E_star*a**2 - k*a**3", "E_star k"),
-                                  ("tanh_law", "k*tanh(a)", "k")):  # fmt: skip
-        status, out, err = run(["derive", "--P-of-a", formula, "--params", params, "--name",
-                                name, "--out", str(folder / f"{name}.py")])  # fmt: skip
+    for name, formula, params in (
+        ("cubic", "E_star*a**2 - k*a**3", "E_star k"),
+        ("tanh_law", "k*tanh(a)", "k"),
+    ):
+        status, out, err = run(
+            [
+                "derive",
+                "--P-of-a",
+                formula,
+                "--params",
+                params,
+                "--name",
+                name,
+                "--out",
+                str(folder / f"{name}.py"),
+            ]
+        )
         assert status == 0, err
     return folder
 
@@ -274,9 +289,18 @@ def names_option(line: str, option: str) -> bool:
 
 
 # --- the checks of valid output -----------------------------------------------------------------
-def edge_is_sane(result: dict, P1: float, P2: float, Q1: float, Q2: float, s1: float = 0.0,
-                 s2: float = 0.0, R: float = 1.0, E: float = 1.0,
-                 rel: float = 1e-12) -> None:  # fmt: skip
+def edge_is_sane(
+    result: dict,
+    P1: float,
+    P2: float,
+    Q1: float,
+    Q2: float,
+    s1: float = 0.0,
+    s2: float = 0.0,
+    R: float = 1.0,
+    E: float = 1.0,
+    rel: float = 1e-12,
+) -> None:
     """What every edge of every valid Hertz result must satisfy: the contact law (29), the
     slopes (18), a stick boundary inside the contact, every number finite or null."""
     assert result["a1"] == pytest.approx(hertz_a(P1, R, E), rel=rel)
@@ -287,16 +311,28 @@ def edge_is_sane(result: dict, P1: float, P2: float, Q1: float, Q2: float, s1: f
         value = result[key]
         assert value is None or 0 < value <= result["a2"] * (1 + 1e-15), (key, value)
     assert 0 <= result["slip_zone_width"] <= result["a1"]
-    assert result["slip_zone_width"] == pytest.approx(result["a1"] - result["b"], rel=1e-9,
-                                                      abs=1e-12 * result["a1"])  # fmt: skip
+    assert result["slip_zone_width"] == pytest.approx(
+        result["a1"] - result["b"], rel=1e-9, abs=1e-12 * result["a1"]
+    )
     for value in result["validity"].values():
         assert math.isfinite(value) and value >= 0
 
 
-def slip_zone_check(P1: float, Q1: float, P2: float, Q2: float, mu: float, s1: float = 0.0,
-                    s2: float = 0.0, *, slips: bool | None = None, R: float = 1.0,
-                    E: float = 1.0, warns: str | None = None,
-                    rel: float = 1e-12) -> Callable[..., None]:  # fmt: skip
+def slip_zone_check(
+    P1: float,
+    Q1: float,
+    P2: float,
+    Q2: float,
+    mu: float,
+    s1: float = 0.0,
+    s2: float = 0.0,
+    *,
+    slips: bool | None = None,
+    R: float = 1.0,
+    E: float = 1.0,
+    warns: str | None = None,
+    rel: float = 1e-12,
+) -> Callable[..., None]:
     def check(result: dict, folder: Path) -> None:
         for edge in (result, result["left"]):
             edge_is_sane(edge, P1, P2, Q1, Q2, s1, s2, R, E, rel)
@@ -308,11 +344,11 @@ def slip_zone_check(P1: float, Q1: float, P2: float, Q2: float, mu: float, s1: f
         if not right_slips:  # |lam| <= mu, eta = 0: no slip at the right edge, b = a1 exactly
             assert result["slip_direction"] == 0 and result["b"] == result["a1"]
         elif eta == 0 and R == E == 1 and lam > 0 and result["b_paper"] is not None:
-            assert result["b_paper"] == pytest.approx(stick_boundary_22(mu, lam, 0.0, P1, P2),
-                                                      rel=1e-9)  # fmt: skip
+            assert result["b_paper"] == pytest.approx(
+                stick_boundary_22(mu, lam, 0.0, P1, P2), rel=1e-9
+            )
         if warns is not None:
-            assert any(re.search(warns, text) for text in result["warnings"]), \
-                result["warnings"]  # fmt: skip
+            assert any(re.search(warns, text) for text in result["warnings"]), result["warnings"]
 
     return check
 
@@ -343,8 +379,13 @@ def number_option_cases() -> list[Bad]:
     number where it must be positive."""
     cases: list[Bad] = []
 
-    def add(command: str, argv: tuple[str, ...], option: str, positive: str | None,
-            swap: Callable[[str], tuple[str, ...]]) -> None:  # fmt: skip
+    def add(
+        command: str,
+        argv: tuple[str, ...],
+        option: str,
+        positive: str | None,
+        swap: Callable[[str], tuple[str, ...]],
+    ) -> None:
         cases.append(Bad(f"{command} {option} text", swap("abc"), option, TEXT))
         for value in ("nan", "inf", "-inf"):
             cases.append(Bad(f"{command} {option} {value}", swap(value), option, FINITE))
@@ -352,54 +393,141 @@ def number_option_cases() -> list[Bad]:
             for value in ("0", "-1"):
                 cases.append(Bad(f"{command} {option} {value}", swap(value), option, positive))
 
-    for key, positive in (("P1", POSITIVE), ("Q1", None), ("P2", POSITIVE), ("Q2", None),
-                          ("sigma1", None), ("sigma2", None), ("mu", POSITIVE), ("R", POSITIVE),
-                          ("E_star", POSITIVE)):  # fmt: skip
+    for key, positive in (
+        ("P1", POSITIVE),
+        ("Q1", None),
+        ("P2", POSITIVE),
+        ("Q2", None),
+        ("sigma1", None),
+        ("sigma2", None),
+        ("mu", POSITIVE),
+        ("R", POSITIVE),
+        ("E_star", POSITIVE),
+    ):
         option = "--E-star" if key == "E_star" else f"--{key}"
-        add("slip-zone", (), option, positive,
-            lambda v, key=key: ("slip-zone", *hertz(**{key: v})))  # fmt: skip
-    for option, positive, base in (("--flat-half-width", None, FLAT),
-                                   ("--R", POSITIVE, FLAT), ("--A", POSITIVE, POWER),
-                                   ("--n", r"must be >= 1", POWER),
-                                   ("--E-star", POSITIVE, POWER)):  # fmt: skip
+        add("slip-zone", (), option, positive, lambda v, key=key: ("slip-zone", *hertz(**{key: v})))
+    for option, positive, base in (
+        ("--flat-half-width", None, FLAT),
+        ("--R", POSITIVE, FLAT),
+        ("--A", POSITIVE, POWER),
+        ("--n", r"must be >= 1", POWER),
+        ("--E-star", POSITIVE, POWER),
+    ):
         law = base[1]
-        add(f"slip-zone --law {law}", (), option, positive,
-            lambda v, o=option, b=base: ("slip-zone", *_swap(b, o, v), *cycle()))  # fmt: skip
-    cases.append(Bad("slip-zone --flat-half-width -1",
-                     ("slip-zone", *_swap(FLAT, "--flat-half-width", "-1"), *cycle()),
-                     "--flat-half-width", r"must be >= 0"))  # fmt: skip
-    cases.append(Bad("slip-zone --n 0.5 (not an incomplete contact)",
-                     ("slip-zone", *_swap(POWER, "--n", "0.5"), *cycle()), "--n",
-                     r"must be >= 1"))  # fmt: skip
+        add(
+            f"slip-zone --law {law}",
+            (),
+            option,
+            positive,
+            lambda v, o=option, b=base: ("slip-zone", *_swap(b, o, v), *cycle()),
+        )
+    cases.append(
+        Bad(
+            "slip-zone --flat-half-width -1",
+            ("slip-zone", *_swap(FLAT, "--flat-half-width", "-1"), *cycle()),
+            "--flat-half-width",
+            r"must be >= 0",
+        )
+    )
+    cases.append(
+        Bad(
+            "slip-zone --n 0.5 (not an incomplete contact)",
+            ("slip-zone", *_swap(POWER, "--n", "0.5"), *cycle()),
+            "--n",
+            r"must be >= 1",
+        )
+    )
     # traction, slip: the positions, and a cycle option each
     for command in ("traction", "slip"):
         add(command, (), "--x", None, lambda v, c=command: (c, *hertz(), "--x", "0.1", v))
-        add(command, (), "--mu", POSITIVE,
-            lambda v, c=command: (c, *hertz(mu=v), "--x", "11"))  # fmt: skip
+        add(command, (), "--mu", POSITIVE, lambda v, c=command: (c, *hertz(mu=v), "--x", "11"))
     # sweep: the default friction coefficient and the chunk size
-    add("sweep", (), "--mu", POSITIVE,
-        lambda v: ("sweep", "{d}/cases.csv", *HERTZ, "--mu", v, "--out", "{d}/o.csv"))
-    for value, rule in (("abc", r"'abc' is not a whole number"), ("1.5", r"not a whole number"),
-                        ("0", r"must be >= 1"), ("-1", r"must be >= 1")):  # fmt: skip
-        cases.append(Bad(f"sweep --chunk-rows {value}",
-                         ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--chunk-rows", value,
-                          "--out", "{d}/o.csv"), "--chunk-rows", rule))  # fmt: skip
+    add(
+        "sweep",
+        (),
+        "--mu",
+        POSITIVE,
+        lambda v: ("sweep", "{d}/cases.csv", *HERTZ, "--mu", v, "--out", "{d}/o.csv"),
+    )
+    for value, rule in (
+        ("abc", r"'abc' is not a whole number"),
+        ("1.5", r"not a whole number"),
+        ("0", r"must be >= 1"),
+        ("-1", r"must be >= 1"),
+    ):
+        cases.append(
+            Bad(
+                f"sweep --chunk-rows {value}",
+                (
+                    "sweep",
+                    "{d}/cases.csv",
+                    *HERTZ,
+                    "--mu",
+                    "0.1",
+                    "--chunk-rows",
+                    value,
+                    "--out",
+                    "{d}/o.csv",
+                ),
+                "--chunk-rows",
+                rule,
+            )
+        )
     # derive: the check points and check values
-    derive = ("derive", "--P-of-a", "E_star*a**2 - k*a**3", "--params", "E_star k", "--name",
-              "cubic", "--out", "{d}/checked.py", "--check", "E_star=1")  # fmt: skip
-    add("derive", (), "--check-a", r"must be > 0",
-        lambda v: (*derive, "--check", "k=0.1", "--check-a", v))
-    for value, rule in (("abc", r"not a number"), ("nan", FINITE), ("inf", FINITE),
-                        ("-inf", FINITE), ("0", POSITIVE), ("-1", POSITIVE)):  # fmt: skip
-        cases.append(Bad(f"derive --check k={value}",
-                         (*derive, "--check", f"k={value}", "--check-a", "1"), "--check", rule))
+    derive = (
+        "derive",
+        "--P-of-a",
+        "E_star*a**2 - k*a**3",
+        "--params",
+        "E_star k",
+        "--name",
+        "cubic",
+        "--out",
+        "{d}/checked.py",
+        "--check",
+        "E_star=1",
+    )
+    add(
+        "derive",
+        (),
+        "--check-a",
+        r"must be > 0",
+        lambda v: (*derive, "--check", "k=0.1", "--check-a", v),
+    )
+    for value, rule in (
+        ("abc", r"not a number"),
+        ("nan", FINITE),
+        ("inf", FINITE),
+        ("-inf", FINITE),
+        ("0", POSITIVE),
+        ("-1", POSITIVE),
+    ):
+        cases.append(
+            Bad(
+                f"derive --check k={value}",
+                (*derive, "--check", f"k={value}", "--check-a", "1"),
+                "--check",
+                rule,
+            )
+        )
     # module law: a parameter's value
     module = ("--law", "module", "--module", "{d}/tanh_law.py")
-    for value, rule in (("abc", r"not a number"), ("nan", FINITE), ("inf", FINITE),
-                        ("-inf", FINITE), ("0", POSITIVE), ("-1", POSITIVE)):  # fmt: skip
-        cases.append(Bad(f"module law --param k={value}",
-                         ("slip-zone", *module, "--param", f"k={value}", *cycle()), "--param",
-                         rule))  # fmt: skip
+    for value, rule in (
+        ("abc", r"not a number"),
+        ("nan", FINITE),
+        ("inf", FINITE),
+        ("-inf", FINITE),
+        ("0", POSITIVE),
+        ("-1", POSITIVE),
+    ):
+        cases.append(
+            Bad(
+                f"module law --param k={value}",
+                ("slip-zone", *module, "--param", f"k={value}", *cycle()),
+                "--param",
+                rule,
+            )
+        )
     return cases
 
 
@@ -411,58 +539,137 @@ def physics_cases() -> list[Bad]:
     return [
         Bad("P2 == P1", ("slip-zone", *hertz(P2="100")), "--P2", r"must exceed P1"),
         Bad("P2 < P1", ("slip-zone", *hertz(P2="99")), "--P2", r"must exceed P1.*swap"),
-        Bad("gross sliding at state 1", ("slip-zone", *hertz(Q1="900")), "--Q1",
-            r"\|Q1\| = 900 must be < mu P1 = 10: .*gross sliding"),
-        Bad("gross sliding at state 2", ("slip-zone", *hertz(Q2="11")), "--Q2",
-            r"\|Q2\| = 11 must be < mu P2 = 10.5: .*gross sliding"),
-        Bad("--Q1 -1e2 with mu 0.1 is gross sliding", ("slip-zone", *hertz(Q1="-1e2")), "--Q1",
-            r"\|Q1\| = 100 must be < mu P1 = 10"),
-        Bad("--P1 1,5 (decimal comma)", ("slip-zone", *hertz(P1="1,5")), "--P1",
-            r"'1,5' is not a number"),
-        Bad("gross sliding right at the limit |Q1| = mu P1", ("slip-zone", *hertz(Q1="-10")),
-            "--Q1", r"must be < mu P1 = 10"),
-        Bad("mu = 1e-300 slides at state 2", ("slip-zone", *hertz(mu="1e-300")), "--Q2",
-            r"gross sliding"),
-        Bad("--Q1=1e308 --Q2=-1e308 overflows", ("slip-zone", *HERTZ, *cycle(Q1=None, Q2=None),
-                                                  "--Q1=1e308", "--Q2=-1e308"),
-            "--Q2", r"overflows double precision"),
-        Bad("--P2 1.7e308 overflows the law", ("slip-zone", *hertz(P2="1.7e308")), "--P2",
-            r"non-finite contact half-width.*overflow"),
-        Bad("bulk tension that overflows the denominator of (17)",
-            ("slip-zone", *hertz(R="1e300", P1="1e-300", sigma2="1.7e308")), "--mu",
-            r"is not positive \(a negative number beyond double precision\)"),
-        Bad("power law: A = 1e300 overflows", ("slip-zone", *_swap(POWER, "--A", "1e300"),
-                                               *cycle()), "--P1", r"overflow in double precision"),
-        Bad("power law: E* = 1e300 overflows", ("slip-zone", *_swap(POWER, "--E-star", "1e300"),
-                                                *cycle()), "--P1", r"overflow in double precision"),
-        Bad("power law: n = 1.7e308", ("slip-zone", *_swap(POWER, "--n", "1.7e308"), *cycle()),
-            "--n", r"too large: the factor K\(n\).*overflows"),
-        Bad("zero denominator of (17) (bulk tension)",
-            ("slip-zone", *hertz(Q2="0", sigma2=repr(eta_zero * (P2 - P1)))), "--mu",
-            r"denominator of \(17\).*not positive"),
-        Bad("stick boundary beyond the contact (bulk tension)",
-            ("slip-zone", *hertz(P2="101", Q2="-9.999", sigma2="-1.25")), "--sigma2",
-            r"left edge the stick boundary b = 11\.43.* lies outside the contact \(0, a2\]"),
-        Bad("traction at the edge x = a2", ("traction", *hertz(), "--x", a2), "--x",
-            r"must be < a2"),
-        Bad("traction beyond the edge", ("traction", *hertz(), "--x", "0", "11.6"), "--x",
-            r"must be < a2 = 11\.56.*element 1"),
-        Bad("traction beyond the far edge", ("traction", *hertz(), "--x", "-11.6"), "--x",
-            r"must be > -a2"),
-        Bad("traction at the left edge x = -a2", ("traction", *hertz(), "--edge", "left", "--x",
-                                                  "-" + a2), "--x", r"must be > -a2"),
-        Bad("slip with E* = 5e-324 (1/E* overflows)", ("slip", *hertz(E_star="5e-324"), "--x",
-                                                          "0", "11"),
-            "--E-star", r"is too small: the slip displacement scales as 1/E\*"),
+        Bad(
+            "gross sliding at state 1",
+            ("slip-zone", *hertz(Q1="900")),
+            "--Q1",
+            r"\|Q1\| = 900 must be < mu P1 = 10: .*gross sliding",
+        ),
+        Bad(
+            "gross sliding at state 2",
+            ("slip-zone", *hertz(Q2="11")),
+            "--Q2",
+            r"\|Q2\| = 11 must be < mu P2 = 10.5: .*gross sliding",
+        ),
+        Bad(
+            "--Q1 -1e2 with mu 0.1 is gross sliding",
+            ("slip-zone", *hertz(Q1="-1e2")),
+            "--Q1",
+            r"\|Q1\| = 100 must be < mu P1 = 10",
+        ),
+        Bad(
+            "--P1 1,5 (decimal comma)",
+            ("slip-zone", *hertz(P1="1,5")),
+            "--P1",
+            r"'1,5' is not a number",
+        ),
+        Bad(
+            "gross sliding right at the limit |Q1| = mu P1",
+            ("slip-zone", *hertz(Q1="-10")),
+            "--Q1",
+            r"must be < mu P1 = 10",
+        ),
+        Bad(
+            "mu = 1e-300 slides at state 2",
+            ("slip-zone", *hertz(mu="1e-300")),
+            "--Q2",
+            r"gross sliding",
+        ),
+        Bad(
+            "--Q1=1e308 --Q2=-1e308 overflows",
+            ("slip-zone", *HERTZ, *cycle(Q1=None, Q2=None), "--Q1=1e308", "--Q2=-1e308"),
+            "--Q2",
+            r"overflows double precision",
+        ),
+        Bad(
+            "--P2 1.7e308 overflows the law",
+            ("slip-zone", *hertz(P2="1.7e308")),
+            "--P2",
+            r"non-finite contact half-width.*overflow",
+        ),
+        Bad(
+            "bulk tension that overflows the denominator of (17)",
+            ("slip-zone", *hertz(R="1e300", P1="1e-300", sigma2="1.7e308")),
+            "--mu",
+            r"is not positive \(a negative number beyond double precision\)",
+        ),
+        Bad(
+            "power law: A = 1e300 overflows",
+            ("slip-zone", *_swap(POWER, "--A", "1e300"), *cycle()),
+            "--P1",
+            r"overflow in double precision",
+        ),
+        Bad(
+            "power law: E* = 1e300 overflows",
+            ("slip-zone", *_swap(POWER, "--E-star", "1e300"), *cycle()),
+            "--P1",
+            r"overflow in double precision",
+        ),
+        Bad(
+            "power law: n = 1.7e308",
+            ("slip-zone", *_swap(POWER, "--n", "1.7e308"), *cycle()),
+            "--n",
+            r"too large: the factor K\(n\).*overflows",
+        ),
+        Bad(
+            "zero denominator of (17) (bulk tension)",
+            ("slip-zone", *hertz(Q2="0", sigma2=repr(eta_zero * (P2 - P1)))),
+            "--mu",
+            r"denominator of \(17\).*not positive",
+        ),
+        Bad(
+            "stick boundary beyond the contact (bulk tension)",
+            ("slip-zone", *hertz(P2="101", Q2="-9.999", sigma2="-1.25")),
+            "--sigma2",
+            r"left edge the stick boundary b = 11\.43.* lies outside the contact \(0, a2\]",
+        ),
+        Bad(
+            "traction at the edge x = a2", ("traction", *hertz(), "--x", a2), "--x", r"must be < a2"
+        ),
+        Bad(
+            "traction beyond the edge",
+            ("traction", *hertz(), "--x", "0", "11.6"),
+            "--x",
+            r"must be < a2 = 11\.56.*element 1",
+        ),
+        Bad(
+            "traction beyond the far edge",
+            ("traction", *hertz(), "--x", "-11.6"),
+            "--x",
+            r"must be > -a2",
+        ),
+        Bad(
+            "traction at the left edge x = -a2",
+            ("traction", *hertz(), "--edge", "left", "--x", "-" + a2),
+            "--x",
+            r"must be > -a2",
+        ),
+        Bad(
+            "slip with E* = 5e-324 (1/E* overflows)",
+            ("slip", *hertz(E_star="5e-324"), "--x", "0", "11"),
+            "--E-star",
+            r"is too small: the slip displacement scales as 1/E\*",
+        ),
         Bad("slip beyond the edge", ("slip", *hertz(), "--x", "12"), "--x", r"must be < a2"),
-        Bad("traction: exact b with bulk tension", ("traction", *hertz(sigma2="0.01"), "--x", "11",
-                                                    "--b", "exact"), "--b", r"does not exist"),
-        Bad("traction: an edge that does not slip", ("traction", *hertz(Q2="0.4"), "--x", "11"),
-            "--Q2", r"right edge does not slip"),
-        Bad("slip: table law without --E-star", ("slip", "--law", "table", "--table",
-                                                 "{d}/hertz.csv", *cycle(), "--x", "11"),
-            "--E-star", r"required for the slip displacement"),
-    ]  # fmt: skip
+        Bad(
+            "traction: exact b with bulk tension",
+            ("traction", *hertz(sigma2="0.01"), "--x", "11", "--b", "exact"),
+            "--b",
+            r"does not exist",
+        ),
+        Bad(
+            "traction: an edge that does not slip",
+            ("traction", *hertz(Q2="0.4"), "--x", "11"),
+            "--Q2",
+            r"right edge does not slip",
+        ),
+        Bad(
+            "slip: table law without --E-star",
+            ("slip", "--law", "table", "--table", "{d}/hertz.csv", *cycle(), "--x", "11"),
+            "--E-star",
+            r"required for the slip displacement",
+        ),
+    ]
 
 
 def law_cases() -> list[Bad]:
@@ -470,152 +677,368 @@ def law_cases() -> list[Bad]:
     table = ("slip-zone", "--law", "table", "--table")
     module = ("slip-zone", "--law", "module", "--module")
     cases = [
-        Bad("unknown law", ("slip-zone", "--law", "cube", *cycle()), "--law",
-            r"unknown contact law; choose one of hertz"),
-        Bad("hertz without --R", ("slip-zone", "--law", "hertz", "--E-star", "1", *cycle()),
-            "--R", r"is required with --law hertz"),
-        Bad("hertz without --E-star", ("slip-zone", "--law", "hertz", "--R", "1", *cycle()),
-            "--E-star", r"is required with --law hertz"),
-        Bad("flat-rounded without --flat-half-width",
+        Bad(
+            "unknown law",
+            ("slip-zone", "--law", "cube", *cycle()),
+            "--law",
+            r"unknown contact law; choose one of hertz",
+        ),
+        Bad(
+            "hertz without --R",
+            ("slip-zone", "--law", "hertz", "--E-star", "1", *cycle()),
+            "--R",
+            r"is required with --law hertz",
+        ),
+        Bad(
+            "hertz without --E-star",
+            ("slip-zone", "--law", "hertz", "--R", "1", *cycle()),
+            "--E-star",
+            r"is required with --law hertz",
+        ),
+        Bad(
+            "flat-rounded without --flat-half-width",
             ("slip-zone", "--law", "flat-rounded", "--R", "1", "--E-star", "1", *cycle()),
-            "--flat-half-width", r"is required with --law flat-rounded"),
-        Bad("power without --n", ("slip-zone", "--law", "power", "--A", "1", "--E-star", "1",
-                                  *cycle()), "--n", r"is required with --law power"),
-        Bad("power without --A", ("slip-zone", "--law", "power", "--n", "2", "--E-star", "1",
-                                  *cycle()), "--A", r"is required with --law power"),
-        Bad("table without --table", ("slip-zone", "--law", "table", *cycle()), "--table",
-            r"is required with --law table"),
-        Bad("module without --module", ("slip-zone", "--law", "module", *cycle()), "--module",
-            r"is required with --law module"),
+            "--flat-half-width",
+            r"is required with --law flat-rounded",
+        ),
+        Bad(
+            "power without --n",
+            ("slip-zone", "--law", "power", "--A", "1", "--E-star", "1", *cycle()),
+            "--n",
+            r"is required with --law power",
+        ),
+        Bad(
+            "power without --A",
+            ("slip-zone", "--law", "power", "--n", "2", "--E-star", "1", *cycle()),
+            "--A",
+            r"is required with --law power",
+        ),
+        Bad(
+            "table without --table",
+            ("slip-zone", "--law", "table", *cycle()),
+            "--table",
+            r"is required with --law table",
+        ),
+        Bad(
+            "module without --module",
+            ("slip-zone", "--law", "module", *cycle()),
+            "--module",
+            r"is required with --law module",
+        ),
         # table-law files: each error names the file line as an editor shows it (1-based)
-        Bad("table file missing", (*table, "{d}/nowhere.csv", *cycle()), "--table",
-            r"cannot read"),
-        Bad("table file is a folder", (*table, "{d}/a_folder", *cycle()), "--table",
-            r"cannot read"),
-        Bad("table file empty", (*table, "{d}/table_empty.csv", *cycle()), "--table",
-            r"has no header"),
-        Bad("table file only comments", (*table, "{d}/table_comments_only.csv", *cycle()),
-            "--table", r"has no header"),
-        Bad("table file not UTF-8", (*table, "{d}/table_binary.csv", *cycle()), "--table",
-            r"line 2.*UTF-8|UTF-8.*line 2"),
-        Bad("table header without P", (*table, "{d}/table_no_P.csv", *cycle()), "--table",
-            r"line 1: the header has no column P"),
-        Bad("table header without a", (*table, "{d}/table_no_a.csv", *cycle()), "--table",
-            r"line 1: the header has no column a"),
-        Bad("table value not a number", (*table, "{d}/table_text.csv", *cycle()), "--table",
-            r"line 5: a: 'ten' is not a number"),
-        Bad("table row with extra fields", (*table, "{d}/table_fields.csv", *cycle()),
-            "--table", r"line 3: line has 3 fields, the header has 2"),
-        Bad("table value nan", (*table, "{d}/table_nan.csv", *cycle()), "--table",
-            r"must be finite.*line 5"),
-        Bad("table value negative", (*table, "{d}/table_negative.csv", *cycle()), "--table",
-            r"must be > 0 \(line 3\)"),
-        Bad("table not sorted by P", (*table, "{d}/table_unsorted.csv", *cycle()), "--table",
-            r"strictly increasing \(line 6 does not exceed line 5\)"),
-        Bad("table law decreasing", (*table, "{d}/table_decreasing.csv", *cycle()), "--table",
-            r"a: table values must be strictly increasing \(line 4 does not exceed line 3\)"),
-        Bad("table with three points", (*table, "{d}/table_three.csv", *cycle()), "--table",
-            r"at least 4 points"),
+        Bad("table file missing", (*table, "{d}/nowhere.csv", *cycle()), "--table", r"cannot read"),
+        Bad(
+            "table file is a folder", (*table, "{d}/a_folder", *cycle()), "--table", r"cannot read"
+        ),
+        Bad(
+            "table file empty",
+            (*table, "{d}/table_empty.csv", *cycle()),
+            "--table",
+            r"has no header",
+        ),
+        Bad(
+            "table file only comments",
+            (*table, "{d}/table_comments_only.csv", *cycle()),
+            "--table",
+            r"has no header",
+        ),
+        Bad(
+            "table file not UTF-8",
+            (*table, "{d}/table_binary.csv", *cycle()),
+            "--table",
+            r"line 2.*UTF-8|UTF-8.*line 2",
+        ),
+        Bad(
+            "table header without P",
+            (*table, "{d}/table_no_P.csv", *cycle()),
+            "--table",
+            r"line 1: the header has no column P",
+        ),
+        Bad(
+            "table header without a",
+            (*table, "{d}/table_no_a.csv", *cycle()),
+            "--table",
+            r"line 1: the header has no column a",
+        ),
+        Bad(
+            "table value not a number",
+            (*table, "{d}/table_text.csv", *cycle()),
+            "--table",
+            r"line 5: a: 'ten' is not a number",
+        ),
+        Bad(
+            "table row with extra fields",
+            (*table, "{d}/table_fields.csv", *cycle()),
+            "--table",
+            r"line 3: line has 3 fields, the header has 2",
+        ),
+        Bad(
+            "table value nan",
+            (*table, "{d}/table_nan.csv", *cycle()),
+            "--table",
+            r"must be finite.*line 5",
+        ),
+        Bad(
+            "table value negative",
+            (*table, "{d}/table_negative.csv", *cycle()),
+            "--table",
+            r"must be > 0 \(line 3\)",
+        ),
+        Bad(
+            "table not sorted by P",
+            (*table, "{d}/table_unsorted.csv", *cycle()),
+            "--table",
+            r"strictly increasing \(line 6 does not exceed line 5\)",
+        ),
+        Bad(
+            "table law decreasing",
+            (*table, "{d}/table_decreasing.csv", *cycle()),
+            "--table",
+            r"a: table values must be strictly increasing \(line 4 does not exceed line 3\)",
+        ),
+        Bad(
+            "table with three points",
+            (*table, "{d}/table_three.csv", *cycle()),
+            "--table",
+            r"at least 4 points",
+        ),
         # module laws
-        Bad("module file missing", (*module, "{d}/nowhere.py", *cycle()), "--module",
-            r"no such file"),
-        Bad("module file not Python", (*module, "{d}/law.txt", *cycle()), "--module",
-            r"not a Python module"),
-        Bad("module file not a law module", (*module, "{d}/not_a_law.py", *cycle()),
-            "--module", r"not an asymslip law module"),
-        Bad("module file with a syntax error", (*module, "{d}/broken_law.py", *cycle()),
-            "--module", r"could not be imported \(SyntaxError"),
-        Bad("module law: a parameter missing", (*module, "{d}/cubic.py", "--param", "k=0.1",
-                                                *cycle()), "--param", r"E_star required"),
-        Bad("module law: an unknown parameter", (*module, "{d}/tanh_law.py", "--param", "k=1",
-                                                 "--param", "z=1", *cycle()), "--param",
-            r"z is not a parameter"),
-        Bad("module law: --param without =", (*module, "{d}/tanh_law.py", "--param", "k",
-                                              *cycle()), "--param", r"must be NAME=VALUE"),
-        Bad("module law: --param twice", (*module, "{d}/tanh_law.py", "--param", "k=1",
-                                          "--param", "k=2", *cycle()), "--param",
-            r"k is given twice"),
+        Bad(
+            "module file missing",
+            (*module, "{d}/nowhere.py", *cycle()),
+            "--module",
+            r"no such file",
+        ),
+        Bad(
+            "module file not Python",
+            (*module, "{d}/law.txt", *cycle()),
+            "--module",
+            r"not a Python module",
+        ),
+        Bad(
+            "module file not a law module",
+            (*module, "{d}/not_a_law.py", *cycle()),
+            "--module",
+            r"not an asymslip law module",
+        ),
+        Bad(
+            "module file with a syntax error",
+            (*module, "{d}/broken_law.py", *cycle()),
+            "--module",
+            r"could not be imported \(SyntaxError",
+        ),
+        Bad(
+            "module law: a parameter missing",
+            (*module, "{d}/cubic.py", "--param", "k=0.1", *cycle()),
+            "--param",
+            r"E_star required",
+        ),
+        Bad(
+            "module law: an unknown parameter",
+            (*module, "{d}/tanh_law.py", "--param", "k=1", "--param", "z=1", *cycle()),
+            "--param",
+            r"z is not a parameter",
+        ),
+        Bad(
+            "module law: --param without =",
+            (*module, "{d}/tanh_law.py", "--param", "k", *cycle()),
+            "--param",
+            r"must be NAME=VALUE",
+        ),
+        Bad(
+            "module law: --param twice",
+            (*module, "{d}/tanh_law.py", "--param", "k=1", "--param", "k=2", *cycle()),
+            "--param",
+            r"k is given twice",
+        ),
         # derived laws used beyond what they can carry
-        Bad("a module for 1/a written by hand", (*module, "{d}/inverse.py", *cycle()), "--P1",
-            r"no root a > 0 where P increases with a"),
-        Bad("a module for k - a written by hand", (*module, "{d}/linear_down.py", "--param",
-                                                   "k=200", *cycle()), "--P1",
-            r"no root a > 0 where P increases with a"),
-        Bad("cubic law beyond its maximum load", (*module, "{d}/cubic.py", "--param",
-                                                  "E_star=1", "--param", "k=0.1", *cycle()),
-            "--P1", r"no contact half-width of the cubic law carries this load"),
-        Bad("cubic law: only state 2 beyond its maximum", (*module, "{d}/cubic.py", "--param",
-            "E_star=1", "--param", "k=0.1", *cycle(P1="14", P2="15", Q2="0")),
-            "--P2", r"outside the law's range"),
-        Bad("tanh law at its bound", (*module, "{d}/tanh_law.py", "--param", "k=10",
-                                      *cycle(P1="9", P2="10", Q2="0")),
-            "--P2", r"no contact half-width of the tanh_law law carries this load"),
-        Bad("tanh law beyond its bound", (*module, "{d}/tanh_law.py", "--param", "k=10",
-                                          *cycle(P1="11", P2="12", Q2="0")),
-            "--P1", r"outside the law's range"),
-    ]  # fmt: skip
+        Bad(
+            "a module for 1/a written by hand",
+            (*module, "{d}/inverse.py", *cycle()),
+            "--P1",
+            r"no root a > 0 where P increases with a",
+        ),
+        Bad(
+            "a module for k - a written by hand",
+            (*module, "{d}/linear_down.py", "--param", "k=200", *cycle()),
+            "--P1",
+            r"no root a > 0 where P increases with a",
+        ),
+        Bad(
+            "cubic law beyond its maximum load",
+            (*module, "{d}/cubic.py", "--param", "E_star=1", "--param", "k=0.1", *cycle()),
+            "--P1",
+            r"no contact half-width of the cubic law carries this load",
+        ),
+        Bad(
+            "cubic law: only state 2 beyond its maximum",
+            (
+                *module,
+                "{d}/cubic.py",
+                "--param",
+                "E_star=1",
+                "--param",
+                "k=0.1",
+                *cycle(P1="14", P2="15", Q2="0"),
+            ),
+            "--P2",
+            r"outside the law's range",
+        ),
+        Bad(
+            "tanh law at its bound",
+            (*module, "{d}/tanh_law.py", "--param", "k=10", *cycle(P1="9", P2="10", Q2="0")),
+            "--P2",
+            r"no contact half-width of the tanh_law law carries this load",
+        ),
+        Bad(
+            "tanh law beyond its bound",
+            (*module, "{d}/tanh_law.py", "--param", "k=10", *cycle(P1="11", P2="12", Q2="0")),
+            "--P1",
+            r"outside the law's range",
+        ),
+    ]
     return cases
 
 
 def derive_cases() -> list[Bad]:
-    def derive(formula: str, params: str = "k", *, name: str = "law",
-               out: str = "{d}/derived.py") -> tuple[str, ...]:  # fmt: skip
+    def derive(
+        formula: str, params: str = "k", *, name: str = "law", out: str = "{d}/derived.py"
+    ) -> tuple[str, ...]:
         return ("derive", "--P-of-a", formula, "--params", params, "--name", name, "--out", out)
 
     huge = "+".join(["a"] * 50_000)  # 100 kB
     return [
         Bad("derive 1/a (decreasing)", derive("1/a"), "--P-of-a", r"decreases with a"),
         Bad("derive k - a (decreasing)", derive("k - a"), "--P-of-a", r"decreases with a"),
-        Bad("derive -1/a (nowhere positive)", ("derive", "--P-of-a=-1/a", "--name", "law",
-                                               "--out", "{d}/derived.py"),
-            "--P-of-a", r"positive"),
+        Bad(
+            "derive -1/a (nowhere positive)",
+            ("derive", "--P-of-a=-1/a", "--name", "law", "--out", "{d}/derived.py"),
+            "--P-of-a",
+            r"positive",
+        ),
         Bad("derive a constant", derive("5*k"), "--P-of-a", r"does not depend on a"),
         Bad("derive a 100 kB expression", derive(huge), "--P-of-a", r"characters"),
-        Bad("derive a tower of powers (369 million digits)", derive("a*9**9**9"), "--P-of-a",
-            r"9\*\*\(9\*\*9\) is outside double precision"),
-        Bad("derive a number beyond double range", derive("1e999*a"), "--P-of-a",
-            r"1\.00e\+999 is outside double precision"),
-        Bad("derive a number below double range", derive("1e-400*a + a**2"), "--P-of-a",
-            r"outside double precision"),
-        Bad("derive a division by zero", derive("a/0"), "--P-of-a",
-            r"1/0 is not a finite real number"),
+        Bad(
+            "derive a tower of powers (369 million digits)",
+            derive("a*9**9**9"),
+            "--P-of-a",
+            r"9\*\*\(9\*\*9\) is outside double precision",
+        ),
+        Bad(
+            "derive a number beyond double range",
+            derive("1e999*a"),
+            "--P-of-a",
+            r"1\.00e\+999 is outside double precision",
+        ),
+        Bad(
+            "derive a number below double range",
+            derive("1e-400*a + a**2"),
+            "--P-of-a",
+            r"outside double precision",
+        ),
+        Bad(
+            "derive a division by zero",
+            derive("a/0"),
+            "--P-of-a",
+            r"1/0 is not a finite real number",
+        ),
         Bad("derive log(0)", derive("a + log(0)"), "--P-of-a", r"log\(0\) is not a finite real"),
-        Bad("derive sqrt(-1)", derive("sqrt(-1)*a"), "--P-of-a",
-            r"sqrt\(-1\) is not a finite real number"),
-        Bad("derive deep nesting", derive("(" * 200 + "a" + ")" * 200), "--P-of-a",
-            r"nest"),
+        Bad(
+            "derive sqrt(-1)",
+            derive("sqrt(-1)*a"),
+            "--P-of-a",
+            r"sqrt\(-1\) is not a finite real number",
+        ),
+        Bad("derive deep nesting", derive("(" * 200 + "a" + ")" * 200), "--P-of-a", r"nest"),
         Bad("derive an unknown name", derive("q*a**2"), "--P-of-a", r"\bq\b"),
-        Bad("derive code injection", derive("__import__('os').system('true')"), "--P-of-a",
-            r"."),
+        Bad("derive code injection", derive("__import__('os').system('true')"), "--P-of-a", r"."),
         Bad("derive attribute access", derive("a.real"), "--P-of-a", r"."),
         Bad("derive a syntax error", derive("a**"), "--P-of-a", r"."),
         Bad("derive an empty formula", derive(""), "--P-of-a", r"empty|no formula|."),
         Bad("derive a refused function", derive("gamma(a)"), "--P-of-a", r"SciPy"),
         Bad("derive Max", derive("Max(a, k)"), "--P-of-a", r"step function"),
-        Bad("derive a bad name", derive("k*a**2", name="1law"), "--name",
-            r"Python identifier"),
-        Bad("derive a keyword as name", derive("k*a**2", name="class"), "--name",
-            r"Python identifier"),
-        Bad("derive --out not .py", derive("k*a**2", out="{d}/law.txt"), "--out",
-            r"must be a \.py file"),
-        Bad("derive --out in a missing folder", derive("k*a**2", out="{d}/missing/law.py"),
-            "--out", r"cannot write"),
-        Bad("derive --out an existing folder", derive("k*a**2", out="{d}/folder.py"), "--out",
-            r"cannot write"),
-        Bad("derive --out under a file", derive("k*a**2", out="{d}/a_file/law.py"), "--out",
-            r"cannot write"),
+        Bad("derive a bad name", derive("k*a**2", name="1law"), "--name", r"Python identifier"),
+        Bad(
+            "derive a keyword as name",
+            derive("k*a**2", name="class"),
+            "--name",
+            r"Python identifier",
+        ),
+        Bad(
+            "derive --out not .py",
+            derive("k*a**2", out="{d}/law.txt"),
+            "--out",
+            r"must be a \.py file",
+        ),
+        Bad(
+            "derive --out in a missing folder",
+            derive("k*a**2", out="{d}/missing/law.py"),
+            "--out",
+            r"cannot write",
+        ),
+        Bad(
+            "derive --out an existing folder",
+            derive("k*a**2", out="{d}/folder.py"),
+            "--out",
+            r"cannot write",
+        ),
+        Bad(
+            "derive --out under a file",
+            derive("k*a**2", out="{d}/a_file/law.py"),
+            "--out",
+            r"cannot write",
+        ),
         Bad("derive a parameter named a", derive("k*a**2", "a k"), "--params", r"\ba\b"),
         Bad("derive a parameter twice", derive("k*a**2", "k k"), "--params", r"distinct|twice"),
-        Bad("derive a parameter named like a function", derive("sqrt*a**2", "sqrt"),
-            "--params", r"sqrt"),
-        Bad("derive --check missing a parameter", ("derive", "--P-of-a", "E_star*a**2 - k*a**3",
-            "--params", "E_star k", "--name", "cubic", "--out", "{d}/derived.py", "--check",
-            "E_star=1", "--check-a", "1"), "--check", r"missing k"),
-        Bad("derive --check: decreasing at the checked point", ("derive", "--P-of-a",
-            "E_star*a**2 - k*a**3", "--params", "E_star k", "--name", "cubic", "--out",
-            "{d}/derived.py", "--check", "E_star=1", "--check", "k=1", "--check-a", "1"),
-            "--P-of-a", r"dP/da = -1 is not > 0 at a = 1"),
-    ]  # fmt: skip
+        Bad(
+            "derive a parameter named like a function",
+            derive("sqrt*a**2", "sqrt"),
+            "--params",
+            r"sqrt",
+        ),
+        Bad(
+            "derive --check missing a parameter",
+            (
+                "derive",
+                "--P-of-a",
+                "E_star*a**2 - k*a**3",
+                "--params",
+                "E_star k",
+                "--name",
+                "cubic",
+                "--out",
+                "{d}/derived.py",
+                "--check",
+                "E_star=1",
+                "--check-a",
+                "1",
+            ),
+            "--check",
+            r"missing k",
+        ),
+        Bad(
+            "derive --check: decreasing at the checked point",
+            (
+                "derive",
+                "--P-of-a",
+                "E_star*a**2 - k*a**3",
+                "--params",
+                "E_star k",
+                "--name",
+                "cubic",
+                "--out",
+                "{d}/derived.py",
+                "--check",
+                "E_star=1",
+                "--check",
+                "k=1",
+                "--check-a",
+                "1",
+            ),
+            "--P-of-a",
+            r"dP/da = -1 is not > 0 at a = 1",
+        ),
+    ]
 
 
 def sweep_cases() -> list[Bad]:
@@ -626,37 +1049,97 @@ def sweep_cases() -> list[Bad]:
         Bad("sweep: CASES missing", sweep("{d}/nowhere.csv"), "CASES", r"cannot read"),
         Bad("sweep: CASES is a folder", sweep("{d}/a_folder"), "CASES", r"cannot read"),
         Bad("sweep: CASES empty", sweep("{d}/cases_empty.csv"), "CASES", r"no header"),
-        Bad("sweep: CASES only comments", sweep("{d}/cases_comments.csv"), "CASES",
-            r"no header"),
-        Bad("sweep: CASES with a header and no rows", sweep("{d}/cases_header_only.csv"), "CASES",
-            r"has a header but no rows"),
-        Bad("sweep: CASES not UTF-8", sweep("{d}/cases_binary.csv"), "CASES",
-            r"line 3: is not UTF-8"),
-        Bad("sweep: CASES without Q2", sweep("{d}/cases_no_Q2.csv"), "CASES",
-            r"line 1: the header has no column Q2"),
-        Bad("sweep: an input column named like an output", sweep("{d}/cases_clash.csv"),
-            "CASES", r"input column b has the name of an output column"),
-        Bad("sweep: --out is the input", sweep("{d}/cases.csv", out="{d}/cases.csv"), "--out",
-            r"is also the input"),
-        Bad("sweep: --out is the input by another path",
-            sweep("{d}/cases.csv", out="{d}/a_folder/../cases.csv"), "--out",
-            r"is also the input"),
-        Bad("sweep: --out in a missing folder", sweep("{d}/cases.csv", out="{d}/missing/o.csv"),
-            "--out", r"cannot write"),
-        Bad("sweep: --out under a file", sweep("{d}/cases.csv", out="{d}/a_file/o.csv"),
-            "--out", r"cannot write"),
-        Bad("sweep: --out a bad extension", sweep("{d}/cases.csv", out="{d}/o.txt"), "--out",
-            r"extension must be \.csv or \.parquet"),
-        Bad("sweep: --out a folder", sweep("{d}/cases.csv", out="{d}/a_folder"), "--out",
-            r"extension|folder|directory"),
-        Bad("sweep: no friction coefficient", ("sweep", "{d}/cases.csv", *HERTZ, "--out",
-                                               "{d}/o.csv"), "--mu", r"is required"),
-        Bad("sweep: unknown law", ("sweep", "{d}/cases.csv", "--law", "cube", "--mu", "0.1",
-                                   "--out", "{d}/o.csv"), "--law", r"unknown contact law"),
-        Bad("sweep: hertz without --E-star", ("sweep", "{d}/cases.csv", "--law", "hertz", "--R",
-                                              "1", "--mu", "0.1", "--out", "{d}/o.csv"),
-            "--E-star", r"is required"),
-    ]  # fmt: skip
+        Bad("sweep: CASES only comments", sweep("{d}/cases_comments.csv"), "CASES", r"no header"),
+        Bad(
+            "sweep: CASES with a header and no rows",
+            sweep("{d}/cases_header_only.csv"),
+            "CASES",
+            r"has a header but no rows",
+        ),
+        Bad(
+            "sweep: CASES not UTF-8",
+            sweep("{d}/cases_binary.csv"),
+            "CASES",
+            r"line 3: is not UTF-8",
+        ),
+        Bad(
+            "sweep: CASES without Q2",
+            sweep("{d}/cases_no_Q2.csv"),
+            "CASES",
+            r"line 1: the header has no column Q2",
+        ),
+        Bad(
+            "sweep: an input column named like an output",
+            sweep("{d}/cases_clash.csv"),
+            "CASES",
+            r"input column b has the name of an output column",
+        ),
+        Bad(
+            "sweep: --out is the input",
+            sweep("{d}/cases.csv", out="{d}/cases.csv"),
+            "--out",
+            r"is also the input",
+        ),
+        Bad(
+            "sweep: --out is the input by another path",
+            sweep("{d}/cases.csv", out="{d}/a_folder/../cases.csv"),
+            "--out",
+            r"is also the input",
+        ),
+        Bad(
+            "sweep: --out in a missing folder",
+            sweep("{d}/cases.csv", out="{d}/missing/o.csv"),
+            "--out",
+            r"cannot write",
+        ),
+        Bad(
+            "sweep: --out under a file",
+            sweep("{d}/cases.csv", out="{d}/a_file/o.csv"),
+            "--out",
+            r"cannot write",
+        ),
+        Bad(
+            "sweep: --out a bad extension",
+            sweep("{d}/cases.csv", out="{d}/o.txt"),
+            "--out",
+            r"extension must be \.csv or \.parquet",
+        ),
+        Bad(
+            "sweep: --out a folder",
+            sweep("{d}/cases.csv", out="{d}/a_folder"),
+            "--out",
+            r"extension|folder|directory",
+        ),
+        Bad(
+            "sweep: no friction coefficient",
+            ("sweep", "{d}/cases.csv", *HERTZ, "--out", "{d}/o.csv"),
+            "--mu",
+            r"is required",
+        ),
+        Bad(
+            "sweep: unknown law",
+            ("sweep", "{d}/cases.csv", "--law", "cube", "--mu", "0.1", "--out", "{d}/o.csv"),
+            "--law",
+            r"unknown contact law",
+        ),
+        Bad(
+            "sweep: hertz without --E-star",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "hertz",
+                "--R",
+                "1",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/o.csv",
+            ),
+            "--E-star",
+            r"is required",
+        ),
+    ]
 
 
 def command_line_cases() -> list[Bad]:
@@ -668,31 +1151,68 @@ def command_line_cases() -> list[Bad]:
         Bad("missing --Q2", ("slip-zone", *hertz(Q2=None)), "--Q2", r"required"),
         Bad("missing --x", ("traction", *hertz()), "--x", r"required"),
         Bad("--edge top", ("slip-zone", *hertz(), "--edge", "top"), "--edge", r"invalid choice"),
-        Bad("--b weird", ("traction", *hertz(), "--x", "11", "--b", "weird"), "--b",
-            r"invalid choice"),
-        Bad("--P1 without a value", ("slip-zone", *HERTZ, *cycle(P1=None), "--P1"), "--P1",
-            r"expected one argument"),
-        Bad("figure: unknown figure", ("figure", "fig6", "--out", "{d}/figs"), "FIGURE",
-            r"invalid choice"),
-        Bad("figure: --out is a file", ("figure", "fig5", "--out", "{d}/a_file"), "--out",
-            r"must be a folder"),
-        Bad("figure: --out under a file", ("figure", "fig5", "--out", "{d}/a_file/figs"),
-            "--out", r"cannot|folder"),
-        Bad("figure: --check a folder without fig5.csv", ("figure", "fig5", "--check",
-                                                          "{d}/a_folder"),
-            "--check", r"fig5\.csv"),
+        Bad(
+            "--b weird",
+            ("traction", *hertz(), "--x", "11", "--b", "weird"),
+            "--b",
+            r"invalid choice",
+        ),
+        Bad(
+            "--P1 without a value",
+            ("slip-zone", *HERTZ, *cycle(P1=None), "--P1"),
+            "--P1",
+            r"expected one argument",
+        ),
+        Bad(
+            "figure: unknown figure",
+            ("figure", "fig6", "--out", "{d}/figs"),
+            "FIGURE",
+            r"invalid choice",
+        ),
+        Bad(
+            "figure: --out is a file",
+            ("figure", "fig5", "--out", "{d}/a_file"),
+            "--out",
+            r"must be a folder",
+        ),
+        Bad(
+            "figure: --out under a file",
+            ("figure", "fig5", "--out", "{d}/a_file/figs"),
+            "--out",
+            r"cannot|folder",
+        ),
+        Bad(
+            "figure: --check a folder without fig5.csv",
+            ("figure", "fig5", "--check", "{d}/a_folder"),
+            "--check",
+            r"fig5\.csv",
+        ),
         Bad("figure: neither --out nor --check", ("figure", "fig5"), "--out", r"required"),
-        Bad("figure: error map --out under a file", ("figure", "error-map", "--out",
-                                                     "{d}/a_file/figs", "--redraw"),
-            "--out", r"cannot create the folder"),
-        Bad("figure: error map --check a folder without error_map.csv",
-            ("figure", "error-map", "--check", "{d}/a_folder"), "--check", r"error_map\.csv"),
-        Bad("figure: error map --redraw without the CSV",
+        Bad(
+            "figure: error map --out under a file",
+            ("figure", "error-map", "--out", "{d}/a_file/figs", "--redraw"),
+            "--out",
+            r"cannot create the folder",
+        ),
+        Bad(
+            "figure: error map --check a folder without error_map.csv",
+            ("figure", "error-map", "--check", "{d}/a_folder"),
+            "--check",
+            r"error_map\.csv",
+        ),
+        Bad(
+            "figure: error map --redraw without the CSV",
             ("figure", "error-map", "--out", "{d}/figs", "--data", "{d}/a_folder", "--redraw"),
-            "--data", r"no error_map\.csv"),
-        Bad("figure: --data with fig5", ("figure", "fig5", "--out", "{d}/figs", "--data",
-                                         "{d}/a_folder"), "--data", r"error map only"),
-    ]  # fmt: skip
+            "--data",
+            r"no error_map\.csv",
+        ),
+        Bad(
+            "figure: --data with fig5",
+            ("figure", "fig5", "--out", "{d}/figs", "--data", "{d}/a_folder"),
+            "--data",
+            r"error map only",
+        ),
+    ]
 
 
 SOLVE = ("--elements", "100", "--steps", "3")
@@ -700,50 +1220,108 @@ SOLVE = ("--elements", "100", "--steps", "3")
 
 def solve_cases() -> list[Bad]:
     """The reference solver's command: its grid, its profiles, its load path."""
+
     def solve(*options: str) -> tuple[str, ...]:
         return ("solve", *options, *SOLVE)
 
     profile = ("--E-star", "1", *cycle())
     return [
-        Bad("solve --elements 0", ("solve", *hertz(), "--elements", "0"), "--elements",
-            r"must be at least 64"),
-        Bad("solve --elements 1.5", ("solve", *hertz(), "--elements", "1.5"), "--elements",
-            r"'1\.5' is not a whole number"),
-        Bad("solve --elements nan", ("solve", *hertz(), "--elements", "nan"), "--elements",
-            r"must be a finite whole number"),
-        Bad("solve --steps 0", ("solve", *hertz(), "--steps", "0"), "--steps",
-            r"must be at least 1"),
+        Bad(
+            "solve --elements 0",
+            ("solve", *hertz(), "--elements", "0"),
+            "--elements",
+            r"must be at least 64",
+        ),
+        Bad(
+            "solve --elements 1.5",
+            ("solve", *hertz(), "--elements", "1.5"),
+            "--elements",
+            r"'1\.5' is not a whole number",
+        ),
+        Bad(
+            "solve --elements nan",
+            ("solve", *hertz(), "--elements", "nan"),
+            "--elements",
+            r"must be a finite whole number",
+        ),
+        Bad(
+            "solve --steps 0", ("solve", *hertz(), "--steps", "0"), "--steps", r"must be at least 1"
+        ),
         Bad("solve --mu -inf", solve(*hertz(mu="-inf")), "--mu", FINITE),
-        Bad("solve: gross sliding at state 2", solve(*hertz(Q2="11")), "--Q2",
-            r"\|Q2\| = 11 must be < mu P2 = 10\.5"),
+        Bad(
+            "solve: gross sliding at state 2",
+            solve(*hertz(Q2="11")),
+            "--Q2",
+            r"\|Q2\| = 11 must be < mu P2 = 10\.5",
+        ),
         Bad("solve: P2 < P1", solve(*hertz(P2="99")), "--P2", r"must exceed P1"),
-        Bad("solve: no cycle and no path", solve(*HERTZ, "--mu", "0.1"), "--P1",
-            r"needs --P1 --Q1 --P2 --Q2 \(or --path PATH\.csv\)"),
-        Bad("solve: a path and a cycle", solve(*hertz(), "--path", "{d}/path.csv"), "--path",
-            r"give either --path or"),
-        Bad("solve: a path file missing", solve(*HERTZ, "--mu", "0.1", "--path",
-                                                "{d}/nowhere.csv"), "--path", r"cannot read"),
-        Bad("solve: a law without a profile", solve("--law", "table", "--table",
-                                                    "{d}/hertz.csv", *cycle()),
-            "--law", r"has no profile for the solver"),
-        Bad("solve: a falling profile -x**2", solve("--profile=-x**2", *profile), "--profile",
-            r"no finite contact was found"),
-        Bad("solve: a profile with an unknown name", solve("--profile", "x**2/(2*R)", *profile),
-            "--profile", r"unknown name R: give each parameter's value with --param"),
-        Bad("solve: a profile without --E-star", solve("--profile", "x**2/2", *cycle()),
-            "--E-star", r"is required with --profile"),
-        Bad("solve: a profile table missing", solve("--profile-table", "{d}/nowhere.csv",
-                                                    *profile), "--profile-table",
-            r"cannot read"),
-        Bad("solve: a profile table of one point", solve("--profile-table",
-                                                         "{d}/profile_one_point.csv", *profile),
-            "--profile-table", r"at least 3 points"),
-        Bad("solve: loads of 1e300 overflow the solver",
-            solve(*hertz(P1="1e300", P2="1.05e300", Q2="1e298")), "--P1",
-            r"reference solver overflows double precision"),
-        Bad("solve --out under a file", solve(*hertz(), "--out", "{d}/a_file/solver"), "--out",
-            r"cannot create"),
-    ]  # fmt: skip
+        Bad(
+            "solve: no cycle and no path",
+            solve(*HERTZ, "--mu", "0.1"),
+            "--P1",
+            r"needs --P1 --Q1 --P2 --Q2 \(or --path PATH\.csv\)",
+        ),
+        Bad(
+            "solve: a path and a cycle",
+            solve(*hertz(), "--path", "{d}/path.csv"),
+            "--path",
+            r"give either --path or",
+        ),
+        Bad(
+            "solve: a path file missing",
+            solve(*HERTZ, "--mu", "0.1", "--path", "{d}/nowhere.csv"),
+            "--path",
+            r"cannot read",
+        ),
+        Bad(
+            "solve: a law without a profile",
+            solve("--law", "table", "--table", "{d}/hertz.csv", *cycle()),
+            "--law",
+            r"has no profile for the solver",
+        ),
+        Bad(
+            "solve: a falling profile -x**2",
+            solve("--profile=-x**2", *profile),
+            "--profile",
+            r"no finite contact was found",
+        ),
+        Bad(
+            "solve: a profile with an unknown name",
+            solve("--profile", "x**2/(2*R)", *profile),
+            "--profile",
+            r"unknown name R: give each parameter's value with --param",
+        ),
+        Bad(
+            "solve: a profile without --E-star",
+            solve("--profile", "x**2/2", *cycle()),
+            "--E-star",
+            r"is required with --profile",
+        ),
+        Bad(
+            "solve: a profile table missing",
+            solve("--profile-table", "{d}/nowhere.csv", *profile),
+            "--profile-table",
+            r"cannot read",
+        ),
+        Bad(
+            "solve: a profile table of one point",
+            solve("--profile-table", "{d}/profile_one_point.csv", *profile),
+            "--profile-table",
+            r"at least 3 points",
+        ),
+        Bad(
+            "solve: loads of 1e300 overflow the solver",
+            solve(*hertz(P1="1e300", P2="1.05e300", Q2="1e298")),
+            "--P1",
+            r"reference solver overflows double precision",
+        ),
+        Bad(
+            "solve --out under a file",
+            solve(*hertz(), "--out", "{d}/a_file/solver"),
+            "--out",
+            r"cannot create",
+        ),
+    ]
 
 
 def calibrate_cases() -> list[Bad]:
@@ -751,48 +1329,112 @@ def calibrate_cases() -> list[Bad]:
     traces = "{d}/traces.csv"
     calibrated = ("slip-zone", "--law", "calibrated", "--calibration")
     return [
-        Bad("calibrate: TRACES missing", ("calibrate", "{d}/nowhere.csv"), "TRACES",
-            r"cannot read"),
-        Bad("calibrate: TRACES without p", ("calibrate", "{d}/path.csv"), "TRACES",
-            r"line 1: the header has no column x or p"),
-        Bad("calibrate: a nan pressure", ("calibrate", "{d}/traces_nan.csv"), "TRACES",
-            r"line \d+: column x: is not a finite number"),
-        Bad("calibrate --noise -1", ("calibrate", traces, "--noise", "-1"), "--noise",
-            r"must be a finite number >= 0"),
-        Bad("calibrate --noise nan", ("calibrate", traces, "--noise", "nan"), "--noise",
-            r"must be a finite number >= 0"),
-        Bad("calibrate --noise inf", ("calibrate", traces, "--noise", "inf"), "--noise",
-            r"must be a finite number >= 0"),
-        Bad("calibrate --origin -inf", ("calibrate", traces, "--origin", "-inf"), "--origin",
-            r"must be a finite number"),
-        Bad("calibrate --origin outside the contact", ("calibrate", traces, "--origin", "1e300"),
-            "--origin", r"is not inside the contact"),
-        Bad("calibrate --loads with a CSV", ("calibrate", traces, "--loads", "1", "2"), "--loads",
-            r"column P gives the loads"),
-        Bad("calibrate --out is TRACES", ("calibrate", traces, "--out", traces), "--out",
-            r"is also the input"),
-        Bad("calibrate --out in a missing folder", ("calibrate", traces, "--out",
-                                                    "{d}/missing/calibration.json"),
-            "--out", r"cannot write"),
-        Bad("calibrated law without --calibration", ("slip-zone", "--law", "calibrated",
-                                                     *cycle()), "--calibration", r"is required"),
-        Bad("calibrated law: file missing", (*calibrated, "{d}/nowhere.json", *cycle()),
-            "--calibration", r"cannot read"),
-        Bad("calibrated law: not JSON", (*calibrated, "{d}/calibration_bad.json", *cycle()),
-            "--calibration", r"line 1: not valid JSON"),
-        Bad("calibrated law: a negative load", (
-            *calibrated, "{d}/calibration.json", *cycle(P1="-5")), "--P1", POSITIVE),
-    ]  # fmt: skip
+        Bad(
+            "calibrate: TRACES missing", ("calibrate", "{d}/nowhere.csv"), "TRACES", r"cannot read"
+        ),
+        Bad(
+            "calibrate: TRACES without p",
+            ("calibrate", "{d}/path.csv"),
+            "TRACES",
+            r"line 1: the header has no column x or p",
+        ),
+        Bad(
+            "calibrate: a nan pressure",
+            ("calibrate", "{d}/traces_nan.csv"),
+            "TRACES",
+            r"line \d+: column x: is not a finite number",
+        ),
+        Bad(
+            "calibrate --noise -1",
+            ("calibrate", traces, "--noise", "-1"),
+            "--noise",
+            r"must be a finite number >= 0",
+        ),
+        Bad(
+            "calibrate --noise nan",
+            ("calibrate", traces, "--noise", "nan"),
+            "--noise",
+            r"must be a finite number >= 0",
+        ),
+        Bad(
+            "calibrate --noise inf",
+            ("calibrate", traces, "--noise", "inf"),
+            "--noise",
+            r"must be a finite number >= 0",
+        ),
+        Bad(
+            "calibrate --origin -inf",
+            ("calibrate", traces, "--origin", "-inf"),
+            "--origin",
+            r"must be a finite number",
+        ),
+        Bad(
+            "calibrate --origin outside the contact",
+            ("calibrate", traces, "--origin", "1e300"),
+            "--origin",
+            r"is not inside the contact",
+        ),
+        Bad(
+            "calibrate --loads with a CSV",
+            ("calibrate", traces, "--loads", "1", "2"),
+            "--loads",
+            r"column P gives the loads",
+        ),
+        Bad(
+            "calibrate --out is TRACES",
+            ("calibrate", traces, "--out", traces),
+            "--out",
+            r"is also the input",
+        ),
+        Bad(
+            "calibrate --out in a missing folder",
+            ("calibrate", traces, "--out", "{d}/missing/calibration.json"),
+            "--out",
+            r"cannot write",
+        ),
+        Bad(
+            "calibrated law without --calibration",
+            ("slip-zone", "--law", "calibrated", *cycle()),
+            "--calibration",
+            r"is required",
+        ),
+        Bad(
+            "calibrated law: file missing",
+            (*calibrated, "{d}/nowhere.json", *cycle()),
+            "--calibration",
+            r"cannot read",
+        ),
+        Bad(
+            "calibrated law: not JSON",
+            (*calibrated, "{d}/calibration_bad.json", *cycle()),
+            "--calibration",
+            r"line 1: not valid JSON",
+        ),
+        Bad(
+            "calibrated law: a negative load",
+            (*calibrated, "{d}/calibration.json", *cycle(P1="-5")),
+            "--P1",
+            POSITIVE,
+        ),
+    ]
 
 
-BAD: list[Bad] = [*number_option_cases(), *physics_cases(), *law_cases(), *derive_cases(),
-                  *sweep_cases(), *command_line_cases(), *solve_cases(),
-                  *calibrate_cases()]  # fmt: skip
+BAD: list[Bad] = [
+    *number_option_cases(),
+    *physics_cases(),
+    *law_cases(),
+    *derive_cases(),
+    *sweep_cases(),
+    *command_line_cases(),
+    *solve_cases(),
+    *calibrate_cases(),
+]
 
 
 # --- the table: borderline valid inputs ---------------------------------------------------------
-def solve_increasing(function: Callable[[float], float], target: float, low: float,
-                     high: float) -> float:  # fmt: skip
+def solve_increasing(
+    function: Callable[[float], float], target: float, low: float, high: float
+) -> float:
     """Bisection to the last bit: an independent inverse of a contact law P(a)."""
     for _ in range(200):
         middle = 0.5 * (low + high)
@@ -803,8 +1445,9 @@ def solve_increasing(function: Callable[[float], float], target: float, low: flo
     return 0.5 * (low + high)
 
 
-def module_law_check(law: Callable[[float], float], high: float, P1: float,
-                     P2: float) -> Callable[..., None]:  # fmt: skip
+def module_law_check(
+    law: Callable[[float], float], high: float, P1: float, P2: float
+) -> Callable[..., None]:
     def check(result: dict, folder: Path) -> None:
         for key, P in (("a1", P1), ("a2", P2)):
             assert result[key] == pytest.approx(solve_increasing(law, P, 0.0, high), rel=1e-12)
@@ -874,17 +1517,23 @@ def wedge_apex_check(result: dict, folder: Path) -> None:
     assert result["q_diff_exact"][:2] == [None, None]
     assert math.isfinite(result["q_diff_exact"][2])
     assert all(math.isfinite(q) for q in result["q_diff"])
-    assert any("q_diff_exact (47) is left out (null) at 2 point(s) where it is not a finite "
-               "double: the law's pressure is infinite there (the apex x = 0 of a wedge)" in text
-               for text in result["warnings"])  # fmt: skip
+    assert any(
+        "q_diff_exact (47) is left out (null) at 2 point(s) where it is not a finite "
+        "double: the law's pressure is infinite there (the apex x = 0 of a wedge)" in text
+        for text in result["warnings"]
+    )
 
 
 def paper_left_out_check(result: dict, folder: Path) -> None:
     """Just short of the zero denominator of (22) (bulk tension), (22) puts the stick
     boundary far outside the contact: null, with a warning; b (the second-order b2) is not."""
     assert result["b_paper"] is None
-    assert any(text.startswith("b_paper: the estimate (22) puts the stick boundary outside the "
-                               "contact (0, a2]") for text in result["warnings"])  # fmt: skip
+    assert any(
+        text.startswith(
+            "b_paper: the estimate (22) puts the stick boundary outside the contact (0, a2]"
+        )
+        for text in result["warnings"]
+    )
     assert 0 < result["b"] <= result["a2"]
 
 
@@ -924,175 +1573,461 @@ def valid_cases() -> list[Valid]:
     a1 = hertz_a(P1)
     return [
         # numbers as people type them
-        Valid("--Q1 -1e-1 (negative exponent)", sz(Q1="-1e-1", Q2="5e-1"),
-              slip_zone_check(100, -0.1, 105, 0.5, 0.1, slips=True)),
-        Valid("--Q1 -1e2 (negative exponent, mu 1.5)",
-              ("slip-zone", *hertz(Q1="-1e2", mu="1.5"), "--json"),
-              slip_zone_check(100, -100, 105, 1, 1.5, slips=True)),
-        Valid("--Q1=-1E+0 and --Q2 -.5", ("slip-zone", *HERTZ, *cycle(Q1=None, Q2="-.5"),
-                                          "--Q1=-1E+0", "--json"),
-              slip_zone_check(100, -1, 105, -0.5, 0.1, slips=False)),
-        Valid("--sigma1 -2.5e-3 (small tension)", ("slip-zone", *hertz(sigma1="-2.5e-3"), "--json"),
-              slip_zone_check(100, 0, 105, 1, 0.1, -2.5e-3, 0.0)),
-        Valid("--P1 1e2 --P2 1.05E2", ("slip-zone", *hertz(P1="1e2", P2="1.05E2"), "--json"),
-              slip_zone_check(100, 0, 105, 1, 0.1, slips=True)),
+        Valid(
+            "--Q1 -1e-1 (negative exponent)",
+            sz(Q1="-1e-1", Q2="5e-1"),
+            slip_zone_check(100, -0.1, 105, 0.5, 0.1, slips=True),
+        ),
+        Valid(
+            "--Q1 -1e2 (negative exponent, mu 1.5)",
+            ("slip-zone", *hertz(Q1="-1e2", mu="1.5"), "--json"),
+            slip_zone_check(100, -100, 105, 1, 1.5, slips=True),
+        ),
+        Valid(
+            "--Q1=-1E+0 and --Q2 -.5",
+            ("slip-zone", *HERTZ, *cycle(Q1=None, Q2="-.5"), "--Q1=-1E+0", "--json"),
+            slip_zone_check(100, -1, 105, -0.5, 0.1, slips=False),
+        ),
+        Valid(
+            "--sigma1 -2.5e-3 (small tension)",
+            ("slip-zone", *hertz(sigma1="-2.5e-3"), "--json"),
+            slip_zone_check(100, 0, 105, 1, 0.1, -2.5e-3, 0.0),
+        ),
+        Valid(
+            "--P1 1e2 --P2 1.05E2",
+            ("slip-zone", *hertz(P1="1e2", P2="1.05E2"), "--json"),
+            slip_zone_check(100, 0, 105, 1, 0.1, slips=True),
+        ),
         # friction coefficients: tiny, subnormal, huge
-        Valid("mu = 1e-300, no shear", ("slip-zone", *hertz(mu="1e-300", Q2="0"), "--json"),
-              slip_zone_check(100, 0, 105, 0, 1e-300, slips=False)),
-        Valid("mu = 1e-300, partial slip", sz(mu="1e-300", Q2="5e-299"),
-              slip_zone_check(100, 0, 105, 5e-299, 1e-300, slips=True)),
-        Valid("mu = 5e-324 (subnormal)", ("slip-zone", *hertz(mu="5e-324", Q2="0"), "--json"),
-              slip_zone_check(100, 0, 105, 0, 5e-324, slips=False)),
-        Valid("mu = 1e300", ("slip-zone", *hertz(mu="1e300"), "--json"),
-              slip_zone_check(100, 0, 105, 1, 1e300, slips=False)),
+        Valid(
+            "mu = 1e-300, no shear",
+            ("slip-zone", *hertz(mu="1e-300", Q2="0"), "--json"),
+            slip_zone_check(100, 0, 105, 0, 1e-300, slips=False),
+        ),
+        Valid(
+            "mu = 1e-300, partial slip",
+            sz(mu="1e-300", Q2="5e-299"),
+            slip_zone_check(100, 0, 105, 5e-299, 1e-300, slips=True),
+        ),
+        Valid(
+            "mu = 5e-324 (subnormal)",
+            ("slip-zone", *hertz(mu="5e-324", Q2="0"), "--json"),
+            slip_zone_check(100, 0, 105, 0, 5e-324, slips=False),
+        ),
+        Valid(
+            "mu = 1e300",
+            ("slip-zone", *hertz(mu="1e300"), "--json"),
+            slip_zone_check(100, 0, 105, 1, 1e300, slips=False),
+        ),
         # loads: huge and tiny but finite, far apart, very close
-        Valid("P1 = 1e300, P2 = 1.05e300", sz(P1="1e300", P2="1.05e300", Q2="1e298"),
-              slip_zone_check(1e300, 0, 1.05e300, 1e298, 0.1, slips=True)),
-        Valid("P1 = 1e-100, P2 = 1.05e-100", ("slip-zone", *hertz(P1="1e-100", P2="1.05e-100",
-                                                                   Q2="1e-101"), "--json"),
-              slip_zone_check(1e-100, 0, 1.05e-100, 1e-101, 0.1, slips=True)),
-        Valid("P1 = 1e-320 (subnormal), P2 = 2e-320", ("slip-zone", *hertz(P1="1e-320", P2="2e-320",
-                                                                             Q2="0"), "--json"),
-              slip_zone_check(1e-320, 0, 2e-320, 0, 0.1, slips=False, rel=1e-3)),
-        Valid("P1 = 1, P2 = 1e6 (no slip; eq24 flagged)",
-              ("slip-zone", *hertz(P1="1", P2="1e6"), "--json"),
-              slip_zone_check(1, 0, 1e6, 1, 0.1, slips=False, warns=r"^eq24 > 0\.1")),
-        Valid("P1 = 100, P2 = 1e4, slipping (every estimate inside the contact or null)",
-              ("slip-zone", *hertz(Q1="-9", P2="1e4", Q2="999"), "--json"),
-              slip_zone_check(100, -9, 1e4, 999, 0.1, slips=True, warns=r"^eq24 > 0\.1")),
-        Valid("dP/P1 = 1e-12", ("slip-zone", *hertz(P2="100.0000000001", Q2="2e-11"), "--json"),
-              slip_zone_check(100, 0, 100.0000000001, 2e-11, 0.1, slips=True)),
+        Valid(
+            "P1 = 1e300, P2 = 1.05e300",
+            sz(P1="1e300", P2="1.05e300", Q2="1e298"),
+            slip_zone_check(1e300, 0, 1.05e300, 1e298, 0.1, slips=True),
+        ),
+        Valid(
+            "P1 = 1e-100, P2 = 1.05e-100",
+            ("slip-zone", *hertz(P1="1e-100", P2="1.05e-100", Q2="1e-101"), "--json"),
+            slip_zone_check(1e-100, 0, 1.05e-100, 1e-101, 0.1, slips=True),
+        ),
+        Valid(
+            "P1 = 1e-320 (subnormal), P2 = 2e-320",
+            ("slip-zone", *hertz(P1="1e-320", P2="2e-320", Q2="0"), "--json"),
+            slip_zone_check(1e-320, 0, 2e-320, 0, 0.1, slips=False, rel=1e-3),
+        ),
+        Valid(
+            "P1 = 1, P2 = 1e6 (no slip; eq24 flagged)",
+            ("slip-zone", *hertz(P1="1", P2="1e6"), "--json"),
+            slip_zone_check(1, 0, 1e6, 1, 0.1, slips=False, warns=r"^eq24 > 0\.1"),
+        ),
+        Valid(
+            "P1 = 100, P2 = 1e4, slipping (every estimate inside the contact or null)",
+            ("slip-zone", *hertz(Q1="-9", P2="1e4", Q2="999"), "--json"),
+            slip_zone_check(100, -9, 1e4, 999, 0.1, slips=True, warns=r"^eq24 > 0\.1"),
+        ),
+        Valid(
+            "dP/P1 = 1e-12",
+            ("slip-zone", *hertz(P2="100.0000000001", Q2="2e-11"), "--json"),
+            slip_zone_check(100, 0, 100.0000000001, 2e-11, 0.1, slips=True),
+        ),
         # limits of the cycle
-        Valid("right at the no-slip limit lam = mu", ("slip-zone", *hertz(Q2="0.5"), "--json"),
-              slip_zone_check(100, 0, 105, 0.5, 0.1, slips=False)),
-        Valid("just inside gross sliding", sz(Q1="9.999999", Q2="10.4"),
-              slip_zone_check(100, 9.999999, 105, 10.4, 0.1)),
-        Valid("bulk tension at half the zero-denominator value",
-              ("slip-zone", *hertz(Q2="0", sigma2=repr(0.5 * eta_zero * 5)), "--json"),
-              slip_zone_check(100, 0, 105, 0, 0.1, 0.0, 0.5 * eta_zero * 5)),
-        Valid("(22) near its zero denominator is left out, not printed",
-              sz(Q2="0", sigma2=repr(0.999 * eta_zero * 5)), paper_left_out_check),
-        Valid("--edge left", ("slip-zone", *hertz(Q2="-1"), "--edge", "left"),
-              None),
+        Valid(
+            "right at the no-slip limit lam = mu",
+            ("slip-zone", *hertz(Q2="0.5"), "--json"),
+            slip_zone_check(100, 0, 105, 0.5, 0.1, slips=False),
+        ),
+        Valid(
+            "just inside gross sliding",
+            sz(Q1="9.999999", Q2="10.4"),
+            slip_zone_check(100, 9.999999, 105, 10.4, 0.1),
+        ),
+        Valid(
+            "bulk tension at half the zero-denominator value",
+            ("slip-zone", *hertz(Q2="0", sigma2=repr(0.5 * eta_zero * 5)), "--json"),
+            slip_zone_check(100, 0, 105, 0, 0.1, 0.0, 0.5 * eta_zero * 5),
+        ),
+        Valid(
+            "(22) near its zero denominator is left out, not printed",
+            sz(Q2="0", sigma2=repr(0.999 * eta_zero * 5)),
+            paper_left_out_check,
+        ),
+        Valid("--edge left", ("slip-zone", *hertz(Q2="-1"), "--edge", "left"), None),
         # laws at their edges
-        Valid("flat-rounded with c = 0 is Hertz",
-              ("slip-zone", *_swap(FLAT, "--flat-half-width", "0"), *cycle(), "--json"),
-              slip_zone_check(100, 0, 105, 1, 0.1, R=10)),
-        Valid("power n = 2, A = 1/2 is Hertz", ("slip-zone", *POWER, *cycle(), "--json"),
-              slip_zone_check(100, 0, 105, 1, 0.1, slips=True)),
-        Valid("power n = 1 (wedge)", ("slip-zone", *_swap(POWER, "--n", "1"), *cycle(), "--json"),
-              power_check(1.0, 0.5, 100, 105)),
-        Valid("power n = 1e3", ("slip-zone", *_swap(POWER, "--n", "1e3"), *cycle(), "--json"),
-              power_check(1e3, 0.5, 100, 105)),
+        Valid(
+            "flat-rounded with c = 0 is Hertz",
+            ("slip-zone", *_swap(FLAT, "--flat-half-width", "0"), *cycle(), "--json"),
+            slip_zone_check(100, 0, 105, 1, 0.1, R=10),
+        ),
+        Valid(
+            "power n = 2, A = 1/2 is Hertz",
+            ("slip-zone", *POWER, *cycle(), "--json"),
+            slip_zone_check(100, 0, 105, 1, 0.1, slips=True),
+        ),
+        Valid(
+            "power n = 1 (wedge)",
+            ("slip-zone", *_swap(POWER, "--n", "1"), *cycle(), "--json"),
+            power_check(1.0, 0.5, 100, 105),
+        ),
+        Valid(
+            "power n = 1e3",
+            ("slip-zone", *_swap(POWER, "--n", "1e3"), *cycle(), "--json"),
+            power_check(1e3, 0.5, 100, 105),
+        ),
         Valid("table law", (*table, "{d}/hertz.csv", *cycle(), "--json"), table_check(100, 105)),
-        Valid("table law with a byte-order mark", (*table, "{d}/table_bom.csv", *cycle(), "--json"),
-              table_check(100, 105)),
-        Valid("table law with CRLF line ends", (*table, "{d}/table_crlf.csv", *cycle(), "--json"),
-              table_check(100, 105)),
-        Valid("table law with a quoted header",
-              (*table, "{d}/table_quoted.csv", *cycle(), "--json"),
-              table_check(100, 105)),
-        Valid("table law with comments and another column",
-              (*table, "{d}/table_commented.csv", *cycle(), "--json"), table_check(100, 105)),
-        Valid("table law beyond its loads (flagged)",
-              (*table, "{d}/hertz.csv", *cycle(P1="150", P2="157.5", Q2="1.5"), "--json"),
-              table_check(150, 157.5, warns=r"P1 is outside")),
-        Valid("cubic module law inside its range",
-              (*module, "{d}/cubic.py", "--param", "E_star=1", "--param", "k=0.1",
-               *cycle(P1="1", P2="1.05", Q2="0.01"), "--json"),
-              module_law_check(lambda a: a**2 - 0.1 * a**3, 2 / 0.3, 1.0, 1.05)),
-        Valid("tanh module law below its bound",
-              (*module, "{d}/tanh_law.py", "--param", "k=10", *cycle(P1="1", P2="1.05", Q2="0.01"),
-               "--json"),
-              module_law_check(lambda a: 10 * math.tanh(a), 50.0, 1.0, 1.05)),
+        Valid(
+            "table law with a byte-order mark",
+            (*table, "{d}/table_bom.csv", *cycle(), "--json"),
+            table_check(100, 105),
+        ),
+        Valid(
+            "table law with CRLF line ends",
+            (*table, "{d}/table_crlf.csv", *cycle(), "--json"),
+            table_check(100, 105),
+        ),
+        Valid(
+            "table law with a quoted header",
+            (*table, "{d}/table_quoted.csv", *cycle(), "--json"),
+            table_check(100, 105),
+        ),
+        Valid(
+            "table law with comments and another column",
+            (*table, "{d}/table_commented.csv", *cycle(), "--json"),
+            table_check(100, 105),
+        ),
+        Valid(
+            "table law beyond its loads (flagged)",
+            (*table, "{d}/hertz.csv", *cycle(P1="150", P2="157.5", Q2="1.5"), "--json"),
+            table_check(150, 157.5, warns=r"P1 is outside"),
+        ),
+        Valid(
+            "cubic module law inside its range",
+            (
+                *module,
+                "{d}/cubic.py",
+                "--param",
+                "E_star=1",
+                "--param",
+                "k=0.1",
+                *cycle(P1="1", P2="1.05", Q2="0.01"),
+                "--json",
+            ),
+            module_law_check(lambda a: a**2 - 0.1 * a**3, 2 / 0.3, 1.0, 1.05),
+        ),
+        Valid(
+            "tanh module law below its bound",
+            (
+                *module,
+                "{d}/tanh_law.py",
+                "--param",
+                "k=10",
+                *cycle(P1="1", P2="1.05", Q2="0.01"),
+                "--json",
+            ),
+            module_law_check(lambda a: 10 * math.tanh(a), 50.0, 1.0, 1.05),
+        ),
         # tractions and slip: far from the edge is reported, not refused
-        Valid("traction --x 0.1 -1e-2", ("traction", *hertz(), "--x", "0.1", "-1e-2", "--json"),
-              traction_check([0.1, -0.01], [False, False])),
-        Valid("traction --x -0.44 (far from the edge)",
-              ("traction", *hertz(), "--x", "-0.44", "--json"),
-              traction_check([-0.44], [False])),
-        Valid("traction near the edge",
-              ("traction", *hertz(), "--x", repr(0.95 * A2_FIG5), "--json"),
-              traction_check([0.95 * A2_FIG5], [True])),
-        Valid("traction at x = a1", ("traction", *hertz(), "--x", repr(a1), "--json"),
-              traction_check([a1], [True])),
-        Valid("traction at the apex of a wedge", ("traction", *_swap(POWER, "--n", "1"),
-                                                  *cycle(), "--x", "0", "5e-324", "0.1", "--json"),
-              wedge_apex_check),
-        Valid("traction on a contact of 1e200 (the exact pressure overflows)",
-              ("traction", "--law", "power", "--A", "50", "--n", "1.5", "--E-star", "1e-300",
-               *cycle(), "--x", "0.1", "--b", "exact", "--json"),
-              lambda result, folder: (result["q_diff_exact"] == [None]
-                                      and math.isfinite(result["q_diff"][0])) or pytest.fail(
-                                          str(result))),
-        Valid("traction at the left edge", ("traction", *hertz(), "--edge", "left", "--x", "-11.5",
-                                            "0.44", "--json"),
-              traction_check([-11.5, 0.44], [True, False])),
-        Valid("slip --x -1e-2 11.5", ("slip", *hertz(), "--x", "-1e-2", "11.5", "--json"),
-              slip_check([-0.01, 11.5])),
-        Valid("slip with a table law and --E-star", ("slip", "--law", "table", "--table",
-                                                     "{d}/hertz.csv", "--E-star", "1", *cycle(),
-                                                     "--x", "0", "11.5", "--json"),
-              slip_check([0.0, 11.5])),
+        Valid(
+            "traction --x 0.1 -1e-2",
+            ("traction", *hertz(), "--x", "0.1", "-1e-2", "--json"),
+            traction_check([0.1, -0.01], [False, False]),
+        ),
+        Valid(
+            "traction --x -0.44 (far from the edge)",
+            ("traction", *hertz(), "--x", "-0.44", "--json"),
+            traction_check([-0.44], [False]),
+        ),
+        Valid(
+            "traction near the edge",
+            ("traction", *hertz(), "--x", repr(0.95 * A2_FIG5), "--json"),
+            traction_check([0.95 * A2_FIG5], [True]),
+        ),
+        Valid(
+            "traction at x = a1",
+            ("traction", *hertz(), "--x", repr(a1), "--json"),
+            traction_check([a1], [True]),
+        ),
+        Valid(
+            "traction at the apex of a wedge",
+            (
+                "traction",
+                *_swap(POWER, "--n", "1"),
+                *cycle(),
+                "--x",
+                "0",
+                "5e-324",
+                "0.1",
+                "--json",
+            ),
+            wedge_apex_check,
+        ),
+        Valid(
+            "traction on a contact of 1e200 (the exact pressure overflows)",
+            (
+                "traction",
+                "--law",
+                "power",
+                "--A",
+                "50",
+                "--n",
+                "1.5",
+                "--E-star",
+                "1e-300",
+                *cycle(),
+                "--x",
+                "0.1",
+                "--b",
+                "exact",
+                "--json",
+            ),
+            lambda result, folder: (
+                result["q_diff_exact"] == [None] and math.isfinite(result["q_diff"][0])
+            )
+            or pytest.fail(str(result)),
+        ),
+        Valid(
+            "traction at the left edge",
+            ("traction", *hertz(), "--edge", "left", "--x", "-11.5", "0.44", "--json"),
+            traction_check([-11.5, 0.44], [True, False]),
+        ),
+        Valid(
+            "slip --x -1e-2 11.5",
+            ("slip", *hertz(), "--x", "-1e-2", "11.5", "--json"),
+            slip_check([-0.01, 11.5]),
+        ),
+        Valid(
+            "slip with a table law and --E-star",
+            (
+                "slip",
+                "--law",
+                "table",
+                "--table",
+                "{d}/hertz.csv",
+                "--E-star",
+                "1",
+                *cycle(),
+                "--x",
+                "0",
+                "11.5",
+                "--json",
+            ),
+            slip_check([0.0, 11.5]),
+        ),
         # derive, sweep, figure
-        Valid("derive a law given with a leading minus", ("derive", "--P-of-a", "-1/a+k",
-                                                          "--params", "k", "--name", "minus",
-                                                          "--out", "{d}/minus.py"),
-              derive_check("minus", r"positive and increasing for a > 1/k")),
-        Valid("derive a long sum", ("derive", "--P-of-a", "+".join(["a"] * 999), "--name",
-                                    "long_sum", "--out", "{d}/long_sum.py"),
-              derive_check("long_sum", r"positive and increasing for every a > 0")),
-        Valid("derive cubic", ("derive", "--P-of-a", "E_star*a**2 - k*a**3", "--params",
-                               "E_star k", "--name", "cubic2", "--out", "{d}/cubic2.py"),
-              derive_check("cubic2", r"0 < a < 2\*E_star/\(3\*k\)")),
-        Valid("sweep with negative exponents", ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1",
-                                                "--out", "{d}/valid.csv"),
-              sweep_check("valid.csv", [0.2, 0.12]), stderr=r"^asymslip sweep: 2 rows written"),
-        Valid("sweep --chunk-rows 1e5", ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1",
-                                         "--chunk-rows", "1e5", "--out", "{d}/chunks.csv"),
-              sweep_check("chunks.csv", [0.2, 0.12]), stderr=r"^asymslip sweep: 2 rows"),
-        Valid("sweep of a spreadsheet's CSV (byte-order mark, CRLF)",
-              ("sweep", "{d}/cases_spreadsheet.csv", *HERTZ, "--mu", "0.1", "--out",
-               "{d}/spreadsheet.csv"),
-              sweep_check("spreadsheet.csv", [0.2, 0.12]), stderr=r"^asymslip sweep: 2 rows"),
-        Valid("sweep: an estimate outside the contact is left empty, with its warning",
-              ("sweep", "{d}/cases_wide.csv", *HERTZ, "--mu", "0.1", "--edge", "right", "--out",
-               "{d}/wide.csv"), wide_sweep_check, stderr=r"^asymslip sweep: 2 rows"),
+        Valid(
+            "derive a law given with a leading minus",
+            (
+                "derive",
+                "--P-of-a",
+                "-1/a+k",
+                "--params",
+                "k",
+                "--name",
+                "minus",
+                "--out",
+                "{d}/minus.py",
+            ),
+            derive_check("minus", r"positive and increasing for a > 1/k"),
+        ),
+        Valid(
+            "derive a long sum",
+            (
+                "derive",
+                "--P-of-a",
+                "+".join(["a"] * 999),
+                "--name",
+                "long_sum",
+                "--out",
+                "{d}/long_sum.py",
+            ),
+            derive_check("long_sum", r"positive and increasing for every a > 0"),
+        ),
+        Valid(
+            "derive cubic",
+            (
+                "derive",
+                "--P-of-a",
+                "E_star*a**2 - k*a**3",
+                "--params",
+                "E_star k",
+                "--name",
+                "cubic2",
+                "--out",
+                "{d}/cubic2.py",
+            ),
+            derive_check("cubic2", r"0 < a < 2\*E_star/\(3\*k\)"),
+        ),
+        Valid(
+            "sweep with negative exponents",
+            ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/valid.csv"),
+            sweep_check("valid.csv", [0.2, 0.12]),
+            stderr=r"^asymslip sweep: 2 rows written",
+        ),
+        Valid(
+            "sweep --chunk-rows 1e5",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                *HERTZ,
+                "--mu",
+                "0.1",
+                "--chunk-rows",
+                "1e5",
+                "--out",
+                "{d}/chunks.csv",
+            ),
+            sweep_check("chunks.csv", [0.2, 0.12]),
+            stderr=r"^asymslip sweep: 2 rows",
+        ),
+        Valid(
+            "sweep of a spreadsheet's CSV (byte-order mark, CRLF)",
+            (
+                "sweep",
+                "{d}/cases_spreadsheet.csv",
+                *HERTZ,
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/spreadsheet.csv",
+            ),
+            sweep_check("spreadsheet.csv", [0.2, 0.12]),
+            stderr=r"^asymslip sweep: 2 rows",
+        ),
+        Valid(
+            "sweep: an estimate outside the contact is left empty, with its warning",
+            (
+                "sweep",
+                "{d}/cases_wide.csv",
+                *HERTZ,
+                "--mu",
+                "0.1",
+                "--edge",
+                "right",
+                "--out",
+                "{d}/wide.csv",
+            ),
+            wide_sweep_check,
+            stderr=r"^asymslip sweep: 2 rows",
+        ),
         Valid("solve the Fig. 5 cycle", ("solve", *hertz(), *SOLVE, "--json"), solve_check),
-        Valid("solve --elements 1e2 --steps 3 along a path",
-              ("solve", *HERTZ, "--mu", "0.1", "--path", "{d}/path.csv", "--elements", "1e2",
-               "--steps", "3", "--json"), solve_check),
-        Valid("solve a tabulated profile", ("solve", "--profile-table", "{d}/profile.csv",
-                                            "--E-star", "1", *cycle(), *SOLVE, "--json"),
-              solve_check),
-        Valid("calibrate Hertz traces", ("calibrate", "{d}/traces.csv", "--json"),
-              calibrate_check),
-        Valid("slip-zone with the calibrated law",
-              ("slip-zone", "--law", "calibrated", "--calibration", "{d}/calibration.json",
-               *cycle(), "--json"), table_check(100, 105)),
-        Valid("figure --check of the committed Fig. 5", ("figure", "fig5", "--check",
-                                                         str(Path(__file__).parents[1] / "generated"
-                                                             / "figures")),
-              lambda text, folder: None),
-    ]  # fmt: skip
+        Valid(
+            "solve --elements 1e2 --steps 3 along a path",
+            (
+                "solve",
+                *HERTZ,
+                "--mu",
+                "0.1",
+                "--path",
+                "{d}/path.csv",
+                "--elements",
+                "1e2",
+                "--steps",
+                "3",
+                "--json",
+            ),
+            solve_check,
+        ),
+        Valid(
+            "solve a tabulated profile",
+            (
+                "solve",
+                "--profile-table",
+                "{d}/profile.csv",
+                "--E-star",
+                "1",
+                *cycle(),
+                *SOLVE,
+                "--json",
+            ),
+            solve_check,
+        ),
+        Valid("calibrate Hertz traces", ("calibrate", "{d}/traces.csv", "--json"), calibrate_check),
+        Valid(
+            "slip-zone with the calibrated law",
+            (
+                "slip-zone",
+                "--law",
+                "calibrated",
+                "--calibration",
+                "{d}/calibration.json",
+                *cycle(),
+                "--json",
+            ),
+            table_check(100, 105),
+        ),
+        Valid(
+            "figure --check of the committed Fig. 5",
+            ("figure", "fig5", "--check", str(Path(__file__).parents[1] / "generated" / "figures")),
+            lambda text, folder: None,
+        ),
+    ]
 
 
 VALID = valid_cases()
 
 ROW_ERRORS = [
-    RowErrors("sweep: bad rows", ("sweep", "{d}/cases_bad_rows.csv", *HERTZ, "--mu", "0.1",
-                                  "--out", "{d}/rows.csv"), "rows.csv",
-              {4: r"^P2: '1o5' is not a number", 5: r"^P2: must exceed P1",
-               6: r"^Q1: \|Q1\| = 900 must be < mu P1 = 10",
-               7: r"^Q1: must be finite", 8: r"^Q1: missing"}, (3, 9)),
-    RowErrors("sweep: bad values in the mu column",
-              ("sweep", "{d}/cases_mu.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/mu.csv"),
-              "mu.csv", {3: r"^mu: must be > 0", 4: r"^mu: 'high' is not a number"}, (2, 5)),
-    RowErrors("sweep: module law beyond its maximum in one row",
-              ("sweep", "{d}/cases_cubic.csv", "--law", "module", "--module", "{d}/cubic.py",
-               "--param", "E_star=1", "--param", "k=0.1", "--mu", "0.1", "--out", "{d}/cubic.csv"),
-              "cubic.csv", {3: r"^P1: no contact half-width of the cubic law"}, (2, 4)),
-]  # fmt: skip
+    RowErrors(
+        "sweep: bad rows",
+        ("sweep", "{d}/cases_bad_rows.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/rows.csv"),
+        "rows.csv",
+        {
+            4: r"^P2: '1o5' is not a number",
+            5: r"^P2: must exceed P1",
+            6: r"^Q1: \|Q1\| = 900 must be < mu P1 = 10",
+            7: r"^Q1: must be finite",
+            8: r"^Q1: missing",
+        },
+        (3, 9),
+    ),
+    RowErrors(
+        "sweep: bad values in the mu column",
+        ("sweep", "{d}/cases_mu.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/mu.csv"),
+        "mu.csv",
+        {3: r"^mu: must be > 0", 4: r"^mu: 'high' is not a number"},
+        (2, 5),
+    ),
+    RowErrors(
+        "sweep: module law beyond its maximum in one row",
+        (
+            "sweep",
+            "{d}/cases_cubic.csv",
+            "--law",
+            "module",
+            "--module",
+            "{d}/cubic.py",
+            "--param",
+            "E_star=1",
+            "--param",
+            "k=0.1",
+            "--mu",
+            "0.1",
+            "--out",
+            "{d}/cubic.csv",
+        ),
+        "cubic.csv",
+        {3: r"^P1: no contact half-width of the cubic law"},
+        (2, 4),
+    ),
+]
 
 
 # --- the tests ----------------------------------------------------------------------------------
@@ -1121,8 +2056,9 @@ def test_borderline_valid_input_works(case: Valid, files: Path):
 
 
 @pytest.mark.parametrize("case", ROW_ERRORS, ids=[case.id for case in ROW_ERRORS])
-def test_sweep_rows_that_break_a_rule_get_their_reason_and_the_others_go_on(case: RowErrors,
-                                                                             files: Path):
+def test_sweep_rows_that_break_a_rule_get_their_reason_and_the_others_go_on(
+    case: RowErrors, files: Path
+):
     status, out, err = run(expand(case.argv, files))
     assert status == 1, err
     assert "Traceback" not in err
@@ -1131,8 +2067,11 @@ def test_sweep_rows_that_break_a_rule_get_their_reason_and_the_others_go_on(case
         rows = list(reader)
     source = Path(expand((case.argv[1],), files)[0]).read_text().splitlines()
     # output row k comes from the k-th data line of the input (blank and comment lines skipped)
-    data_lines = [number for number, line in enumerate(source, start=1)
-                  if line.strip() and not line.startswith("#")][1:]  # fmt: skip
+    data_lines = [
+        number
+        for number, line in enumerate(source, start=1)
+        if line.strip() and not line.startswith("#")
+    ][1:]
     assert len(rows) == len(data_lines)
     by_line = dict(zip(data_lines, rows, strict=True))
     for line, rule in case.errors.items():
@@ -1147,8 +2086,16 @@ def test_sweep_rows_that_break_a_rule_get_their_reason_and_the_others_go_on(case
 
 def test_the_table_has_at_least_80_cases_across_every_command():
     commands = {case.argv[0] for case in BAD if case.argv} | {case.argv[0] for case in VALID}
-    assert {"slip-zone", "traction", "slip", "figure", "derive", "sweep", "solve",
-            "calibrate"} <= commands
+    assert {
+        "slip-zone",
+        "traction",
+        "slip",
+        "figure",
+        "derive",
+        "sweep",
+        "solve",
+        "calibrate",
+    } <= commands
     assert len(BAD) + len(VALID) + len(ROW_ERRORS) >= 80
 
 
@@ -1156,8 +2103,9 @@ SWEEP_FILE_CASES = [case for case in BAD if case.id.startswith("sweep: CASES")]
 
 
 @pytest.mark.parametrize("case", SWEEP_FILE_CASES, ids=[case.id for case in SWEEP_FILE_CASES])
-def test_bad_cases_files_are_refused_the_same_without_pyarrow(case: Bad, files: Path,
-                                                              monkeypatch: pytest.MonkeyPatch):
+def test_bad_cases_files_are_refused_the_same_without_pyarrow(
+    case: Bad, files: Path, monkeypatch: pytest.MonkeyPatch
+):
     """The sweep reads with NumPy alone when pyarrow (the parquet extra) is not installed."""
     from asymslip.files import arrow
 
@@ -1170,29 +2118,78 @@ def test_bad_cases_files_are_refused_the_same_without_pyarrow(case: Bad, files: 
 # --- real processes: exit status, traceback, warnings at import, missing extras ----------------
 #: A sample of the table run as real `python -m asymslip` processes under PYTHONWARNINGS=error.
 PROCESS_SAMPLE = (
-    "slip-zone --Q1 -inf", "--Q1=1e308 --Q2=-1e308 overflows", "traction --x nan",
-    "figure: --out under a file", "sweep: --out is the input", "solve: a falling profile -x**2",
-)  # fmt: skip
+    "slip-zone --Q1 -inf",
+    "--Q1=1e308 --Q2=-1e308 overflows",
+    "traction --x nan",
+    "figure: --out under a file",
+    "sweep: --out is the input",
+    "solve: a falling profile -x**2",
+)
 VALID_PROCESS_SAMPLE = ("--Q1 -1e-1 (negative exponent)",)
 
 #: (extra, the package it provides, a command that needs it, the file it must not leave).
 MISSING_EXTRAS = [
-    ("plot", "matplotlib", ("figure", "fig5", "--out", "{d}/figures_without_matplotlib"),
-     "figures_without_matplotlib"),
-    ("special", "scipy", ("traction", "--law", "power", "--A", "1", "--n", "3", "--E-star", "1",
-                          *cycle(), "--x", "1"), None),
-    ("derive", "sympy", ("derive", "--P-of-a", "a**2", "--name", "square", "--out",
-                         "{d}/square.py"), "square.py"),
-    ("parquet", "pyarrow", ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out",
-                            "{d}/out.parquet"), "out.parquet"),
-]  # fmt: skip
+    (
+        "plot",
+        "matplotlib",
+        ("figure", "fig5", "--out", "{d}/figures_without_matplotlib"),
+        "figures_without_matplotlib",
+    ),
+    (
+        "special",
+        "scipy",
+        (
+            "traction",
+            "--law",
+            "power",
+            "--A",
+            "1",
+            "--n",
+            "3",
+            "--E-star",
+            "1",
+            *cycle(),
+            "--x",
+            "1",
+        ),
+        None,
+    ),
+    (
+        "derive",
+        "sympy",
+        ("derive", "--P-of-a", "a**2", "--name", "square", "--out", "{d}/square.py"),
+        "square.py",
+    ),
+    (
+        "parquet",
+        "pyarrow",
+        ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/out.parquet"),
+        "out.parquet",
+    ),
+]
 #: (package, a command that must work without it): only what needs an extra may refuse.
 WITHOUT_EXTRAS = [
-    ("scipy", ("slip-zone", "--law", "power", "--A", "1", "--n", "2.5", "--E-star", "1",
-               *cycle(), "--json")),
-    ("pyarrow", ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out",
-                 "{d}/without_pyarrow.csv")),
-]  # fmt: skip
+    (
+        "scipy",
+        (
+            "slip-zone",
+            "--law",
+            "power",
+            "--A",
+            "1",
+            "--n",
+            "2.5",
+            "--E-star",
+            "1",
+            *cycle(),
+            "--json",
+        ),
+    ),
+    (
+        "pyarrow",
+        ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/without_pyarrow.csv"),
+    ),
+]
 
 
 #: One process with every optional package unimportable, as if none were installed
@@ -1228,14 +2225,23 @@ def processes(files: Path) -> Iterator[dict[tuple[str, str], subprocess.Popen[st
         commands["sample", name] = ["-m", "asymslip", *expand(bad[name].argv, files)]
     for name in VALID_PROCESS_SAMPLE:
         commands["sample", name] = ["-m", "asymslip", *expand(valid[name].argv, files)]
-    extras = [expand(argv, files) for _, _, argv, _ in MISSING_EXTRAS] + \
-        [expand(argv, files) for _, argv in WITHOUT_EXTRAS]  # fmt: skip
+    extras = [expand(argv, files) for _, _, argv, _ in MISSING_EXTRAS] + [
+        expand(argv, files) for _, argv in WITHOUT_EXTRAS
+    ]
     commands["extras", "none installed"] = ["-c", WITHOUT_OPTIONAL_PACKAGES, json.dumps(extras)]
     environment = {**os.environ, "PYTHONWARNINGS": "error"}
     commands["pipe", "closed"] = ["-m", "asymslip", "slip-zone", *hertz()]
-    running = {key: subprocess.Popen([sys.executable, *arguments], cwd=files, env=environment,
-                                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-               for key, arguments in commands.items()}  # fmt: skip
+    running = {
+        key: subprocess.Popen(
+            [sys.executable, *arguments],
+            cwd=files,
+            env=environment,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
+        for key, arguments in commands.items()
+    }
     # `asymslip ... | head -1`: the reader is gone before the command prints.
     running["pipe", "closed"].stdout.close()
     running["pipe", "closed"].stdout = None
@@ -1246,8 +2252,9 @@ def processes(files: Path) -> Iterator[dict[tuple[str, str], subprocess.Popen[st
         process.communicate()
 
 
-def finish(running: dict[tuple[str, str], subprocess.Popen[str]],
-           kind: str) -> dict[str, tuple[int, str, str]]:  # fmt: skip
+def finish(
+    running: dict[tuple[str, str], subprocess.Popen[str]], kind: str
+) -> dict[str, tuple[int, str, str]]:
     """Wait for the processes of one kind: name -> (exit status, stdout, stderr)."""
     results = {}
     for (group, name), process in running.items():
@@ -1285,9 +2292,9 @@ def extras_results(processes: dict) -> list[tuple[int, str, str]]:
 
 def test_a_missing_optional_dependency_is_one_line_naming_the_extra(files: Path, processes: dict):
     results = extras_results(processes)
-    for (extra, _, _, written), (status, _, err) in zip(MISSING_EXTRAS,
-                                                          results[:len(MISSING_EXTRAS)],
-                                                          strict=True):  # fmt: skip
+    for (extra, _, _, written), (status, _, err) in zip(
+        MISSING_EXTRAS, results[: len(MISSING_EXTRAS)], strict=True
+    ):
         assert status == 2, (extra, err)
         assert "Traceback" not in err and len(err.splitlines()) == 1, (extra, err)
         assert f"pip install 'asymslip[{extra}]'" in err, (extra, err)
@@ -1296,8 +2303,13 @@ def test_a_missing_optional_dependency_is_one_line_naming_the_extra(files: Path,
 
 
 def test_what_needs_no_optional_dependency_works_without_them(files: Path, processes: dict):
-    results = dict(zip((package for package, _ in WITHOUT_EXTRAS),
-                       extras_results(processes)[len(MISSING_EXTRAS):], strict=True))  # fmt: skip
+    results = dict(
+        zip(
+            (package for package, _ in WITHOUT_EXTRAS),
+            extras_results(processes)[len(MISSING_EXTRAS) :],
+            strict=True,
+        )
+    )
     for package, _ in WITHOUT_EXTRAS:
         status, out, err = results[package]
         assert status == 0 and "Traceback" not in err, (package, err)
@@ -1322,10 +2334,18 @@ def test_the_second_order_width_in_scaled_units_is_the_kernel_at_ordinary_values
     law, mu, P1, dP, lam = HertzLaw(1, 1), 0.1, 100.0, 5.0, 0.2
     state = law.cycle_state(P1, dP)
     a1 = float(state.a1)
-    direct = kernel(mu, lam, eta, a1, state.a_slope1, state.L_I1, state.L_I_slope1, dP,
-                    other_edge)  # fmt: skip
-    scaled = a1 * kernel(1.0, lam / mu, eta * a1 / mu, 1.0, state.a_slope1 * dP / a1,
-                         state.L_I1 * a1**1.5 / dP, state.L_I_slope1 * a1**1.5, 1.0, other_edge)
+    direct = kernel(mu, lam, eta, a1, state.a_slope1, state.L_I1, state.L_I_slope1, dP, other_edge)
+    scaled = a1 * kernel(
+        1.0,
+        lam / mu,
+        eta * a1 / mu,
+        1.0,
+        state.a_slope1 * dP / a1,
+        state.L_I1 * a1**1.5 / dP,
+        state.L_I_slope1 * a1**1.5,
+        1.0,
+        other_edge,
+    )
     assert float(scaled) == pytest.approx(float(direct), rel=1e-14)
     sigma2 = eta * dP
     result = slip_zone(law, LoadCycle(P1, 0.0, P1 + dP, lam * dP, 0.0, sigma2), mu)

@@ -25,8 +25,26 @@ from tests.accuracy.references import (
 )
 from tests.test_fig5 import asymptotic_error, paper_state
 
-FIG5 = ["--law", "hertz", "--R", "1", "--E-star", "1", "--mu", "0.1", "--P1", "100", "--Q1", "0",
-        "--P2", "105", "--Q2", "1"]  # fmt: skip
+FIG5 = [
+    "--law",
+    "hertz",
+    "--R",
+    "1",
+    "--E-star",
+    "1",
+    "--mu",
+    "0.1",
+    "--P1",
+    "100",
+    "--Q1",
+    "0",
+    "--P2",
+    "105",
+    "--Q2",
+    "1",
+]
+
+
 def run(arguments, capsys) -> subprocess.CompletedProcess:
     """``asymslip *arguments`` in this process: exit status, stdout and stderr."""
     try:
@@ -37,9 +55,26 @@ def run(arguments, capsys) -> subprocess.CompletedProcess:
     return subprocess.CompletedProcess(arguments, status, captured.out, captured.err)
 
 
-KEYS = ["a1", "a2", "lam", "eta", "L_I1", "L_I2", "L_II1", "L_II2", "b", "slip_zone_width",
-        "b_accuracy", "b_paper", "b_first_order", "b_exact", "b_corrective_stick",
-        "slip_direction", "validity", "warnings"]  # fmt: skip
+KEYS = [
+    "a1",
+    "a2",
+    "lam",
+    "eta",
+    "L_I1",
+    "L_I2",
+    "L_II1",
+    "L_II2",
+    "b",
+    "slip_zone_width",
+    "b_accuracy",
+    "b_paper",
+    "b_first_order",
+    "b_exact",
+    "b_corrective_stick",
+    "slip_direction",
+    "validity",
+    "warnings",
+]
 
 
 def test_slip_zone_json_prints_exactly_the_api_result(capsys):
@@ -93,8 +128,9 @@ def test_bad_input_gives_one_line_naming_the_option_and_exit_status_2(change, op
 def test_python_dash_m_asymslip_exits_with_the_status_and_the_one_line_of_main():
     arguments = list(FIG5)
     arguments[arguments.index("--mu") + 1] = "-1"
-    completed = subprocess.run([sys.executable, "-m", "asymslip", "slip-zone", *arguments],
-                               capture_output=True, text=True)  # fmt: skip
+    completed = subprocess.run(
+        [sys.executable, "-m", "asymslip", "slip-zone", *arguments], capture_output=True, text=True
+    )
     assert completed.returncode == 2
     assert completed.stderr.startswith("asymslip: error: --mu: must be > 0")
     assert len(completed.stderr.strip().splitlines()) == 1 and "Traceback" not in completed.stderr
@@ -115,8 +151,17 @@ def test_traction_json_gives_the_paper_fig5_errors_at_the_centre_and_near_the_ed
     a2 = float(paper_state()["a2"])  # (29) by hand
     assert main(["traction", *FIG5, "--x", "0", repr(0.9 * a2), "--b", "exact", "--json"]) == 0
     printed = json.loads(capsys.readouterr().out)
-    assert list(printed) == ["edge", "x", "q_diff", "q_diff_exact", "near_edge", "near_edge_from",
-                             "b", "stick_boundary", "warnings"]  # fmt: skip
+    assert list(printed) == [
+        "edge",
+        "x",
+        "q_diff",
+        "q_diff_exact",
+        "near_edge",
+        "near_edge_from",
+        "b",
+        "stick_boundary",
+        "warnings",
+    ]
     # Near the edge means x >= 0.9 a2 (the paper's "10 % of the distance in from the contact
     # edge"): not the centre, where the edge asymptote is not meant to hold.  The point 0.9 a2
     # lies on that limit itself (to the last bit of a2): its flag must follow the limit printed.
@@ -174,13 +219,17 @@ def _law_by_hand(options):
     E_star = mpmath.mpf(options["--E-star"])
     if options["--law"] == "flat-rounded":  # the published law, P(a) in closed form
         c, R = mpmath.mpf(options["--flat-half-width"]), mpmath.mpf(options["--R"])
-        return (lambda P: flat_half_width_mp(P, c, R, E_star),
-                lambda a: flat_load_slope_mp(a, c, R, E_star))  # fmt: skip
+        return (
+            lambda P: flat_half_width_mp(P, c, R, E_star),
+            lambda a: flat_load_slope_mp(a, c, R, E_star),
+        )
     # P = K E* A a^n, K from quadrature of the plane-contact relation
     A, n = mpmath.mpf(options["--A"]), mpmath.mpf(options["--n"])
     K = power_shape_factor(n)
-    return (lambda P: power_half_width_mp(P, n, A, E_star, K),
-            lambda a: n * K * E_star * A * a ** (n - 1))  # fmt: skip
+    return (
+        lambda P: power_half_width_mp(P, n, A, E_star, K),
+        lambda a: n * K * E_star * A * a ** (n - 1),
+    )
 
 
 @pytest.mark.parametrize(

@@ -24,8 +24,13 @@ def test_solve_reports_both_edges_with_bounds_and_every_estimate_in_elements(cap
     assert data["slip_direction"] == 1 and data["left"]["slip_direction"] == -1
     for edge in (data, data["left"]):
         assert edge["b_error"] > 0
-        assert set(edge["asymptotes"]) == {"b", "b_paper", "b_first_order", "b_corrective_stick",
-                                           "b_exact"}  # fmt: skip
+        assert set(edge["asymptotes"]) == {
+            "b",
+            "b_paper",
+            "b_first_order",
+            "b_corrective_stick",
+            "b_exact",
+        }
         # Without tension the exact a(P_K) lies within one bound of the solver.
         assert abs(edge["asymptotes"]["b_exact"]["elements"]) < 1
 
@@ -40,27 +45,45 @@ def test_solve_writes_the_curves_and_the_picture(tmp_path, capsys):
 def test_solve_takes_a_general_load_path_from_a_csv(tmp_path, capsys):
     path = tmp_path / "path.csv"
     path.write_text("P,Q\n100,0\n105,1\n100,0\n")
-    data = run_json(capsys, "solve", *HERTZ, "--mu", "0.1", "--path", str(path),
-                    "--elements", "600")  # fmt: skip
+    data = run_json(
+        capsys, "solve", *HERTZ, "--mu", "0.1", "--path", str(path), "--elements", "600"
+    )
     # The same cycle as Fig. 5, so the same stick boundary within the bounds.
-    assert abs(data["b"] - slip_zone(HertzLaw(1, 1), LoadCycle(100, 0, 105, 1), 0.1).b_exact) \
-        <= data["b_error"]  # fmt: skip
+    assert (
+        abs(data["b"] - slip_zone(HertzLaw(1, 1), LoadCycle(100, 0, 105, 1), 0.1).b_exact)
+        <= data["b_error"]
+    )
 
 
 def test_solve_takes_a_typed_profile_with_its_modulus(capsys):
-    data = run_json(capsys, "solve", "--profile", "x**2/(2*R)", "--param", "R=1",
-                    "--E-star", "1", *FIG5, "--elements", "600")  # fmt: skip
+    data = run_json(
+        capsys,
+        "solve",
+        "--profile",
+        "x**2/(2*R)",
+        "--param",
+        "R=1",
+        "--E-star",
+        "1",
+        *FIG5,
+        "--elements",
+        "600",
+    )
     exact = slip_zone(HertzLaw(1, 1), LoadCycle(100, 0, 105, 1), 0.1).b_exact
     assert abs(data["b"] - exact) <= data["b_error"]
 
 
-@pytest.mark.parametrize("arguments, option", [
-    (["--law", "table", "--table", "t.csv"], "--table"),
-    (["--profile", "x**2/2"], "--E-star"),
-    (["--law", "hertz", "--R", "1", "--E-star", "1", "--elements", "3"], "--elements"),
-])  # fmt: skip
-def test_solve_refuses_what_it_cannot_solve_in_one_line(arguments, option, capsys, tmp_path,
-                                                         monkeypatch):  # fmt: skip
+@pytest.mark.parametrize(
+    "arguments, option",
+    [
+        (["--law", "table", "--table", "t.csv"], "--table"),
+        (["--profile", "x**2/2"], "--E-star"),
+        (["--law", "hertz", "--R", "1", "--E-star", "1", "--elements", "3"], "--elements"),
+    ],
+)
+def test_solve_refuses_what_it_cannot_solve_in_one_line(
+    arguments, option, capsys, tmp_path, monkeypatch
+):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "t.csv").write_text("P,a\n1,1\n2,1.4\n3,1.7\n4,2\n")
     assert main(["solve", *arguments, *FIG5]) == 2
@@ -76,8 +99,9 @@ def hertz_traces(tmp_path_factory):
     for P in (90, 95, 100, 105, 110, 115):
         a = float(law.half_width(P))
         x = np.linspace(-1.1 * a, 1.1 * a, 121)
-        rows += [f"{P},{float(u)!r},{float(v)!r}" for u, v in zip(x, law.pressure(x, P),
-                                                                  strict=True)]  # fmt: skip
+        rows += [
+            f"{P},{float(u)!r},{float(v)!r}" for u, v in zip(x, law.pressure(x, P), strict=True)
+        ]
     path = tmp_path_factory.mktemp("traces") / "traces.csv"
     path.write_text("\n".join(rows) + "\n")
     return path
@@ -89,8 +113,9 @@ def test_calibrate_then_slip_zone_with_the_calibrated_law_gives_the_hertz_slip_z
     saved = tmp_path / "cal.json"
     data = run_json(capsys, "calibrate", str(hertz_traces), "--out", str(saved))
     assert {entry["P"] for entry in data["right"]} == {90, 95, 100, 105, 110, 115}
-    calibrated = run_json(capsys, "slip-zone", "--law", "calibrated", "--calibration",
-                          str(saved), *FIG5)  # fmt: skip
+    calibrated = run_json(
+        capsys, "slip-zone", "--law", "calibrated", "--calibration", str(saved), *FIG5
+    )
     # (17) with the edges' own multipliers: the Hertz law's (22), within the stated accuracy.
     paper = slip_zone(HertzLaw(1, 1), LoadCycle(100, 0, 105, 1), 0.1).b_paper
     assert abs(calibrated["b"] - paper) <= calibrated["b_accuracy"]
@@ -105,8 +130,9 @@ def test_calibrate_refuses_a_single_load_naming_the_file(tmp_path, capsys):
     assert len(error) == 1 and "one.csv" in error[0]
 
 
-def test_traction_and_slip_with_the_calibrated_law_match_the_hertz_law(hertz_traces, tmp_path,
-                                                                       capsys):  # fmt: skip
+def test_traction_and_slip_with_the_calibrated_law_match_the_hertz_law(
+    hertz_traces, tmp_path, capsys
+):
     saved = tmp_path / "cal.json"
     assert main(["calibrate", str(hertz_traces), "--out", str(saved)]) == 0
     capsys.readouterr()
@@ -116,5 +142,6 @@ def test_traction_and_slip_with_the_calibrated_law_match_the_hertz_law(hertz_tra
     hertz = run_json(capsys, "traction", *HERTZ, *FIG5, *x)
     assert calibrated["q_diff"] == pytest.approx(hertz["q_diff"], rel=1e-3)
     slip = run_json(capsys, "slip", *law, "--E-star", "1", *FIG5, *x)
-    assert slip["slip"] == pytest.approx(run_json(capsys, "slip", *HERTZ, *FIG5, *x)["slip"],
-                                         rel=1e-3)  # fmt: skip
+    assert slip["slip"] == pytest.approx(
+        run_json(capsys, "slip", *HERTZ, *FIG5, *x)["slip"], rel=1e-3
+    )

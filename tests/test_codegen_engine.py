@@ -27,8 +27,16 @@ ARGS = (Argument(x, "position"), Argument(a, "half-width"))
 
 
 def _formula(expr, args=ARGS, name="kernel"):
-    return Formula(name=name, args=args, expr=expr, equations=("15",), summary="A kernel.",
-                   doc="For the tests.", module="demo", source="derivations/demo.py")  # fmt: skip
+    return Formula(
+        name=name,
+        args=args,
+        expr=expr,
+        equations=("15",),
+        summary="A kernel.",
+        doc="For the tests.",
+        module="demo",
+        source="derivations/demo.py",
+    )
 
 
 def test_piecewise_is_refused_because_numpy_evaluates_every_branch():
@@ -98,9 +106,13 @@ def test_every_language_renders_the_same_bytes_under_different_hash_seeds():
     # The three interpreters run at once (they share nothing), so two cores halve the wait.
     processes = [
         subprocess.Popen(
-            [sys.executable, "-c", RENDER_EVERYTHING], cwd=ROOT, stdout=subprocess.PIPE,
-            stderr=subprocess.PIPE, text=True, env={**os.environ, "PYTHONHASHSEED": seed},
-        )  # fmt: skip
+            [sys.executable, "-c", RENDER_EVERYTHING],
+            cwd=ROOT,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+            env={**os.environ, "PYTHONHASHSEED": seed},
+        )
         for seed in ("0", "1", "4242")
     ]
     digests = set()
@@ -115,7 +127,8 @@ def _write_tiny_derivations(folder):
     """Two scripts, the second importing a building block of the first relatively."""
     folder.mkdir()
     (folder / "_symbols.py").write_text("import sympy\n\nx = sympy.Symbol('x', positive=True)\n")
-    (folder / "first.py").write_text(textwrap.dedent("""
+    (folder / "first.py").write_text(
+        textwrap.dedent("""
         from asymslip.codegen import Derivation
 
         from ._symbols import x
@@ -127,8 +140,10 @@ def _write_tiny_derivations(folder):
 
         def derive():
             return Derivation(__file__)
-    """))
-    (folder / "second.py").write_text(textwrap.dedent("""
+    """)
+    )
+    (folder / "second.py").write_text(
+        textwrap.dedent("""
         from asymslip.codegen import Argument, Derivation
 
         from ._symbols import x
@@ -141,7 +156,8 @@ def _write_tiny_derivations(folder):
             d.emit(name="square", args=(Argument(x, "x > 0."),), expr=square(),
                    equations=("1",), summary="x^2.", doc="Square.", module="tiny")
             return d
-    """))
+    """)
+    )
 
 
 def test_derivations_load_as_a_package_with_relative_imports_and_no_sys_path_entry(tmp_path):

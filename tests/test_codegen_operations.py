@@ -79,8 +79,12 @@ def test_the_slip_zone_width_kernel_needs_12_operations_instead_of_16():
 
 
 def test_the_record_keeps_the_derivation_form_and_the_rewrite_is_the_same_formula():
-    for name in ("stick_boundary_proportional", "slip_zone_width", "stick_boundary_denominator",
-                 "slip_zone_width_first_order"):  # fmt: skip
+    for name in (
+        "stick_boundary_proportional",
+        "slip_zone_width",
+        "stick_boundary_denominator",
+        "slip_zone_width_first_order",
+    ):
         formula = records()[name]
         reduced = reduce_formula(formula)
         assert reduced.formula.expr == formula.expr
@@ -93,15 +97,19 @@ def test_scaling_by_powers_of_two_gives_the_same_bits_as_the_derivation_form():
     # with SymPy's own CSE'd printing of the derivation's expression (the kernels before).
     rng = np.random.default_rng(7)
     count = 10_000
-    mu_, lam_, eta_ = rng.uniform(0.05, 1.5, count), rng.uniform(-2, 2, count), \
-        rng.uniform(-0.5, 0.5, count)  # fmt: skip
+    mu_, lam_, eta_ = (
+        rng.uniform(0.05, 1.5, count),
+        rng.uniform(-2, 2, count),
+        rng.uniform(-0.5, 0.5, count),
+    )
     a1 = rng.uniform(0.5, 2.0, count)
     da = a1 * 10.0 ** rng.uniform(-8, -1, count)
     L_I1 = rng.uniform(0.5, 2.0, count)
     L_I2 = L_I1 * (1 + da / a1 / 4)
     for kernel, second in ((stick_boundary_proportional, a1 + da), (slip_zone_width, da)):
         formula = records()[kernel.__name__]
-        derivation_form = sympy.lambdify([arg.symbol for arg in formula.args], formula.expr,
-                                         modules="numpy", cse=True)  # fmt: skip
+        derivation_form = sympy.lambdify(
+            [arg.symbol for arg in formula.args], formula.expr, modules="numpy", cse=True
+        )
         arguments = (mu_, lam_, eta_, a1, second, L_I1, L_I2)
         assert np.array_equal(kernel(*arguments), derivation_form(*arguments)), kernel.__name__

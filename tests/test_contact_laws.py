@@ -77,6 +77,7 @@ def test_flat_multiplier_matches_eq19_with_quadrature_slope(a, c):
 def test_flat_multiplier_slope_matches_central_difference_of_eq19():
     law, P = FLAT, 0.8
     with mpmath.workdps(40):
+
         def multiplier(load):
             a = flat_half_width_mp(load, 1, 5, 2)
             dP_da = 2 * a * mpmath.acos(1 / a) / 5  # d/da of the published law, by hand
@@ -92,8 +93,14 @@ def test_flat_law_reduces_to_hertz_eq29_for_c_zero():
     np.testing.assert_allclose(law.half_width(P) ** 2, 4 * P * 2.0 / (np.pi * 3.0), rtol=4e-16)
 
 
-PRESSURE_POINTS = [(2.0, 1.0, 0.0), (2.0, 1.0, 0.6), (2.0, 1.0, -1.4), (2.0, 1.0, 1.97),
-                   (1.1, 1.0, 0.5), (3.0, 0.5, 2.0)]  # (a, c, x)  # fmt: skip
+PRESSURE_POINTS = [
+    (2.0, 1.0, 0.0),
+    (2.0, 1.0, 0.6),
+    (2.0, 1.0, -1.4),
+    (2.0, 1.0, 1.97),
+    (1.1, 1.0, 0.5),
+    (3.0, 0.5, 2.0),
+]  # (a, c, x)
 
 
 @pytest.mark.parametrize("a, c, x", PRESSURE_POINTS)
@@ -129,8 +136,22 @@ def test_flat_pressure_warns_nowhere_on_the_contact_and_is_zero_outside(c):
     law = FlatRoundedLaw(c=c, R=1.0, E_star=1.0)
     P = 0.3
     a = float(law.half_width(P))
-    x = np.array([0.0, -0.0, c, -c, np.nextafter(c, 0), np.nextafter(c, 9), a, -a,
-                  np.nextafter(a, 0), 1.5 * a, -1e300, 1e-300])  # fmt: skip
+    x = np.array(
+        [
+            0.0,
+            -0.0,
+            c,
+            -c,
+            np.nextafter(c, 0),
+            np.nextafter(c, 9),
+            a,
+            -a,
+            np.nextafter(a, 0),
+            1.5 * a,
+            -1e300,
+            1e-300,
+        ]
+    )
     p = no_warnings(law.pressure, x, P)
     assert np.all(np.isfinite(p)) and np.all(p >= 0)
     assert np.all(p[np.abs(x) >= a] == 0)
@@ -199,8 +220,9 @@ def test_power_law_n2_reproduces_eq29_and_eq31():
     law = PowerLaw(A=1 / (2 * R), n=2.0, E_star=E_star)
     a = law.half_width(P)
     np.testing.assert_allclose(a**2, 4 * P * R / (np.pi * E_star), rtol=4e-16)  # (29)
-    np.testing.assert_allclose(law.normal_multiplier(P), E_star / R * np.sqrt(a / 2),
-                               rtol=1e-15)  # (31)  # fmt: skip
+    np.testing.assert_allclose(
+        law.normal_multiplier(P), E_star / R * np.sqrt(a / 2), rtol=1e-15
+    )  # (31)
 
 
 @pytest.mark.parametrize("n", [1.0, 1.5, 3.0])
@@ -210,7 +232,10 @@ def test_power_multiplier_matches_eq19_with_quadrature_slope(n):
     with mpmath.workdps(30):
         dP_da = load_slope_by_quadrature(
             lambda t: power_slope(t, 0.7, n),
-            lambda t: n * (n - 1) * 0.7 * abs(t) ** (n - 2) if n != 1 else 0, a, 1.3)
+            lambda t: n * (n - 1) * 0.7 * abs(t) ** (n - 2) if n != 1 else 0,
+            a,
+            1.3,
+        )
         reference = eq19(a, dP_da)
     assert abs(law.normal_multiplier(law.load(a)) - reference) < 1e-13 * reference
 
@@ -232,8 +257,10 @@ def test_power_multiplier_slope_is_the_derivative_of_eq19(n):
 
 
 def shape_factor_mp(n):
-    return mpmath.sqrt(mpmath.pi) * mpmath.gamma((mpmath.mpf(n) + 1) / 2) / mpmath.gamma(
-        mpmath.mpf(n) / 2
+    return (
+        mpmath.sqrt(mpmath.pi)
+        * mpmath.gamma((mpmath.mpf(n) + 1) / 2)
+        / mpmath.gamma(mpmath.mpf(n) / 2)
     )
 
 
@@ -261,8 +288,9 @@ def test_power_growth_keeps_full_relative_precision(relative_change, n):
     assert abs(computed - reference) < 1e-14 * reference
 
 
-@pytest.mark.parametrize("n, x", [(1.0, 0.3), (1.0, -1.1), (2.0, 0.4), (2.5, 0.0), (2.5, 0.9),
-                                  (3.0, -0.5), (1.2, 0.05)])  # fmt: skip
+@pytest.mark.parametrize(
+    "n, x", [(1.0, 0.3), (1.0, -1.1), (2.0, 0.4), (2.5, 0.0), (2.5, 0.9), (3.0, -0.5), (1.2, 0.05)]
+)
 def test_power_pressure_matches_principal_value_inversion_of_the_profile(n, x):
     if n not in (1.0, 2.0):
         pytest.importorskip("scipy")
@@ -291,8 +319,9 @@ def test_wedge_pressure_is_infinite_at_the_apex_without_a_warning():
     a = float(law.half_width(1.0))  # P = E* A a for the wedge: a = 2
     p = no_warnings(law.pressure, np.array([0.0, 1e-300, 0.5, a, -a, 3 * a]), 1.0)
     assert p[0] == np.inf
-    np.testing.assert_allclose(p[1:3], 0.5 / np.pi * np.arccosh(a / np.array([1e-300, 0.5])),
-                               rtol=1e-15)  # fmt: skip
+    np.testing.assert_allclose(
+        p[1:3], 0.5 / np.pi * np.arccosh(a / np.array([1e-300, 0.5])), rtol=1e-15
+    )
     assert np.all(p[3:] == 0.0)
 
 
@@ -328,24 +357,30 @@ def test_flat_half_width_refuses_a_load_too_small_to_separate_a_from_c():
 # --- invalid parameters ------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("kwargs, parameter", [
-    ({"c": -0.1, "R": 1.0, "E_star": 1.0}, "c"),
-    ({"c": float("nan"), "R": 1.0, "E_star": 1.0}, "c"),
-    ({"c": 1.0, "R": 0.0, "E_star": 1.0}, "R"),
-    ({"c": 1.0, "R": 1.0, "E_star": -2.0}, "E_star"),
-])  # fmt: skip
+@pytest.mark.parametrize(
+    "kwargs, parameter",
+    [
+        ({"c": -0.1, "R": 1.0, "E_star": 1.0}, "c"),
+        ({"c": float("nan"), "R": 1.0, "E_star": 1.0}, "c"),
+        ({"c": 1.0, "R": 0.0, "E_star": 1.0}, "R"),
+        ({"c": 1.0, "R": 1.0, "E_star": -2.0}, "E_star"),
+    ],
+)
 def test_flat_law_refuses_invalid_parameters_naming_them(kwargs, parameter):
     with pytest.raises(InputError) as error:
         FlatRoundedLaw(**kwargs)
     assert error.value.parameter == parameter
 
 
-@pytest.mark.parametrize("kwargs, parameter", [
-    ({"A": 0.0, "n": 2.0, "E_star": 1.0}, "A"),
-    ({"A": 1.0, "n": 0.99, "E_star": 1.0}, "n"),
-    ({"A": 1.0, "n": float("inf"), "E_star": 1.0}, "n"),
-    ({"A": 1.0, "n": 2.0, "E_star": 0.0}, "E_star"),
-])  # fmt: skip
+@pytest.mark.parametrize(
+    "kwargs, parameter",
+    [
+        ({"A": 0.0, "n": 2.0, "E_star": 1.0}, "A"),
+        ({"A": 1.0, "n": 0.99, "E_star": 1.0}, "n"),
+        ({"A": 1.0, "n": float("inf"), "E_star": 1.0}, "n"),
+        ({"A": 1.0, "n": 2.0, "E_star": 0.0}, "E_star"),
+    ],
+)
 def test_power_law_refuses_invalid_parameters_naming_them(kwargs, parameter):
     with pytest.raises(InputError) as error:
         PowerLaw(**kwargs)
@@ -355,11 +390,17 @@ def test_power_law_refuses_invalid_parameters_naming_them(kwargs, parameter):
 
 
 @pytest.mark.parametrize("law", [FLAT, PowerLaw(A=1.0, n=2.0, E_star=1.0)])
-@pytest.mark.parametrize("method, args, parameter", [
-    ("half_width", (0.0,), "P"), ("half_width", (-1.0,), "P"),
-    ("half_width_growth", (0.0, 1.0), "P1"), ("half_width_growth", (1.0, -1.0), "dP"),
-    ("pressure", (float("nan"), 1.0), "x"), ("normal_multiplier", (np.inf,), "P"),
-])  # fmt: skip
+@pytest.mark.parametrize(
+    "method, args, parameter",
+    [
+        ("half_width", (0.0,), "P"),
+        ("half_width", (-1.0,), "P"),
+        ("half_width_growth", (0.0, 1.0), "P1"),
+        ("half_width_growth", (1.0, -1.0), "dP"),
+        ("pressure", (float("nan"), 1.0), "x"),
+        ("normal_multiplier", (np.inf,), "P"),
+    ],
+)
 def test_law_methods_refuse_invalid_loads_naming_the_parameter(law, method, args, parameter):
     with pytest.raises(InputError) as error:
         getattr(law, method)(*args)
@@ -392,8 +433,11 @@ def test_inverse_keeps_the_shape_and_returns_a_float_for_a_scalar():
 def test_inverse_handles_a_flat_stretch_below_the_root():
     # Like the rounded flat: zero for a <= 3, where Newton's step is undefined.
     target = np.array([1e-12, 1.0, 8.0])
-    root = invert_increasing(lambda a: np.maximum(0.0, a - 3.0) ** 1.5, target,
-                             lambda a: 1.5 * np.sqrt(np.maximum(0.0, a - 3.0)))  # fmt: skip
+    root = invert_increasing(
+        lambda a: np.maximum(0.0, a - 3.0) ** 1.5,
+        target,
+        lambda a: 1.5 * np.sqrt(np.maximum(0.0, a - 3.0)),
+    )
     np.testing.assert_allclose(root, 3.0 + target ** (2 / 3), rtol=2 * EPS)
 
 
@@ -418,8 +462,9 @@ def test_growth_of_a_square_root_law_is_accurate_from_one_newton_correction(rela
     P1 = 2.0
     dP = P1 * relative_change
     load, slope = (lambda a: a * a), (lambda a: 2 * a)  # P = a^2: a = sqrt(P), P' = 2a
-    growth, found = growth_from(load, slope, lambda a, d: load_difference(slope, load, a, d),
-                                np.sqrt(P1), P1 + dP, dP)  # fmt: skip
+    growth, found = growth_from(
+        load, slope, lambda a, d: load_difference(slope, load, a, d), np.sqrt(P1), P1 + dP, dP
+    )
     with mpmath.workdps(50):
         reference = mpmath.sqrt(mpmath.mpf(P1) + mpmath.mpf(dP)) - mpmath.sqrt(P1)
     assert found

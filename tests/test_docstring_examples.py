@@ -25,8 +25,11 @@ MODULES = ["asymslip", *RUNTIME_MODULES]
 EXEMPT = {
     # The command line is documented by its --help and the README, and run by the tests of
     # each command (tests/test_cli*.py); its modules are argparse wiring over the API.
-    **{name: "command-line wiring (argparse) over the API; documented by --help"
-       for name in MODULES if name == "asymslip.cli" or name.startswith("asymslip.cli.")},
+    **{
+        name: "command-line wiring (argparse) over the API; documented by --help"
+        for name in MODULES
+        if name == "asymslip.cli" or name.startswith("asymslip.cli.")
+    },
     "asymslip.laws": "re-exports the law classes, whose modules carry the examples",
     "asymslip.files": "re-exports what its modules define; their docstrings carry the examples",
     "asymslip.files.arrow": "imports the optional pyarrow on demand: nothing to compute",
@@ -50,8 +53,10 @@ def problem_with_examples(module, exempt: bool) -> str | None:
     if exempt and result.attempted:
         return f"{module.__name__} has examples now: remove it from EXEMPT"
     if not exempt and not result.attempted:
-        return (f"{module.__name__} has no docstring example that runs: add one, or list the "
-                "module in EXEMPT with the reason it has none")  # fmt: skip
+        return (
+            f"{module.__name__} has no docstring example that runs: add one, or list the "
+            "module in EXEMPT with the reason it has none"
+        )
     return None
 
 

@@ -61,11 +61,13 @@ def test_backward_slip_reverses_the_traction_difference():
     x = np.array([0.0, 0.5 * _hertz_half_width(P1), 0.9 * _hertz_half_width(P1 + DP)])
     result = traction_difference(LAW, cycle, MU, x, stick_boundary="exact")
     P_K = P1 + DP * (MU - 0.5) / (2 * MU)
-    exact = -MU * (_hertz_pressure(x, P1 + DP) + _hertz_pressure(x, P1)
-                   - 2 * _hertz_pressure(x, P_K))  # (47), negated for backward slip
+    exact = -MU * (
+        _hertz_pressure(x, P1 + DP) + _hertz_pressure(x, P1) - 2 * _hertz_pressure(x, P_K)
+    )  # (47), negated for backward slip
     np.testing.assert_allclose(result.q_diff_exact, exact, rtol=1e-12)
-    forward = traction_difference(LAW, LoadCycle(P1, 0.0, P1 + DP, 0.5 * DP), MU, x,
-                                  stick_boundary="exact")  # fmt: skip
+    forward = traction_difference(
+        LAW, LoadCycle(P1, 0.0, P1 + DP, 0.5 * DP), MU, x, stick_boundary="exact"
+    )
     np.testing.assert_allclose(result.q_diff, -np.array(forward.q_diff), rtol=1e-14)
 
 

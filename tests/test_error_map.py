@@ -102,8 +102,9 @@ def test_without_tension_a_of_PK_lies_within_a_tenth_of_a_bound_of_the_solver():
 def test_where_an_edge_does_not_slip_the_solver_sticks_up_to_a1():
     sticking = [row for row in ROWS if row["slip_direction"] == "0"]
     assert len(sticking) == 48
-    assert all(abs(number(row, "b_elements")) <= number(row, "b_error_elements") for row in
-               sticking)  # fmt: skip
+    assert all(
+        abs(number(row, "b_elements")) <= number(row, "b_error_elements") for row in sticking
+    )
 
 
 def half_width(law: str, P: float) -> float:
@@ -131,8 +132,12 @@ def half_width(law: str, P: float) -> float:
 @pytest.mark.parametrize("law", LAWS)
 def test_b_exact_in_the_map_is_a_of_PK_from_33(law):
     """b_solver + b_exact_elements x element = a(P_K), P_K = (P1 + P2)/2 - |dQ|/(2 mu) (33)."""
-    laws = {"hertz": HertzLaw(1.0, 1.0), "flat-rounded": FlatRoundedLaw(1.0, 10.0, 1.0),
-            "power-1.5": PowerLaw(0.3, 1.5, 1.0), "power-3": PowerLaw(0.05, 3.0, 1.0)}  # fmt: skip
+    laws = {
+        "hertz": HertzLaw(1.0, 1.0),
+        "flat-rounded": FlatRoundedLaw(1.0, 10.0, 1.0),
+        "power-1.5": PowerLaw(0.3, 1.5, 1.0),
+        "power-3": PowerLaw(0.05, 3.0, 1.0),
+    }
     for row in (r for r in SLIPPING if r["law"] == law and not tension(r)):
         P1 = float(laws[law].load(2.0))
         P2 = float(laws[law].load(2.0 * number(row, "a2_a1")))
@@ -166,13 +171,20 @@ def test_with_tension_eq22_overstates_the_slip_zone_by_up_to_three_quarters():
 
 def test_b_is_within_its_stated_accuracy_plus_the_bound_wherever_eq27_is_at_most_a_tenth():
     chosen = [row for row in SLIPPING if number(row, "eq27") <= 0.1]
-    assert all(abs(number(row, "b_elements")) <= number(row, "b_accuracy_elements")
-               + number(row, "b_error_elements") for row in chosen)  # fmt: skip
+    assert all(
+        abs(number(row, "b_elements"))
+        <= number(row, "b_accuracy_elements") + number(row, "b_error_elements")
+        for row in chosen
+    )
 
 
 def test_where_b_exceeds_its_stated_accuracy_slip_zone_warns():
-    beyond = [row for row in SLIPPING if abs(number(row, "b_elements"))
-              > number(row, "b_accuracy_elements") + number(row, "b_error_elements")]  # fmt: skip
+    beyond = [
+        row
+        for row in SLIPPING
+        if abs(number(row, "b_elements"))
+        > number(row, "b_accuracy_elements") + number(row, "b_error_elements")
+    ]
     assert len(beyond) == 17  # the rounded flat and power n = 3, a2/a1 = 1.10, lam/mu >= 2
     assert all(row["validity_warning"] == "1" for row in beyond)
     assert {row["law"] for row in beyond} == {"flat-rounded", "power-3"}
@@ -187,11 +199,13 @@ def test_the_first_order_estimates_miss_by_more_than_two_bounds_before_any_warni
 # --- the CSV, its check and the report ------------------------------------------------------------
 def test_a_number_may_differ_by_one_unit_in_its_last_printed_place():
     row = dict(ROWS[0])
-    assert row_differences(row, {**row, "b_elements": f"{number(row, 'b_elements') + 1e-3:.3f}"}) \
-        == []  # fmt: skip
+    assert (
+        row_differences(row, {**row, "b_elements": f"{number(row, 'b_elements') + 1e-3:.3f}"}) == []
+    )
     assert row_differences(row, {**row, "b_elements": f"{number(row, 'b_elements') + 2e-3:.3f}"})
-    assert row_differences(row, {**row, "other_edge": "opposite" if row["other_edge"] == "same"
-                                 else "same"})  # fmt: skip
+    assert row_differences(
+        row, {**row, "other_edge": "opposite" if row["other_edge"] == "same" else "same"}
+    )
 
 
 def test_the_check_finds_a_changed_committed_number():
@@ -202,7 +216,7 @@ def test_the_check_finds_a_changed_committed_number():
     fields = lines[header + 1].split(",")
     column = list(COLUMNS).index("b_paper_elements")
     fields[column] = f"{float(fields[column]) + 0.01:.3f}"
-    tampered = "".join([*lines[: header + 1], ",".join(fields), *lines[header + 2:]])
+    tampered = "".join([*lines[: header + 1], ",".join(fields), *lines[header + 2 :]])
     problems = compare_texts(tampered, fresh_text)
     assert len(problems) == 1 and "b_paper_elements" in problems[0]
     assert compare_texts("".join(lines[:-2]), fresh_text)[0].startswith("the committed map has")
@@ -224,8 +238,12 @@ def test_the_code_generator_reads_the_file_the_figure_command_writes():
 def test_the_report_summary_reads_the_largest_errors_from_the_csv():
     section = "\n".join(error_map_section(TEXT))
     assert set(ERROR_MAP_ESTIMATES) == set(ESTIMATES)
-    worst = max(SLIPPING, key=lambda row: abs(number(row, "b_paper_elements")) if tension(row)
-                and row["law"] == "power-3" else 0)  # fmt: skip
+    worst = max(
+        SLIPPING,
+        key=lambda row: abs(number(row, "b_paper_elements"))
+        if tension(row) and row["law"] == "power-3"
+        else 0,
+    )
     value = f"{abs(number(worst, 'b_paper_elements')):.2f}"
     assert "| power n = 3 | yes | 60 |" in section and value in section
     committed = (ROOT / "generated" / "report" / "derivation.md").read_text(encoding="utf-8")
@@ -262,14 +280,25 @@ def test_the_committed_map_is_fresh_at_its_printed_precision():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("case", [("hertz", 1.10, 2.0, 0.5), ("power-3", 1.05, 0.5, 2.0)],
-                         ids=["same-way", "opposite"])  # fmt: skip
+@pytest.mark.parametrize(
+    "case", [("hertz", 1.10, 2.0, 0.5), ("power-3", 1.05, 0.5, 2.0)], ids=["same-way", "opposite"]
+)
 def test_the_left_edge_of_tau_is_the_right_edge_of_minus_tau(case):
     """By mirror symmetry: a fresh run with the tension reversed gives, at its right edge, the
     committed left edge (so the map's tau >= 0 covers both signs)."""
     law, ratio, lam_mu, tau = case
-    committed = next(row for row in ROWS if (row["law"], number(row, "a2_a1"), number(
-        row, "lam_mu"), number(row, "tau"), row["edge"]) == (*case, "left"))  # fmt: skip
+    committed = next(
+        row
+        for row in ROWS
+        if (
+            row["law"],
+            number(row, "a2_a1"),
+            number(row, "lam_mu"),
+            number(row, "tau"),
+            row["edge"],
+        )
+        == (*case, "left")
+    )
     mirrored = error_map([MapCase(law, ratio, lam_mu, -tau)])[0]
     assert mirrored["edge"] == "right"
     difference = abs(mirrored["b_solver"] - number(committed, "b_solver"))

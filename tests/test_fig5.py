@@ -60,8 +60,9 @@ def exact_allowance(x):
     """Rounding allowance of (47) as computed: 1e-12 of the pressures it subtracts (size
     mu p(0, P2)), plus each pressure's square-root sensitivity at its own edge."""
     P_K = eq33_permanent_stick_load(P1, DP, LAM, MU)
-    edges = sum(weight * edge_allowance(x, P, R, E_STAR)
-                for weight, P in ((1, P1 + DP), (1, P1), (2, P_K)))  # fmt: skip
+    edges = sum(
+        weight * edge_allowance(x, P, R, E_STAR) for weight, P in ((1, P1 + DP), (1, P1), (2, P_K))
+    )
     return 1e-12 * 4 * MU * eq48_pressure(0.0, P1 + DP, R, E_STAR) + MU * edges
 
 

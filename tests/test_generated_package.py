@@ -19,9 +19,12 @@ ROOT = Path(__file__).resolve().parents[1]
 GENERATED = ROOT / "generated" / "asymslip_gen"
 MODULES = sorted(GENERATED.glob("*.py"))
 OTHER_LANGUAGES = sorted(
-    [*(ROOT / "generated" / "c").glob("*.[ch]"), *(ROOT / "generated" / "fortran").glob("*.f90"),
-     *(ROOT / "generated" / "matlab").glob("*.m")]
-)  # fmt: skip
+    [
+        *(ROOT / "generated" / "c").glob("*.[ch]"),
+        *(ROOT / "generated" / "fortran").glob("*.f90"),
+        *(ROOT / "generated" / "matlab").glob("*.m"),
+    ]
+)
 EVERY_FILE = [*MODULES, GENERATED / "formulas.json", *OTHER_LANGUAGES]
 
 
@@ -29,8 +32,11 @@ EVERY_FILE = [*MODULES, GENERATED / "formulas.json", *OTHER_LANGUAGES]
 def test_committed_trees_equal_a_fresh_regeneration_under_two_hash_seeds():
     completed = subprocess.run(
         [sys.executable, "-m", "asymslip.codegen", "check"],
-        cwd=ROOT, capture_output=True, text=True, timeout=600,
-    )  # fmt: skip
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     assert completed.returncode == 0, completed.stdout[-4000:] + completed.stderr[-4000:]
 
 
@@ -40,8 +46,9 @@ def test_importing_the_runtime_packages_does_not_import_sympy_or_mpmath():
         "bad = sorted(m for m in sys.modules if m.split('.')[0] in {'sympy', 'mpmath', 'scipy'})\n"
         "print(','.join(bad))"
     )
-    completed = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                               check=True)  # fmt: skip
+    completed = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    )
     assert completed.stdout.strip() == ""
 
 
@@ -77,16 +84,18 @@ def test_the_record_file_says_do_not_edit_and_lists_every_function():
     assert "do not edit" in document["about"]
     import asymslip_gen
 
-    assert sorted(record["name"] for record in document["formulas"]) == sorted(
-        asymslip_gen.__all__
-    )
+    assert sorted(record["name"] for record in document["formulas"]) == sorted(asymslip_gen.__all__)
 
 
 def test_generated_python_passes_the_projects_own_ruff_check():
     # The project's configuration (pyproject.toml: line length 100, E/F/W/I/UP/B), not an
     # isolated one: banners and docstrings are wrapped by the emitter.
-    completed = subprocess.run([sys.executable, "-m", "ruff", "check", "generated/asymslip_gen"],
-                               cwd=ROOT, capture_output=True, text=True)  # fmt: skip
+    completed = subprocess.run(
+        [sys.executable, "-m", "ruff", "check", "generated/asymslip_gen"],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+    )
     assert completed.returncode == 0, completed.stdout
 
 
@@ -99,8 +108,11 @@ def test_generated_code_has_no_select_heaviside_or_piecewise(path):
 
 def _code_lines(path):
     comment = {".c": ("/*", "*"), ".h": ("/*", "*"), ".f90": ("!",), ".m": ("%",)}
-    return [line for line in path.read_text().splitlines()
-            if not line.strip().startswith(comment[path.suffix])]  # fmt: skip
+    return [
+        line
+        for line in path.read_text().splitlines()
+        if not line.strip().startswith(comment[path.suffix])
+    ]
 
 
 @pytest.mark.parametrize("path", OTHER_LANGUAGES, ids=lambda p: p.name)
@@ -109,8 +121,9 @@ def test_other_languages_are_branch_free(path):
     assert not re.search(r"\bif\b|\?|\bselect\b|piecewise|heaviside|\bwhere\b", code)
 
 
-@pytest.mark.parametrize("path", [p for p in MODULES if p.name != "__init__.py"],
-                         ids=lambda p: p.name)  # fmt: skip
+@pytest.mark.parametrize(
+    "path", [p for p in MODULES if p.name != "__init__.py"], ids=lambda p: p.name
+)
 def test_every_generated_function_has_typed_parameters_and_an_equation_numbered_docstring(path):
     tree = ast.parse(path.read_text())
     functions = [node for node in tree.body if isinstance(node, ast.FunctionDef)]

@@ -50,8 +50,14 @@ def eq33(P1, dP, lam, mu):
 
 def gap(P1, dP, mu, lam, n, k):
     """b(22) - a(P_K) for the power law."""
-    b = eq22(mu, lam, half_width(P1, n, k), half_width(P1 + dP, n, k), eq19(P1, n, k),
-             eq19(P1 + dP, n, k))  # fmt: skip
+    b = eq22(
+        mu,
+        lam,
+        half_width(P1, n, k),
+        half_width(P1 + dP, n, k),
+        eq19(P1, n, k),
+        eq19(P1 + dP, n, k),
+    )
     return b - half_width(eq33(P1, dP, lam, mu), n, k)
 
 
@@ -65,8 +71,10 @@ def richardson_second_order(function, step):
 def derivatives(P1, n, k):
     """a(P1), a'(P1), a''(P1) by mpmath's numerical differentiation."""
     a = half_width(P1, n, k)
-    return a, mpmath.diff(lambda P: half_width(P, n, k), P1), mpmath.diff(
-        lambda P: half_width(P, n, k), P1, 2
+    return (
+        a,
+        mpmath.diff(lambda P: half_width(P, n, k), P1),
+        mpmath.diff(lambda P: half_width(P, n, k), P1, 2),
     )
 
 
@@ -119,8 +127,9 @@ def test_gap_from_the_multiplier_slope_equals_gap_from_the_curvature(n, mu, lam,
         a1, slope, curvature = derivatives(P, n, k)
         L_I1 = eq19(P, n, k)
         L_I_slope = mpmath.diff(lambda load: eq19(load, n, k), P)
-    from_curvature = second_order_stick_boundary_gap(mu, lam, float(a1), float(slope),
-                                                     float(curvature))  # fmt: skip
+    from_curvature = second_order_stick_boundary_gap(
+        mu, lam, float(a1), float(slope), float(curvature)
+    )
     from_multiplier = second_order_stick_boundary_gap_from_multiplier(
         mu, lam, float(a1), float(slope), float(L_I1), float(L_I_slope)
     )
@@ -135,7 +144,10 @@ def test_gap_changes_sign_with_n_minus_2_for_lam_beyond_mu():
     for n in (1.0, 3.0):
         with mpmath.workdps(30):
             a1, slope, curvature = derivatives(P1, n, k)
-        signs.append(np.sign(second_order_stick_boundary_gap(mu, lam, float(a1), float(slope),
-                                                             float(curvature))))  # fmt: skip
+        signs.append(
+            np.sign(
+                second_order_stick_boundary_gap(mu, lam, float(a1), float(slope), float(curvature))
+            )
+        )
     # ... which is positive for the wedge (n = 1) and negative for n = 3.
     assert signs == [1.0, -1.0]

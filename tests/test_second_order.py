@@ -79,10 +79,12 @@ def exact_widths(cycle: Cycle, other_edge: int, guess: tuple[float, float]) -> n
         right, left = a1 - widths[0], a1 - widths[1]
         force_r, moment_r = _zone(cycle, right, left)
         force_l, moment_l = _zone(cycle, left, right)
-        return np.array([
-            cycle.mu * (force_r - other_edge * force_l) - np.pi * cycle.eta * cycle.dP / 4,
-            cycle.mu * (moment_r + other_edge * moment_l) - cycle.lam * cycle.dP,
-        ])  # fmt: skip
+        return np.array(
+            [
+                cycle.mu * (force_r - other_edge * force_l) - np.pi * cycle.eta * cycle.dP / 4,
+                cycle.mu * (moment_r + other_edge * moment_l) - cycle.lam * cycle.dP,
+            ]
+        )
 
     widths = np.array(guess, dtype=float)
     for _ in range(30):
@@ -111,24 +113,39 @@ def law_inputs(cycle: Cycle) -> dict[str, float]:
 def second_order(cycle: Cycle, other_edge: int) -> float:
     """The emitted b2 width, from the quantities a law gives (a, a', L_I, L_I')."""
     q = law_inputs(cycle)
-    return float(slip_zone_width_second_order_from_multiplier(
-        cycle.mu, cycle.lam, cycle.eta, q["a1"], q["da_dP"], q["L_I1"], q["dL_I_dP"], cycle.dP,
-        other_edge,
-    ))  # fmt: skip
+    return float(
+        slip_zone_width_second_order_from_multiplier(
+            cycle.mu,
+            cycle.lam,
+            cycle.eta,
+            q["a1"],
+            q["da_dP"],
+            q["L_I1"],
+            q["dL_I_dP"],
+            cycle.dP,
+            other_edge,
+        )
+    )
 
 
 def first_order(cycle: Cycle) -> float:
     q = law_inputs(cycle)
-    return float(slip_zone_width_first_order(
-        cycle.mu, cycle.lam, cycle.eta, q["a1"], cycle.dP, q["da_dP"]))  # fmt: skip
+    return float(
+        slip_zone_width_first_order(cycle.mu, cycle.lam, cycle.eta, q["a1"], cycle.dP, q["da_dP"])
+    )
 
 
 def paper(cycle: Cycle) -> float:
     law = cycle.law
     b22 = stick_boundary_proportional(
-        cycle.mu, cycle.lam, cycle.eta, cycle.a1, cycle.a2,
-        float(law.normal_multiplier(cycle.P1)), float(law.normal_multiplier(cycle.P1 + cycle.dP)),
-    )  # fmt: skip
+        cycle.mu,
+        cycle.lam,
+        cycle.eta,
+        cycle.a1,
+        cycle.a2,
+        float(law.normal_multiplier(cycle.P1)),
+        float(law.normal_multiplier(cycle.P1 + cycle.dP)),
+    )
     return cycle.a1 - float(b22)
 
 
@@ -230,8 +247,11 @@ def test_first_order_28_errs_by_the_emitted_second_coefficient(name):
     cycle, other = _cycle(name, 1.02)
     q = law_inputs(cycle)
     curvature = -q["da_dP"] * (q["dL_I_dP"] / q["L_I1"] + q["da_dP"] / (2 * q["a1"]))  # (19)
-    w2 = float(slip_zone_width_second_coefficient(
-        cycle.mu, cycle.lam, cycle.eta, q["a1"], q["da_dP"], curvature, other))  # fmt: skip
+    w2 = float(
+        slip_zone_width_second_coefficient(
+            cycle.mu, cycle.lam, cycle.eta, q["a1"], q["da_dP"], curvature, other
+        )
+    )
     assert _extrapolated(name, first_order) == pytest.approx(w2, rel=0.01)
 
 

@@ -64,8 +64,7 @@ def test_stick_boundary_is_eq17():
 def test_stick_boundary_proportional_is_eq22():
     c = well_conditioned_cycles()
     args = proportional(c)
-    assert_within(gen.stick_boundary_proportional(*args), paper.eq22(*args), rtol=RTOL,
-                  inputs=c)  # fmt: skip
+    assert_within(gen.stick_boundary_proportional(*args), paper.eq22(*args), rtol=RTOL, inputs=c)
 
 
 def test_eq22_is_eq17_with_calibration_eq21():
@@ -85,8 +84,12 @@ def test_slip_zone_width_is_a1_minus_b_by_corrected_eq25():
 
 
 def test_dislocation_density_is_eq15_across_the_slip_zone():
-    c = cycles(L_II1=uniform(-5, 5), L_II2=uniform(-5, 5), E_star=log_uniform(0.1, 1e3),
-               where=uniform(0.0, 1.0))  # fmt: skip
+    c = cycles(
+        L_II1=uniform(-5, 5),
+        L_II2=uniform(-5, 5),
+        E_star=log_uniform(0.1, 1e3),
+        where=uniform(0.0, 1.0),
+    )
     b = c["a1"] - c["da"]  # a slip zone reaching inside a1, as in Fig. 5
     x = b + c["where"] * (c["a2"] - b)
     args = (x, b, c["a1"], c["mu"], c["L_I1"], c["L_I2"], c["L_II1"], c["L_II2"], c["E_star"])
@@ -96,8 +99,9 @@ def test_dislocation_density_is_eq15_across_the_slip_zone():
         / c["E_star"]
         * np.sqrt(c["a2"] - b)
     )
-    assert_within(gen.dislocation_density(*args), paper.eq15(*args), rtol=RTOL,
-                  atol=RTOL * scale, inputs=c)  # fmt: skip
+    assert_within(
+        gen.dislocation_density(*args), paper.eq15(*args), rtol=RTOL, atol=RTOL * scale, inputs=c
+    )
 
 
 def test_dislocation_density_vanishes_in_the_stick_zone():
@@ -107,21 +111,36 @@ def test_dislocation_density_vanishes_in_the_stick_zone():
 
 
 def test_edge_multipliers_are_eq19_eq20_eq21():
-    c = draw(a=log_uniform(0.1, 10.0), dP_da=log_uniform(0.01, 100), dQ_da=uniform(-100, 100),
-             dsigma_da=uniform(-10, 10), lam=uniform(-3.0, 3.0),
-             eta=uniform(-0.05, 0.05))  # fmt: skip
+    c = draw(
+        a=log_uniform(0.1, 10.0),
+        dP_da=log_uniform(0.01, 100),
+        dQ_da=uniform(-100, 100),
+        dsigma_da=uniform(-10, 10),
+        lam=uniform(-3.0, 3.0),
+        eta=uniform(-0.05, 0.05),
+    )
     a = c["a"]
     L_I = gen.normal_edge_multiplier(a, c["dP_da"])
     assert_within(L_I, paper.eq19(a, c["dP_da"]), rtol=RTOL, inputs=c, what="(19)")
     # (20) and (21) are sums of two terms that may cancel: rounding is relative to their size.
     scale_20 = abs(np.sqrt(2 / a) * c["dQ_da"] / np.pi) + abs(np.sqrt(2 * a) * c["dsigma_da"] / 4)
-    assert_within(gen.shear_edge_multiplier(a, c["dQ_da"], c["dsigma_da"]),
-                  paper.eq20(a, c["dQ_da"], c["dsigma_da"]), rtol=RTOL, atol=RTOL * scale_20,
-                  inputs=c, what="(20)")  # fmt: skip
+    assert_within(
+        gen.shear_edge_multiplier(a, c["dQ_da"], c["dsigma_da"]),
+        paper.eq20(a, c["dQ_da"], c["dsigma_da"]),
+        rtol=RTOL,
+        atol=RTOL * scale_20,
+        inputs=c,
+        what="(20)",
+    )
     scale_21 = (abs(c["lam"]) + abs(np.pi * c["eta"] * a / 4)) * L_I
-    assert_within(gen.shear_edge_multiplier_proportional(c["lam"], c["eta"], a, L_I),
-                  paper.eq21(c["lam"], c["eta"], a, L_I), rtol=RTOL, atol=RTOL * scale_21,
-                  inputs=c, what="(21)")  # fmt: skip
+    assert_within(
+        gen.shear_edge_multiplier_proportional(c["lam"], c["eta"], a, L_I),
+        paper.eq21(c["lam"], c["eta"], a, L_I),
+        rtol=RTOL,
+        atol=RTOL * scale_21,
+        inputs=c,
+        what="(21)",
+    )
 
 
 def test_validity_measures_are_eq24_to_eq27():
@@ -129,21 +148,36 @@ def test_validity_measures_are_eq24_to_eq27():
         dP=log_uniform(1e-3, 10), da_dP=log_uniform(1e-3, 10), dL_I_dP=uniform(-1, 1)
     )
     mu, lam, eta, a1, dP, da_dP = (c[k] for k in ("mu", "lam", "eta", "a1", "dP", "da_dP"))
-    assert_within(gen.contact_growth_measure(dP, da_dP, a1), paper.eq24(dP, da_dP, a1),
-                  rtol=RTOL, inputs=c, what="(24)")  # fmt: skip
+    assert_within(
+        gen.contact_growth_measure(dP, da_dP, a1),
+        paper.eq24(dP, da_dP, a1),
+        rtol=RTOL,
+        inputs=c,
+        what="(24)",
+    )
     assert_within(
         gen.relative_slip_zone_measure(mu, lam, eta, a1, c["da"], c["L_I1"], c["L_I2"]),
-        abs(paper.eq25_corrected(*proportional(c), da=c["da"])), rtol=RTOL, inputs=c,
+        abs(paper.eq25_corrected(*proportional(c), da=c["da"])),
+        rtol=RTOL,
+        inputs=c,
         what="(25)",
-    )  # fmt: skip
-    assert_within(gen.multiplier_growth_measure(dP, c["dL_I_dP"], c["L_I1"]),
-                  abs(paper.eq26(dP, c["dL_I_dP"], c["L_I1"])), rtol=RTOL, inputs=c,
-                  what="(26)")  # fmt: skip
+    )
+    assert_within(
+        gen.multiplier_growth_measure(dP, c["dL_I_dP"], c["L_I1"]),
+        abs(paper.eq26(dP, c["dL_I_dP"], c["L_I1"])),
+        rtol=RTOL,
+        inputs=c,
+        what="(26)",
+    )
     # |1 - lam/mu - pi eta a1/(4 mu)| may cancel: rounding is relative to its terms.
-    assert_within(gen.slip_zone_growth_measure(mu, lam, eta, a1, dP, da_dP),
-                  paper.eq27(mu, lam, eta, a1, dP, da_dP), rtol=RTOL,
-                  atol=1e-13 * dP * da_dP / a1 * (1 + abs(lam) / mu), inputs=c,
-                  what="(27)")  # fmt: skip
+    assert_within(
+        gen.slip_zone_growth_measure(mu, lam, eta, a1, dP, da_dP),
+        paper.eq27(mu, lam, eta, a1, dP, da_dP),
+        rtol=RTOL,
+        atol=1e-13 * dP * da_dP / a1 * (1 + abs(lam) / mu),
+        inputs=c,
+        what="(27)",
+    )
 
 
 def test_first_order_stick_ratio_is_eq28():
@@ -157,11 +191,22 @@ def test_first_order_stick_ratio_is_eq28():
         / (2 * c["a1"])
         * (abs(c["lam"] / c["mu"]) + abs(np.pi * c["a1"] / 4 * c["eta"] / c["mu"]) + 1)
     )
-    assert_within(gen.stick_ratio_first_order(*args), paper.eq28(*args), rtol=RTOL,
-                  atol=4e-16 * (1 + terms), inputs=c, what="(28)")  # fmt: skip
-    assert_within(gen.slip_zone_width_first_order(*args), c["a1"] * (1 - paper.eq28(*args)),
-                  rtol=RTOL, atol=4e-16 * c["a1"] * (1 + terms), inputs=c,
-                  what="a1 (1 - (28))")  # fmt: skip
+    assert_within(
+        gen.stick_ratio_first_order(*args),
+        paper.eq28(*args),
+        rtol=RTOL,
+        atol=4e-16 * (1 + terms),
+        inputs=c,
+        what="(28)",
+    )
+    assert_within(
+        gen.slip_zone_width_first_order(*args),
+        c["a1"] * (1 - paper.eq28(*args)),
+        rtol=RTOL,
+        atol=4e-16 * c["a1"] * (1 + terms),
+        inputs=c,
+        what="a1 (1 - (28))",
+    )
 
 
 def test_eq28_is_the_first_order_limit_of_eq22_for_hertz():

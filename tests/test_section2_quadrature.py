@@ -53,8 +53,16 @@ def test_eq16_weight_integral_is_pi_times_half_the_interval(lower, top):
 
 
 # A Fig. 5-like cycle with b from (17), so that (15) solves (12).
-CASE = {"mu": 0.3, "E_star": 2.0, "a1": 1.0, "a2": 1.05, "L_I1": 1.0, "L_I2": 1.1,
-        "L_II1": 0.5, "L_II2": 0.55}  # fmt: skip
+CASE = {
+    "mu": 0.3,
+    "E_star": 2.0,
+    "a1": 1.0,
+    "a2": 1.05,
+    "L_I1": 1.0,
+    "L_I2": 1.1,
+    "L_II1": 0.5,
+    "L_II2": 0.55,
+}
 
 
 def _rhs_of_eq12(x: float, b: float) -> mpmath.mpf:
@@ -62,9 +70,19 @@ def _rhs_of_eq12(x: float, b: float) -> mpmath.mpf:
     c = CASE
 
     def weighted(t):
-        density = float(gen.dislocation_density(
-            float(t), b, c["a1"], c["mu"], c["L_I1"], c["L_I2"], c["L_II1"], c["L_II2"],
-            c["E_star"]))  # fmt: skip
+        density = float(
+            gen.dislocation_density(
+                float(t),
+                b,
+                c["a1"],
+                c["mu"],
+                c["L_I1"],
+                c["L_I2"],
+                c["L_II1"],
+                c["L_II2"],
+                c["E_star"],
+            )
+        )
         return mpmath.sqrt(c["a2"] - t) * density
 
     pole = mpmath.mpf(x)
@@ -79,8 +97,9 @@ def _rhs_of_eq12(x: float, b: float) -> mpmath.mpf:
 @pytest.mark.parametrize("fraction", [0.05, 0.3, 0.62, 0.97])
 def test_generated_eq15_solves_the_integral_equation_eq12(fraction):
     c = CASE
-    b = float(gen.stick_boundary(c["mu"], c["a1"], c["a2"], c["L_I1"], c["L_I2"], c["L_II1"],
-                                 c["L_II2"]))
+    b = float(
+        gen.stick_boundary(c["mu"], c["a1"], c["a2"], c["L_I1"], c["L_I2"], c["L_II1"], c["L_II2"])
+    )
     assert b < c["a1"]
     x = b + fraction * (c["a2"] - b)
     left = (c["mu"] * c["L_I1"] + c["L_II1"]) * np.sqrt(max(c["a1"] - x, 0.0)) + (

@@ -171,8 +171,14 @@ MODULUS = log_uniform(1e-2, 1e3)  # E*
 TENSION_TERM = uniform(-1.0, 3.0)  # t = pi eta a1 / (4 mu)
 
 # The Hertzian cycles of Section 3, with and without bulk tension.
-HERTZ_CYCLE = {"P1": LOAD, "eps": RELATIVE_CHANGE, "mu": FRICTION, "r": SLOPE_RATIO,
-               "R": RADIUS, "E": MODULUS}  # fmt: skip
+HERTZ_CYCLE = {
+    "P1": LOAD,
+    "eps": RELATIVE_CHANGE,
+    "mu": FRICTION,
+    "r": SLOPE_RATIO,
+    "R": RADIUS,
+    "E": MODULUS,
+}
 TENSION_CYCLE = {**HERTZ_CYCLE, "t": TENSION_TERM}
 
 
@@ -202,8 +208,15 @@ def _args(c, names):
 
 
 def test_permanent_stick_load_is_eq33_on_the_proportional_path():
-    c = hertz_cycles({"P1": LOAD, "eps": RELATIVE_CHANGE, "mu": FRICTION, "r": SLOPE_RATIO,
-                      "q1": uniform(-1.0, 1.0)})  # fmt: skip
+    c = hertz_cycles(
+        {
+            "P1": LOAD,
+            "eps": RELATIVE_CHANGE,
+            "mu": FRICTION,
+            "r": SLOPE_RATIO,
+            "q1": uniform(-1.0, 1.0),
+        }
+    )
     P1, dP, lam, mu = _args(c, "P1 dP lam mu")
     Q1 = c["q1"] * mu * P1  # state 1 below sliding, |Q1| <= mu P1
     expected = paper_33_permanent_stick_load(P1, P1 + dP, Q1, Q1 + lam * dP, mu)
@@ -214,8 +227,7 @@ def test_exact_stick_boundary_is_eq34():
     c = hertz_cycles()
     P1, dP, lam, mu, R, E = _args(c, "P1 dP lam mu R E")
     expected = paper_34_stick_boundary(P1, P1 + dP, 0.0, lam * dP, mu, R, E)
-    assert_within(hertz_stick_boundary_exact(P1, dP, lam, mu, R, E), expected, rtol=RTOL,
-                  inputs=c)  # fmt: skip
+    assert_within(hertz_stick_boundary_exact(P1, dP, lam, mu, R, E), expected, rtol=RTOL, inputs=c)
 
 
 def test_eq35_is_exact_not_an_approximation_at_large_load_change():
@@ -230,8 +242,9 @@ def test_eq35_is_exact_not_an_approximation_at_large_load_change():
 def test_exact_slip_zone_width_is_eq35():
     c = hertz_cycles()
     args = _args(c, "P1 dP lam mu R E")
-    assert_within(hertz_slip_zone_width_exact(*args), paper_35_slip_zone_width(*args),
-                  rtol=RTOL, inputs=c)  # fmt: skip
+    assert_within(
+        hertz_slip_zone_width_exact(*args), paper_35_slip_zone_width(*args), rtol=RTOL, inputs=c
+    )
 
 
 @pytest.mark.parametrize("lam", [0.1000001, 0.2, 0.35, 1.0])
@@ -270,36 +283,55 @@ def test_shear_intensity_rate_is_eq39():
     eta = _eta(c["t"], c["mu"], a)
     # The two terms of (39) cancel when lam + pi eta a/4 = 0: rounding is relative to them.
     scale = abs(lam) / (PI * np.sqrt(2 * a)) + abs(eta) / 4 * np.sqrt(a / 2)
-    assert_within(shear_intensity_rate(lam, eta, a), paper_39_intensity_rate(lam, eta, a),
-                  atol=RTOL * scale, inputs=c)  # fmt: skip
+    assert_within(
+        shear_intensity_rate(lam, eta, a),
+        paper_39_intensity_rate(lam, eta, a),
+        atol=RTOL * scale,
+        inputs=c,
+    )
 
 
 def test_corrective_stick_width_is_eq40():
-    c = draw(mu=FRICTION, r=SLOPE_RATIO, t=TENSION_TERM, a1=log_uniform(1e-2, 1e2),
-             da_ratio=log_uniform(1e-6, 0.1), L_I1=log_uniform(1e-2, 1e3),
-             dP=log_uniform(1e-6, 1e2))  # fmt: skip
+    c = draw(
+        mu=FRICTION,
+        r=SLOPE_RATIO,
+        t=TENSION_TERM,
+        a1=log_uniform(1e-2, 1e2),
+        da_ratio=log_uniform(1e-6, 0.1),
+        L_I1=log_uniform(1e-2, 1e3),
+        dP=log_uniform(1e-6, 1e2),
+    )
     mu, a1, L_I1, dP = _args(c, "mu a1 L_I1 dP")
     lam, eta, da = c["r"] * mu, _eta(c["t"], mu, a1), c["da_ratio"] * a1
     width = corrective_stick_slip_zone_width(mu, lam, eta, a1, da, L_I1, dP)
     # The terms of (40) may cancel (d1 = 0 is a valid answer): rounding is relative to them.
     scale = size_of_40_terms(mu, lam, eta, a1, da, L_I1, dP)
-    assert_within(width, paper_40_width(mu, lam, eta, a1, da, L_I1, dP), atol=RTOL * scale,
-                  inputs=c)  # fmt: skip
+    assert_within(
+        width, paper_40_width(mu, lam, eta, a1, da, L_I1, dP), atol=RTOL * scale, inputs=c
+    )
 
 
 def test_hertz_corrective_stick_boundary_is_eq41():
     c = hertz_cycles(TENSION_CYCLE)
     args = _args(c, "P1 dP lam eta mu R E")
-    assert_within(hertz_stick_boundary_corrective_stick(*args), paper_41_stick_boundary(*args),
-                  rtol=RTOL, inputs=c)  # fmt: skip
+    assert_within(
+        hertz_stick_boundary_corrective_stick(*args),
+        paper_41_stick_boundary(*args),
+        rtol=RTOL,
+        inputs=c,
+    )
 
 
 def test_hertz_corrective_stick_width_is_eq41():
     c = hertz_cycles(TENSION_CYCLE)
     args = _args(c, "P1 dP lam eta mu R E")
     # The two terms of a1 - b may cancel: rounding is relative to their size.
-    assert_within(hertz_slip_zone_width_corrective_stick(*args), paper_41_width(*args),
-                  atol=RTOL * size_of_41_terms(*args), inputs=c)  # fmt: skip
+    assert_within(
+        hertz_slip_zone_width_corrective_stick(*args),
+        paper_41_width(*args),
+        atol=RTOL * size_of_41_terms(*args),
+        inputs=c,
+    )
 
 
 def test_hertz_corrective_stick_width_is_generic_eq40_with_eq31():
@@ -310,8 +342,9 @@ def test_hertz_corrective_stick_width_is_generic_eq40_with_eq31():
         mu, lam, eta, a1, paper_29_growth(P1, dP, R, E), paper_31_multiplier(a1, R, E), dP
     )
     hertz = hertz_slip_zone_width_corrective_stick(P1, dP, lam, eta, mu, R, E)
-    assert_within(hertz, generic, atol=RTOL * size_of_41_terms(P1, dP, lam, eta, mu, R, E),
-                  inputs=c)  # fmt: skip
+    assert_within(
+        hertz, generic, atol=RTOL * size_of_41_terms(P1, dP, lam, eta, mu, R, E), inputs=c
+    )
 
 
 def test_hertz_corrective_stick_width_keeps_precision_at_lam_equal_mu():
@@ -367,8 +400,12 @@ def test_first_order_width_is_eq44():
     P1, dP, lam, eta, mu, R, E = args = _args(c, "P1 dP lam eta mu R E")
     # (lam/mu + t - 1) may vanish: rounding is relative to the size of its terms.
     scale = paper_29_half_width(P1, R, E) * (lam / mu + abs(c["t"]) + 1) * dP / (4 * P1)
-    assert_within(hertz_slip_zone_width_first_order(*args), paper_44_slip_zone_width(*args),
-                  atol=RTOL * scale, inputs=c)  # fmt: skip
+    assert_within(
+        hertz_slip_zone_width_first_order(*args),
+        paper_44_slip_zone_width(*args),
+        atol=RTOL * scale,
+        inputs=c,
+    )
 
 
 # ---------------------------------------------------------------- Section 3.3: corrective slip

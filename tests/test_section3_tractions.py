@@ -188,22 +188,36 @@ def position(c: dict[str, float], zone: str, fraction: float) -> float:
 
 
 def test_hertz_pressure_is_eq48_and_zero_outside_the_contact():
-    c = draw(ratio=uniform(-2.0, 2.0), P=log_uniform(1.0, 1e3), R=log_uniform(0.1, 10.0),
-             E_star=log_uniform(0.1, 10.0))  # fmt: skip
+    c = draw(
+        ratio=uniform(-2.0, 2.0),
+        P=log_uniform(1.0, 1e3),
+        R=log_uniform(0.1, 10.0),
+        E_star=log_uniform(0.1, 10.0),
+    )
     P, R, E_star = c["P"], c["R"], c["E_star"]
     x = c["ratio"] * eq29_half_width(P, R, E_star)
     expected = eq48_pressure(x, P, R, E_star)
     assert np.count_nonzero(expected == 0) > 1000  # both outside and inside were drawn
-    assert_within(hertz_pressure(x, P, R, E_star), expected, rtol=1e-12,
-                  atol=edge_allowance(x, P, R, E_star), inputs=c)  # fmt: skip
+    assert_within(
+        hertz_pressure(x, P, R, E_star),
+        expected,
+        rtol=1e-12,
+        atol=edge_allowance(x, P, R, E_star),
+        inputs=c,
+    )
 
 
 @pytest.mark.parametrize("zone", ["0 < x < b", "b < x < a1", "a1 < x < a2"])
 def test_exact_difference_is_eq47_piecewise(zone):
-    c = draw(fraction=uniform(0.0, 0.999), P1=log_uniform(1.0, 1e3),
-             relative_dP=log_uniform(1e-3, 0.2), mu=log_uniform(0.05, 1.0),
-             lam_over_mu=uniform(1.05, 5.0), R=log_uniform(0.1, 10.0),
-             E_star=log_uniform(0.1, 10.0))  # fmt: skip
+    c = draw(
+        fraction=uniform(0.0, 0.999),
+        P1=log_uniform(1.0, 1e3),
+        relative_dP=log_uniform(1e-3, 0.2),
+        mu=log_uniform(0.05, 1.0),
+        lam_over_mu=uniform(1.05, 5.0),
+        R=log_uniform(0.1, 10.0),
+        E_star=log_uniform(0.1, 10.0),
+    )
     P1, mu, R, E_star = c["P1"], c["mu"], c["R"], c["E_star"]
     dP = c["relative_dP"] * P1
     P_K = eq33_permanent_stick_load(P1, dP, c["lam_over_mu"] * mu, mu)
@@ -273,15 +287,20 @@ def consistent_states(**more) -> dict[str, np.ndarray]:
 
     Arrays, with the further inputs ``more`` drawn alongside.
     """
-    c = draw(a1=log_uniform(0.5, 20.0), mu=log_uniform(0.05, 1.0), lam_over_mu=uniform(1.1, 4.0),
-             L_I1=log_uniform(0.1, 10.0), multiplier_ratio=uniform(0.95, 1.05),
-             relative_growth=log_uniform(1e-3, 0.1), **more)  # fmt: skip
+    c = draw(
+        a1=log_uniform(0.5, 20.0),
+        mu=log_uniform(0.05, 1.0),
+        lam_over_mu=uniform(1.1, 4.0),
+        L_I1=log_uniform(0.1, 10.0),
+        multiplier_ratio=uniform(0.95, 1.05),
+        relative_growth=log_uniform(1e-3, 0.1),
+        **more,
+    )
     lam = c["mu"] * c["lam_over_mu"]
     c["a2"] = c["a1"] * (1 + c["relative_growth"])
     c["L_I2"] = c["L_I1"] * c["multiplier_ratio"]
     c["L_II1"], c["L_II2"], c["E_star"] = lam * c["L_I1"], lam * c["L_I2"], 1.0
-    c["b"] = stick_boundary(c["mu"], c["a1"], c["a2"], c["L_I1"], c["L_I2"], c["L_II1"],
-                            c["L_II2"])  # fmt: skip
+    c["b"] = stick_boundary(c["mu"], c["a1"], c["a2"], c["L_I1"], c["L_I2"], c["L_II1"], c["L_II2"])
     return c
 
 
@@ -295,8 +314,13 @@ def test_with_consistent_b_the_slip_zone_carries_mu_p2_plus_mu_p1():
     # b17 itself is rounded to ~eps * a2; the edge term K (b - b17)/(2 sqrt(a2 - x)) turns that
     # rounding into the absolute allowance.
     K = c["mu"] * (c["L_I1"] + c["L_I2"]) + c["L_II1"] - c["L_II2"]
-    assert_within(closed_form(x, c), expected, rtol=1e-12,
-                  atol=4e-16 * abs(K) * c["a2"] / np.sqrt(c["a2"] - x), inputs=c)  # fmt: skip
+    assert_within(
+        closed_form(x, c),
+        expected,
+        rtol=1e-12,
+        atol=4e-16 * abs(K) * c["a2"] / np.sqrt(c["a2"] - x),
+        inputs=c,
+    )
 
 
 @pytest.mark.parametrize("b_shift", [-1e-2, -3e-5, 2e-3])
@@ -355,11 +379,18 @@ def test_slip_is_the_integral_of_eq15_from_the_stick_boundary(zone, c, fraction)
 
 
 def test_slip_is_zero_in_the_stick_zone():
-    c = draw(a1=log_uniform(0.5, 20.0), relative_growth=log_uniform(1e-3, 0.1),
-             b_shift=uniform(0.0, 3.0), mu=log_uniform(0.05, 1.0), L_I1=log_uniform(0.1, 10.0),
-             multiplier_ratio=uniform(0.9, 1.1), L_II1=uniform(-5.0, 5.0),
-             L_II2=uniform(-5.0, 5.0), E_star=log_uniform(0.1, 100.0),
-             fraction=uniform(0.0, 1.0))  # fmt: skip
+    c = draw(
+        a1=log_uniform(0.5, 20.0),
+        relative_growth=log_uniform(1e-3, 0.1),
+        b_shift=uniform(0.0, 3.0),
+        mu=log_uniform(0.05, 1.0),
+        L_I1=log_uniform(0.1, 10.0),
+        multiplier_ratio=uniform(0.9, 1.1),
+        L_II1=uniform(-5.0, 5.0),
+        L_II2=uniform(-5.0, 5.0),
+        E_star=log_uniform(0.1, 100.0),
+        fraction=uniform(0.0, 1.0),
+    )
     da = c["a1"] * c["relative_growth"]  # the states of edge_state(), as arrays
     c.update(a2=c["a1"] + da, b=c["a1"] - da * c["b_shift"], L_I2=c["L_I1"] * c["multiplier_ratio"])
     assert_within(slip(c["b"] * c["fraction"], c), 0.0, inputs=c)

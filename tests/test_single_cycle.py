@@ -47,8 +47,11 @@ def _cycles(seed: int, count: int) -> list[tuple[float, ...]]:
         cycles.append((P1, Q1, P2, Q1 + lam * (P2 - P1), sigma1, sigma1 + eta * (P2 - P1), mu))
     # Refused for certain: gross sliding at state 2, and a load step three times P1 with the
     # shear near its limit.
-    return [*cycles, (100.0, 0.0, 105.0, 20.0, 0.0, 0.0, 0.1),
-            (10.0, 0.0, 40.0, 11.9, 0.0, 0.0, 0.3)]
+    return [
+        *cycles,
+        (100.0, 0.0, 105.0, 20.0, 0.0, 0.0, 0.1),
+        (10.0, 0.0, 40.0, 11.9, 0.0, 0.0, 0.3),
+    ]
 
 
 def _array_result(law, loads: tuple[float, ...], mu: float):
@@ -106,8 +109,11 @@ def test_without_tension_the_mirrored_left_edge_reuses_the_right_edges_estimates
     result = slip_zone(LAWS["hertz"], LoadCycle(100, 0, 105, 1), 0.1, edge="both")
     assert len(calls) == 1
     assert result.left.b == result.b and result.left.slip_zone_width == result.slip_zone_width
-    assert (result.left.L_II2, result.left.slip_direction, result.slip_direction) == \
-        (-result.L_II2, -1, 1)
+    assert (result.left.L_II2, result.left.slip_direction, result.slip_direction) == (
+        -result.L_II2,
+        -1,
+        1,
+    )
     calls.clear()
     slip_zone(LAWS["hertz"], LoadCycle(100, 0, 105, 1, 0, 0.5), 0.1, edge="both")
     assert len(calls) == 2

@@ -25,9 +25,20 @@ def slip_by_quadrature(x: float, edge) -> float:
     if x <= edge.b_paper:  # (15) is built on the b of (17)/(22)
         return 0.0
     with mpmath.workdps(30):
+
         def density(t):
-            return eq15(float(t), edge.b_paper, edge.a1, MU, edge.L_I1, edge.L_I2, edge.L_II1,
-                        edge.L_II2, 2.0)  # fmt: skip
+            return eq15(
+                float(t),
+                edge.b_paper,
+                edge.a1,
+                MU,
+                edge.L_I1,
+                edge.L_I2,
+                edge.L_II1,
+                edge.L_II2,
+                2.0,
+            )
+
         points = [edge.b_paper, *([edge.a1] if edge.b_paper < edge.a1 < x else []), x]
         return float(mpmath.quad(lambda t: mpmath.mpf(density(t)), points))
 

@@ -36,11 +36,15 @@ short,100,0,105
 nan-load,nan,0,105,1,0,0,0.1
 backward,200,1,210,-3,0,0,0.15
 """
-BAD_LINES = {3: r"^P2: must exceed P1", 6: r"^mu: must be > 0 \(got 0\.0\)",
-             7: r"^Q1: 'abc' is not a number",
-             8: r"^Q2: \|Q2\| = 90 must be < mu P2 = 20.2: at state 2 the contact would slide",
-             12: r"^mu: must be > 0 \(got -0\.3\)",
-             13: r"^line has 4 fields, the header has 8", 14: r"^P1: must be finite"}  # fmt: skip
+BAD_LINES = {
+    3: r"^P2: must exceed P1",
+    6: r"^mu: must be > 0 \(got 0\.0\)",
+    7: r"^Q1: 'abc' is not a number",
+    8: r"^Q2: \|Q2\| = 90 must be < mu P2 = 20.2: at state 2 the contact would slide",
+    12: r"^mu: must be > 0 \(got -0\.3\)",
+    13: r"^line has 4 fields, the header has 8",
+    14: r"^P1: must be finite",
+}
 DEFAULT_MU = 0.25
 
 
@@ -60,8 +64,12 @@ def swept(tmp_path):
 
 def expected_row(fields: dict[str, str], edge: str):
     mu = float(fields["mu"]) if fields["mu"] else DEFAULT_MU
-    cycle = LoadCycle(*(float(fields[name]) if fields[name] else 0.0
-                        for name in ("P1", "Q1", "P2", "Q2", "sigma1", "sigma2")))  # fmt: skip
+    cycle = LoadCycle(
+        *(
+            float(fields[name]) if fields[name] else 0.0
+            for name in ("P1", "Q1", "P2", "Q2", "sigma1", "sigma2")
+        )
+    )
     return slip_zone(LAW, cycle, mu, edge=edge)
 
 
@@ -75,8 +83,14 @@ def test_bad_rows_are_reported_by_line_number_and_the_others_are_kept(swept):
         assert re.match(BAD_LINES[line], message), message
     assert by_case["swapped"]["b"] == "" and by_case["swapped"]["error"].startswith("P2:")
     good = [row for row in rows if not row["error"]]
-    assert {row["case"] for row in good} == {"fig5", "no-slip", "big-step", "tension",
-                                             "default-mu", "backward"}  # fmt: skip
+    assert {row["case"] for row in good} == {
+        "fig5",
+        "no-slip",
+        "big-step",
+        "tension",
+        "default-mu",
+        "backward",
+    }
 
 
 def test_error_messages_are_the_ones_the_api_raises_for_that_row(swept):
@@ -151,8 +165,9 @@ def test_chunked_and_single_chunk_sweeps_write_the_same_bytes(tmp_path):
     cases = tmp_path / "cases.csv"
     cases.write_text(CASES)
     one = sweep_file(cases, LAW, tmp_path / "one.csv", mu=DEFAULT_MU, progress=False)
-    many = sweep_file(cases, LAW, tmp_path / "many.csv", mu=DEFAULT_MU, chunk_rows=3,
-                      progress=False)  # fmt: skip
+    many = sweep_file(
+        cases, LAW, tmp_path / "many.csv", mu=DEFAULT_MU, chunk_rows=3, progress=False
+    )
     assert (tmp_path / "one.csv").read_bytes() == (tmp_path / "many.csv").read_bytes()
     assert one.invalid == many.invalid and one.invalid
 
@@ -246,8 +261,7 @@ def test_an_interrupted_sweep_leaves_no_results_file(tmp_path, monkeypatch):
     original = sweep.evaluate_chunk
     monkeypatch.setattr(sweep, "evaluate_chunk", interrupted)
     with pytest.raises(KeyboardInterrupt):
-        sweep_file(cases, LAW, tmp_path / "out.csv", mu=DEFAULT_MU, chunk_rows=4,
-                   progress=False)  # fmt: skip
+        sweep_file(cases, LAW, tmp_path / "out.csv", mu=DEFAULT_MU, chunk_rows=4, progress=False)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["cases.csv"]
 
 
@@ -271,14 +285,43 @@ def test_cli_sweep_and_derive_through_the_registered_commands(tmp_path, capsys):
     from asymslip.cli import main
 
     law_file = tmp_path / "hertz_user.py"
-    assert main(["derive", "--P-of-a", "pi*E_star*a**2/(4*R)", "--params", "R E_star",
-                 "--name", "hertz_user", "--out", str(law_file)]) == 0  # fmt: skip
+    assert (
+        main(
+            [
+                "derive",
+                "--P-of-a",
+                "pi*E_star*a**2/(4*R)",
+                "--params",
+                "R E_star",
+                "--name",
+                "hertz_user",
+                "--out",
+                str(law_file),
+            ]
+        )
+        == 0
+    )
     assert law_file.exists()
     cases = tmp_path / "cases.csv"
     cases.write_text(CASES)
-    status = main(["sweep", str(cases), "--law", "module", "--module", str(law_file),
-                   "--param", "R=1", "--param", "E_star=1", "--mu", "0.25",
-                   "--out", str(tmp_path / "out.csv")])  # fmt: skip
+    status = main(
+        [
+            "sweep",
+            str(cases),
+            "--law",
+            "module",
+            "--module",
+            str(law_file),
+            "--param",
+            "R=1",
+            "--param",
+            "E_star=1",
+            "--mu",
+            "0.25",
+            "--out",
+            str(tmp_path / "out.csv"),
+        ]
+    )
     assert status == 1  # some rows are invalid
     report = capsys.readouterr().err
     assert f"{len(BAD_LINES)} invalid rows" in report and "line 3: P2: must exceed P1" in report
@@ -297,11 +340,16 @@ def test_generated_kernels_give_the_numpy_values_on_chunked_dask_arrays():
     a1 = rng.uniform(1, 10, n)
     da_ = a1 * rng.uniform(1e-6, 0.05, n)
     inputs = {
-        "mu": rng.uniform(0.05, 1, n), "lam": rng.uniform(-2, 2, n),
+        "mu": rng.uniform(0.05, 1, n),
+        "lam": rng.uniform(-2, 2, n),
         "eta": rng.uniform(-0.05, 0.05, n),
-        "a1": a1, "a2": a1 + da_, "da": da_, "L_I1": rng.uniform(1, 3, n),
-        "x": a1 * rng.uniform(0.5, 1.2, n), "E_star": rng.uniform(0.5, 2, n),
-    }  # fmt: skip
+        "a1": a1,
+        "a2": a1 + da_,
+        "da": da_,
+        "L_I1": rng.uniform(1, 3, n),
+        "x": a1 * rng.uniform(0.5, 1.2, n),
+        "E_star": rng.uniform(0.5, 2, n),
+    }
     inputs["L_I2"] = inputs["L_I1"] * rng.uniform(0.99, 1.01, n)
     stick_args = ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2")
     inputs["b"] = gen.stick_boundary_proportional(*(inputs[k] for k in stick_args))

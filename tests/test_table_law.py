@@ -135,8 +135,9 @@ def test_reported_error_is_within_100x_of_the_true_error(points):
 
 def test_fit_error_shrinks_with_the_cube_of_the_spacing():
     loads = np.linspace(quartic_load(8.0), quartic_load(14.0), 4001)
-    errors = [np.max(np.abs(quartic_table(n).half_width(loads) - quartic_a(loads)))
-              for n in (11, 21, 41)]  # fmt: skip
+    errors = [
+        np.max(np.abs(quartic_table(n).half_width(loads) - quartic_a(loads))) for n in (11, 21, 41)
+    ]
     # Halving the spacing divides a third-order error by ~8.
     assert 6 < errors[0] / errors[1] < 12 and 6 < errors[1] / errors[2] < 12
 
@@ -192,8 +193,9 @@ def test_load_inverts_the_fitted_half_width():
     law = quartic_table(10)
     loads = np.linspace(law.P[0], law.P[-1], 50)
     assert np.allclose(law.load(law.half_width(loads)), loads, rtol=1e-14, atol=0)
-    assert np.allclose(law.load_slope(law.half_width(loads)) * law.half_width_slope(loads), 1,
-                       rtol=1e-13, atol=0)  # fmt: skip
+    assert np.allclose(
+        law.load_slope(law.half_width(loads)) * law.half_width_slope(loads), 1, rtol=1e-13, atol=0
+    )
 
 
 def test_multiplier_slope_matches_a_central_difference_of_L_I():
@@ -263,16 +265,22 @@ def test_csv_with_extra_columns_comments_and_any_column_order_reads_like_the_arr
         ("P,a\n1,1\n2,2\n3,x3\n4,4\n", r"^table: .*line 4: a: 'x3' is not a number"),
         ("P,a\n1,1\n2,2\n\n3,3,9\n", r"^table: .*line 5: line has 3 fields, the header has 2"),
         ("P,a\n1,1\n2,2\n3,3\n", r"^table: .*: needs at least 4 points .*\(got 3\)"),
-        ("P,a\n1,1\n2,2\n3,2\n4,4\n",
-         r"^table: .*: a: table values must be strictly increasing \(line 4 does not exceed "
-         r"line 3\)"),
+        (
+            "P,a\n1,1\n2,2\n3,2\n4,4\n",
+            r"^table: .*: a: table values must be strictly increasing \(line 4 does not exceed "
+            r"line 3\)",
+        ),
         # Lines as an editor numbers them: the header is line 1.
-        ("P,a\n1,1\n3,2\n2,3\n4,4\n",
-         r"^table: .*: P: table values must be strictly increasing \(line 4 does not exceed "
-         r"line 3\)"),
+        (
+            "P,a\n1,1\n3,2\n2,3\n4,4\n",
+            r"^table: .*: P: table values must be strictly increasing \(line 4 does not exceed "
+            r"line 3\)",
+        ),
         ("P,a\n0,1\n1,2\n2,3\n4,4\n", r"^table: .*: P: table values must be > 0 \(line 2\)"),
-        ("# comment\nP,a\n\n1,1\n2,nan\n3,3\n4,4\n",
-         r"^table: .*: a: table values must be finite \(not inf or nan; line 5\)"),
+        (
+            "# comment\nP,a\n\n1,1\n2,nan\n3,3\n4,4\n",
+            r"^table: .*: a: table values must be finite \(not inf or nan; line 5\)",
+        ),
         ("# only a comment\n", r"^table: .*has no header"),
     ],
 )

@@ -31,16 +31,18 @@ def tension_case():
 @pytest.mark.parametrize("edge", ["right", "left"])
 def test_the_headline_b_lies_within_the_solver_bound_at_both_edges(tension_case, edge):
     asymptotic, solved = tension_case
-    estimate, truth = (asymptotic, solved.right) if edge == "right" else \
-        (asymptotic.left, solved.left)  # fmt: skip
+    estimate, truth = (
+        (asymptotic, solved.right) if edge == "right" else (asymptotic.left, solved.left)
+    )
     assert abs(estimate.b - truth.b) <= truth.b_error
 
 
 @pytest.mark.parametrize("edge", ["right", "left"])
 def test_the_paper_eq22_misses_by_several_solver_bounds_with_tension(tension_case, edge):
     asymptotic, solved = tension_case
-    estimate, truth = (asymptotic, solved.right) if edge == "right" else \
-        (asymptotic.left, solved.left)  # fmt: skip
+    estimate, truth = (
+        (asymptotic, solved.right) if edge == "right" else (asymptotic.left, solved.left)
+    )
     assert abs(estimate.b_paper - truth.b) > 3 * truth.b_error
     assert any(text.startswith("(22) (b_paper) differs from b") for text in estimate.warnings)
 

@@ -58,8 +58,15 @@ class LoadCycle:
     #: One cycle's six loads as Python floats, in the order of :data:`FIELDS` (None for many).
     numbers: tuple[float, ...] | None = field(default=None, repr=False, compare=False)
 
-    def __init__(self, P1: ArrayLike, Q1: ArrayLike, P2: ArrayLike, Q2: ArrayLike,
-                 sigma1: ArrayLike = 0.0, sigma2: ArrayLike = 0.0) -> None:  # fmt: skip
+    def __init__(
+        self,
+        P1: ArrayLike,
+        Q1: ArrayLike,
+        P2: ArrayLike,
+        Q2: ArrayLike,
+        sigma1: ArrayLike = 0.0,
+        sigma2: ArrayLike = 0.0,
+    ) -> None:
         self._set(P1, Q1, P2, Q2, sigma1, sigma2)
         self.verdict().raise_first()
         object.__setattr__(self, "checked", True)
@@ -75,8 +82,15 @@ class LoadCycle:
         object.__setattr__(self, "numbers", numbers)
 
     @classmethod
-    def unchecked(cls, P1: ArrayLike, Q1: ArrayLike, P2: ArrayLike, Q2: ArrayLike,
-                  sigma1: ArrayLike = 0.0, sigma2: ArrayLike = 0.0) -> LoadCycle:  # fmt: skip
+    def unchecked(
+        cls,
+        P1: ArrayLike,
+        Q1: ArrayLike,
+        P2: ArrayLike,
+        Q2: ArrayLike,
+        sigma1: ArrayLike = 0.0,
+        sigma2: ArrayLike = 0.0,
+    ) -> LoadCycle:
         """A cycle whose invalid elements are kept, to be marked per element by the core.
 
         For many cycles at once (the sweep), where one bad row must not stop the others; see

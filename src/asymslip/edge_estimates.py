@@ -51,22 +51,30 @@ class EdgeValues:
     flags: NDArray[np.int64] | int
 
 
-
 #: What :func:`edge_estimates` returns, in order (a plain tuple: one cycle's fast path builds one
 #: per edge, and a NamedTuple costs more than the arithmetic of half its entries).
 ESTIMATES = (
-    "paper_width",             # a1 - b by (22), cancellation-free (25)
-    "denominator",             # (17)'s mu (L_I1 + L_I2) + L_II1 - L_II2 in (21)'s multipliers
-    "b_first_order",           # b to first order (28)
-    "width",                   # a1 - b to second order, both edges, bulk tension (b2)
+    "paper_width",  # a1 - b by (22), cancellation-free (25)
+    "denominator",  # (17)'s mu (L_I1 + L_I2) + L_II1 - L_II2 in (21)'s multipliers
+    "b_first_order",  # b to first order (28)
+    "width",  # a1 - b to second order, both edges, bulk tension (b2)
     "corrective_stick_width",  # a1 - b of the corrective stick zone (40)
-    "P_K",                     # the permanent-stick load of (33)
-    "eq24", "eq26", "eq27",    # the validity measures
-)  # fmt: skip
+    "P_K",  # the permanent-stick load of (33)
+    "eq24",
+    "eq26",
+    "eq27",  # the validity measures
+)
 
 
-def edge_estimates(kernels: ModuleType, mu: Number, lam: Number, eta: Number, state: LawState,
-                   dP: Number, other_edge: Number) -> tuple[Number, ...]:  # fmt: skip
+def edge_estimates(
+    kernels: ModuleType,
+    mu: Number,
+    lam: Number,
+    eta: Number,
+    state: LawState,
+    dP: Number,
+    other_edge: Number,
+) -> tuple[Number, ...]:
     """Every estimate of one edge (:data:`ESTIMATES`), ``lam`` and ``eta`` oriented so that the
     edge slips forward.
 
@@ -93,8 +101,16 @@ def edge_estimates(kernels: ModuleType, mu: Number, lam: Number, eta: Number, st
     # scaled back.
     root = a1**1.5
     width = a1 * kernels.slip_zone_width_second_order_from_multiplier(
-        1.0, lam / mu, eta * a1 / mu, 1.0, a_slope1 * dP / a1, L_I1 * root / dP,
-        state.L_I_slope1 * root, 1.0, other_edge)  # fmt: skip
+        1.0,
+        lam / mu,
+        eta * a1 / mu,
+        1.0,
+        a_slope1 * dP / a1,
+        L_I1 * root / dP,
+        state.L_I_slope1 * root,
+        1.0,
+        other_edge,
+    )
     return (
         kernels.slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2),
         kernels.stick_boundary_denominator(mu, lam, eta, a1, a2, L_I1, L_I2),
@@ -120,12 +136,17 @@ def stated_accuracy(a1: Number, da: Number, width: Number) -> Number:
 
 #: The estimates checked against b, in the order of :func:`disagreement_limits`, each with the
 #: warning flag it sets where it disagrees.
-DISAGREEMENTS = (("b_paper", DISAGREE_PAPER), ("b_first_order", DISAGREE_FIRST_ORDER),
-                 ("b_corrective_stick", DISAGREE_CORRECTIVE_STICK), ("b_exact", DISAGREE_EXACT))
+DISAGREEMENTS = (
+    ("b_paper", DISAGREE_PAPER),
+    ("b_first_order", DISAGREE_FIRST_ORDER),
+    ("b_corrective_stick", DISAGREE_CORRECTIVE_STICK),
+    ("b_exact", DISAGREE_EXACT),
+)
 
 
-def disagreement_limits(a1: Number, da: Number, width: Number,
-                        accuracy: Number) -> tuple[Number, Number, Number, Number]:  # fmt: skip
+def disagreement_limits(
+    a1: Number, da: Number, width: Number, accuracy: Number
+) -> tuple[Number, Number, Number, Number]:
     """How far each estimate of :data:`DISAGREEMENTS` may lie from b before they disagree.
 
     The two stated accuracies added -- a second-order formula within twice b's, a first-order
@@ -134,8 +155,12 @@ def disagreement_limits(a1: Number, da: Number, width: Number,
     first_order = 2 * (da / a1) * abs(width)
     rounding = 1e-12 * a1
     first_order_limit = first_order + accuracy + rounding
-    return (2 * accuracy + accuracy + rounding, first_order_limit, first_order_limit,
-            accuracy + rounding)  # fmt: skip
+    return (
+        2 * accuracy + accuracy + rounding,
+        first_order_limit,
+        first_order_limit,
+        accuracy + rounding,
+    )
 
 
 def slip_direction(mu: Number, L_I2: Number, L_II2: Number) -> Number:

@@ -29,9 +29,23 @@ VALIDITY_MEANING = {
 
 #: The numeric fields of one edge's result, in JSON order (validity measures flattened).
 NUMBER_KEYS = (
-    "a1", "a2", "lam", "eta", "L_I1", "L_I2", "L_II1", "L_II2", "b", "slip_zone_width",
-    "b_accuracy", "b_paper", "b_first_order", "b_exact", "b_corrective_stick", "slip_direction",
-)  # fmt: skip
+    "a1",
+    "a2",
+    "lam",
+    "eta",
+    "L_I1",
+    "L_I2",
+    "L_II1",
+    "L_II2",
+    "b",
+    "slip_zone_width",
+    "b_accuracy",
+    "b_paper",
+    "b_first_order",
+    "b_exact",
+    "b_corrective_stick",
+    "slip_direction",
+)
 MEASURE_KEYS = tuple(VALIDITY_MEANING)
 
 # --- warnings as flags --------------------------------------------------------------------------
@@ -47,9 +61,11 @@ OTHER_EDGE_STICKS = 1 << 11
 #: The other estimates of b, left out (null) where they fall outside the contact (0, a2]: a
 #: stick boundary there is no answer, and printing it would pass it off as one.  Each with its
 #: equation and the disagreement flag it then replaces.
-ESTIMATES_CHECKED = {"b_paper": ("(22)", DISAGREE_PAPER),
-                     "b_first_order": ("(28)", DISAGREE_FIRST_ORDER),
-                     "b_corrective_stick": ("(40)", DISAGREE_CORRECTIVE_STICK)}  # fmt: skip
+ESTIMATES_CHECKED = {
+    "b_paper": ("(22)", DISAGREE_PAPER),
+    "b_first_order": ("(28)", DISAGREE_FIRST_ORDER),
+    "b_corrective_stick": ("(40)", DISAGREE_CORRECTIVE_STICK),
+}
 OUTSIDE_FLAGS = {key: 1 << (12 + i) for i, key in enumerate(ESTIMATES_CHECKED)}
 _DISAGREEMENT_TEXT = {
     DISAGREE_PAPER: "(22) (b_paper) differs from b by more than their stated accuracies (with "
@@ -78,15 +94,19 @@ def warning_texts(flags: int, law: ContactLaw) -> list[str]:
         texts.append(_NO_SLIP_TEXT)
     for key, bit in MEASURE_FLAGS.items():
         if flags & bit:
-            texts.append(f"{key} > {VALIDITY_THRESHOLD}: {VALIDITY_MEANING[key]} is not small, so "
-                         "the asymptotic solution is doubtful")  # fmt: skip
+            texts.append(
+                f"{key} > {VALIDITY_THRESHOLD}: {VALIDITY_MEANING[key]} is not small, so "
+                "the asymptotic solution is doubtful"
+            )
     for bit, label in ((EXTRAPOLATED_P1, "P1"), (EXTRAPOLATED_P2, "P2")):
         if flags & bit:
             texts.append(law.extrapolation_note(label))
     texts.extend(text for bit, text in _DISAGREEMENT_TEXT.items() if flags & bit)
     for key, bit in OUTSIDE_FLAGS.items():
         if flags & bit:
-            texts.append(f"{key}: the estimate {ESTIMATES_CHECKED[key][0]} puts the stick "
-                         "boundary outside the contact (0, a2], so it is no answer for this "
-                         "cycle and is left out (null)")  # fmt: skip
+            texts.append(
+                f"{key}: the estimate {ESTIMATES_CHECKED[key][0]} puts the stick "
+                "boundary outside the contact (0, a2], so it is no answer for this "
+                "cycle and is left out (null)"
+            )
     return texts

@@ -20,8 +20,9 @@ from numpy.typing import ArrayLike, NDArray
 class InputError(ValueError):
     """Invalid input: the message names the parameter and the rule it broke."""
 
-    def __init__(self, parameter: str, rule: str, value: object | None = None,
-                 where: str = "") -> None:  # fmt: skip
+    def __init__(
+        self, parameter: str, rule: str, value: object | None = None, where: str = ""
+    ) -> None:
         self.parameter = parameter
         self.rule = rule
         self.value = value
@@ -61,8 +62,9 @@ def as_float_array(parameter: str, value: ArrayLike) -> NDArray[np.float64]:
     array = as_numbers(parameter, value)
     finite = np.isfinite(array)
     if not finite.all():
-        raise InputError(parameter, "must be finite (not inf or nan)",
-                         *_first_offender(array, ~finite))  # fmt: skip
+        raise InputError(
+            parameter, "must be finite (not inf or nan)", *_first_offender(array, ~finite)
+        )
     return array
 
 
@@ -75,13 +77,18 @@ def positive(parameter: str, value: ArrayLike) -> NDArray[np.float64]:
     return array
 
 
-def require(condition: NDArray[np.bool_] | bool, parameter: str, rule: str,
-            shown: NDArray[np.float64] | float | None = None) -> None:
+def require(
+    condition: NDArray[np.bool_] | bool,
+    parameter: str,
+    rule: str,
+    shown: NDArray[np.float64] | float | None = None,
+) -> None:
     """Raise :class:`InputError` unless ``condition`` holds everywhere."""
     condition = np.asarray(condition)
     if not condition.all():
         value, where = None, ""
         if shown is not None:
-            value, where = _first_offender(np.broadcast_to(np.asarray(shown, dtype=float),
-                                                           condition.shape), ~condition)
+            value, where = _first_offender(
+                np.broadcast_to(np.asarray(shown, dtype=float), condition.shape), ~condition
+            )
         raise InputError(parameter, rule, value, where)

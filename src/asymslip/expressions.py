@@ -34,9 +34,25 @@ from .errors import InputError
 #: Functions a formula may use (SymPy names); each has a NumPy counterpart, as do the
 #: derivatives a derivation takes.
 ALLOWED_FUNCTIONS = (
-    "sqrt", "cbrt", "exp", "log", "sin", "cos", "tan", "asin", "acos", "atan", "atan2",
-    "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "Abs",
-)  # fmt: skip
+    "sqrt",
+    "cbrt",
+    "exp",
+    "log",
+    "sin",
+    "cos",
+    "tan",
+    "asin",
+    "acos",
+    "atan",
+    "atan2",
+    "sinh",
+    "cosh",
+    "tanh",
+    "asinh",
+    "acosh",
+    "atanh",
+    "Abs",
+)
 #: Constants a formula may use.
 ALLOWED_CONSTANTS = ("pi", "E")
 #: Functions refused with a reason (they would need SciPy at run time, or are not smooth).
@@ -76,12 +92,23 @@ def check_params(params: Sequence[str], variable: str, option: str = "params") -
     params = list(params)
     for name in params:
         if not IDENTIFIER.match(name):
-            raise InputError(option, "each parameter must be a name of letters, digits and _ "
-                             "starting with a letter", name)  # fmt: skip
-        if keyword.iskeyword(name) or name in _RESERVED or name == variable \
-                or name.startswith("tmp"):  # fmt: skip
-            raise InputError(option, f"this name is reserved ({variable} is the variable; "
-                             "tmp*, numpy and Python keywords are taken)", name)  # fmt: skip
+            raise InputError(
+                option,
+                "each parameter must be a name of letters, digits and _ starting with a letter",
+                name,
+            )
+        if (
+            keyword.iskeyword(name)
+            or name in _RESERVED
+            or name == variable
+            or name.startswith("tmp")
+        ):
+            raise InputError(
+                option,
+                f"this name is reserved ({variable} is the variable; "
+                "tmp*, numpy and Python keywords are taken)",
+                name,
+            )
         if name in ALLOWED_FUNCTIONS or name in ALLOWED_CONSTANTS or name in REFUSED_FUNCTIONS:
             raise InputError(option, "this name is a function or constant of formulas", name)
     if len(set(params)) != len(params):
@@ -103,14 +130,18 @@ def screen_formula(text: str, variable: str, params: Sequence[str], option: str)
     if not text.strip():
         raise InputError(option, f"is empty: give the formula in {variable}")
     if len(text) > MAX_CHARACTERS:
-        raise InputError(option, f"is {len(text)} characters long; at most {MAX_CHARACTERS} "
-                         "are accepted (write the formula more compactly)")  # fmt: skip
+        raise InputError(
+            option,
+            f"is {len(text)} characters long; at most {MAX_CHARACTERS} "
+            "are accepted (write the formula more compactly)",
+        )
     allowed = set(allowed_names(variable, params))
     try:
         tokens = list(tokenize.generate_tokens(io.StringIO(text).readline))
     except (tokenize.TokenError, SyntaxError) as error:
-        raise InputError(option, f"is not a complete formula ({error.args[0]})",
-                         _shown(text)) from None  # fmt: skip
+        raise InputError(
+            option, f"is not a complete formula ({error.args[0]})", _shown(text)
+        ) from None
     unknown: list[str] = []
     depth = 0
     for token in tokens:
@@ -121,26 +152,34 @@ def screen_formula(text: str, variable: str, params: Sequence[str], option: str)
             raise InputError(option, "must be a single line", _shown(text))
         if kind == tokenize.NAME:
             if string in REFUSED_FUNCTIONS:
-                raise InputError(option, f"{string} is not available: "
-                                 f"{REFUSED_FUNCTIONS[string]}", _shown(text))  # fmt: skip
+                raise InputError(
+                    option, f"{string} is not available: {REFUSED_FUNCTIONS[string]}", _shown(text)
+                )
             if string not in allowed and string not in unknown:
                 unknown.append(string)
         elif kind == tokenize.NUMBER:
             if not _NUMBER.match(string):
-                raise InputError(option, f"{string!r} is not a plain decimal number",
-                                 _shown(text))  # fmt: skip
+                raise InputError(option, f"{string!r} is not a plain decimal number", _shown(text))
         elif kind == tokenize.OP:
             if string not in _OPERATORS:
-                raise InputError(option, f"{string!r} is not allowed: only numbers, names, "
-                                 "+ - * / ** ^, parentheses and commas", _shown(text))  # fmt: skip
+                raise InputError(
+                    option,
+                    f"{string!r} is not allowed: only numbers, names, "
+                    "+ - * / ** ^, parentheses and commas",
+                    _shown(text),
+                )
             depth += {"(": 1, ")": -1}.get(string, 0)
             if depth > MAX_NESTING:
-                raise InputError(option, f"nests parentheses more than {MAX_NESTING} deep",
-                                 _shown(text))  # fmt: skip
+                raise InputError(
+                    option, f"nests parentheses more than {MAX_NESTING} deep", _shown(text)
+                )
         else:
-            raise InputError(option, f"{string.strip()!r} is not allowed: only numbers, "
-                             "names, + - * / ** ^, parentheses and commas",
-                             _shown(text))  # fmt: skip
+            raise InputError(
+                option,
+                f"{string.strip()!r} is not allowed: only numbers, "
+                "names, + - * / ** ^, parentheses and commas",
+                _shown(text),
+            )
     if unknown:
         plural = "s" if len(unknown) > 1 else ""
         raise InputError(
@@ -156,8 +195,10 @@ def sympy_module() -> Any:
     try:
         import sympy
     except ImportError:
-        raise InputError("derive", "needs SymPy: install asymslip with the derive extra "
-                         "(pip install 'asymslip[derive]')") from None  # fmt: skip
+        raise InputError(
+            "derive",
+            "needs SymPy: install asymslip with the derive extra (pip install 'asymslip[derive]')",
+        ) from None
     return sympy
 
 
@@ -188,15 +229,21 @@ def check_numbers(expr: Any, option: str, text: str) -> None:
         values[node] = value
         shown = sympy.sstr(node)
         if value.has(sympy.zoo, sympy.nan, sympy.oo, -sympy.oo) or value.is_real is not True:
-            raise InputError(option, f"{_shown(shown)} is not a finite real number (a division "
-                             "by zero, a logarithm of 0, a root of a negative number?)",
-                             _shown(text))  # fmt: skip
+            raise InputError(
+                option,
+                f"{_shown(shown)} is not a finite real number (a division "
+                "by zero, a logarithm of 0, a root of a negative number?)",
+                _shown(text),
+            )
         if abs(value) > sys.float_info.max or (value != 0 and float(value) == 0):
             if len(shown) > 40:
                 shown = sympy.sstr(sympy.Float(value, 3))
-            raise InputError(option, f"the number {shown} is outside double precision (about "
-                             "5e-324 to 1.8e308 in magnitude), in which the law is computed",
-                             _shown(text))  # fmt: skip
+            raise InputError(
+                option,
+                f"the number {shown} is outside double precision (about "
+                "5e-324 to 1.8e308 in magnitude), in which the law is computed",
+                _shown(text),
+            )
 
 
 @contextmanager
@@ -254,8 +301,12 @@ def parse_formula(
     namespace.update({function: getattr(sympy, function) for function in ALLOWED_FUNCTIONS})
     namespace.update({"pi": sympy.pi, "E": sympy.E})
     # Only the number constructors auto_number writes; no builtins, no SymPy namespace.
-    globals_ = {"__builtins__": {}, "Integer": sympy.Integer, "Float": sympy.Float,
-                "Rational": sympy.Rational}  # fmt: skip
+    globals_ = {
+        "__builtins__": {},
+        "Integer": sympy.Integer,
+        "Float": sympy.Float,
+        "Rational": sympy.Rational,
+    }
     transformations = (auto_number, rationalize, convert_xor)
     try:
         # First unevaluated, to check its numbers before SymPy computes them exactly: "9**9**9"
@@ -263,24 +314,30 @@ def parse_formula(
         # (evaluate=False writes the operators as calls to SymPy's Add, Mul and Pow.)
         operators = {"Add": sympy.Add, "Mul": sympy.Mul, "Pow": sympy.Pow}
         with _recursion_limit(10 * MAX_CHARACTERS):
-            unevaluated = parse_expr(text, local_dict=namespace,
-                                     global_dict=globals_ | operators,
-                                     transformations=transformations, evaluate=False)  # fmt: skip
+            unevaluated = parse_expr(
+                text,
+                local_dict=namespace,
+                global_dict=globals_ | operators,
+                transformations=transformations,
+                evaluate=False,
+            )
         if isinstance(unevaluated, sympy.Expr):  # else refused below as not one expression
             check_numbers(unevaluated, option, text)
-        expr = parse_expr(text, local_dict=namespace, global_dict=globals_,
-                          transformations=transformations)  # fmt: skip
+        expr = parse_expr(
+            text, local_dict=namespace, global_dict=globals_, transformations=transformations
+        )
     except InputError:
         raise
-    except (SyntaxError, TypeError, ValueError, AttributeError, NameError,
-            RecursionError) as error:  # fmt: skip
+    except (SyntaxError, TypeError, ValueError, AttributeError, NameError, RecursionError) as error:
         reason = "too deeply nested" if isinstance(error, RecursionError) else str(error)
-        raise InputError(option, f"is not a formula SymPy can read ({reason})",
-                         _shown(text)) from None  # fmt: skip
+        raise InputError(
+            option, f"is not a formula SymPy can read ({reason})", _shown(text)
+        ) from None
     if not isinstance(expr, sympy.Expr):
         raise InputError(option, f"must be one expression in {name}", _shown(text))
     extra = sorted(s.name for s in expr.free_symbols - {variable, *symbols})
     if extra:
-        raise InputError(option, f"has symbols other than {name} and the parameters: {extra}",
-                         _shown(text))  # fmt: skip
+        raise InputError(
+            option, f"has symbols other than {name} and the parameters: {extra}", _shown(text)
+        )
     return expr, symbols

@@ -45,9 +45,17 @@ from .tractions import traction_difference
 FloatArray = NDArray[np.float64]
 
 __all__ = [
-    "ERROR_MAP_CSV", "ERROR_MAP_PNG", "FIG5_PARAMETERS", "Fig5Curves", "Fig5Parameters",
-    "fig5_curves", "stale_error_map_lines", "stale_fig5_lines", "write_error_map", "write_fig5",
-]  # fmt: skip
+    "ERROR_MAP_CSV",
+    "ERROR_MAP_PNG",
+    "FIG5_PARAMETERS",
+    "Fig5Curves",
+    "Fig5Parameters",
+    "fig5_curves",
+    "stale_error_map_lines",
+    "stale_fig5_lines",
+    "write_error_map",
+    "write_fig5",
+]
 
 
 @dataclass(frozen=True)
@@ -167,8 +175,11 @@ def figure_class():
     try:
         from matplotlib.figure import Figure
     except ImportError:
-        raise InputError("figure", "drawing a PNG needs matplotlib: install the 'plot' extra "
-                         "(pip install 'asymslip[plot]')") from None  # fmt: skip
+        raise InputError(
+            "figure",
+            "drawing a PNG needs matplotlib: install the 'plot' extra "
+            "(pip install 'asymslip[plot]')",
+        ) from None
     return Figure
 
 
@@ -246,8 +257,9 @@ def stale_fig5_lines(directory: Path) -> list[str]:
     committed = Path(directory) / "fig5.csv"
     old = committed.read_text().splitlines(keepends=True) if committed.exists() else []
     fresh = fig5_csv_text(fig5_curves()).splitlines(keepends=True)
-    return list(difflib.unified_diff(old, fresh, f"committed/{committed.name}",
-                                     "regenerated/fig5.csv"))  # fmt: skip
+    return list(
+        difflib.unified_diff(old, fresh, f"committed/{committed.name}", "regenerated/fig5.csv")
+    )
 
 
 # --- the error map ------------------------------------------------------------------------------
@@ -274,8 +286,9 @@ def _output_folder(directory: Path, option: str) -> Path:
     try:
         directory.mkdir(parents=True, exist_ok=True)
     except OSError as error:  # a file where a folder must be, no permission, a full disk
-        raise InputError(option, f"cannot create the folder {directory}: "
-                         f"{error.strerror or error}") from None  # fmt: skip
+        raise InputError(
+            option, f"cannot create the folder {directory}: {error.strerror or error}"
+        ) from None
     return directory
 
 
@@ -296,8 +309,11 @@ def _draw_error_map(rows: list[dict[str, str]], path: Path) -> None:
     names = list(_ESTIMATE_STYLE)
     handles: list[object] = []
     for axes, tension in zip(axes_pair, (False, True), strict=True):
-        chosen = [row for row in rows if row["slip_direction"] != "0"
-                  and (float(row["tau"]) != 0) == tension]  # fmt: skip
+        chosen = [
+            row
+            for row in rows
+            if row["slip_direction"] != "0" and (float(row["tau"]) != 0) == tension
+        ]
         bound = max(float(row["b_error_elements"]) for row in chosen)
         axes.axhspan(_FLOOR / 2, bound, color="0.9", zorder=0)
         for offset, name in enumerate(names):
@@ -305,23 +321,42 @@ def _draw_error_map(rows: list[dict[str, str]], path: Path) -> None:
             shift = (offset - (len(names) - 1) / 2) * 0.09
             largest = []
             for ratio in ratios:
-                here = [row for row in chosen
-                        if float(row["a2_a1"]) == ratio and row[f"{name}_elements"]]  # fmt: skip
+                here = [
+                    row
+                    for row in chosen
+                    if float(row["a2_a1"]) == ratio and row[f"{name}_elements"]
+                ]
                 if not here:
                     continue
                 errors = np.array([abs(float(row[f"{name}_elements"])) for row in here])
                 warned = np.array([row["validity_warning"] != "0" for row in here])
                 shown = np.maximum(errors, _FLOOR)
                 x = np.full(len(shown), positions[ratio] + shift)
-                axes.scatter(x[~warned], shown[~warned], s=10, color=colour, alpha=0.35,
-                             marker=marker, linewidths=0)  # fmt: skip
-                axes.scatter(x[warned], shown[warned], s=12, facecolors="none", alpha=0.5,
-                             edgecolors=colour, marker=marker, linewidths=0.7)  # fmt: skip
+                axes.scatter(
+                    x[~warned],
+                    shown[~warned],
+                    s=10,
+                    color=colour,
+                    alpha=0.35,
+                    marker=marker,
+                    linewidths=0,
+                )
+                axes.scatter(
+                    x[warned],
+                    shown[warned],
+                    s=12,
+                    facecolors="none",
+                    alpha=0.5,
+                    edgecolors=colour,
+                    marker=marker,
+                    linewidths=0.7,
+                )
                 largest.append((positions[ratio] + shift, max(float(errors.max()), _FLOOR)))
             if largest:
                 xs, ys = zip(*largest, strict=True)
-                line = axes.plot(xs, ys, "-", color=colour, marker=marker, markersize=5,
-                                 label=label)  # fmt: skip
+                line = axes.plot(
+                    xs, ys, "-", color=colour, marker=marker, markersize=5, label=label
+                )
                 if not tension:
                     handles.append(line[0])
         axes.set_yscale("log")
@@ -329,26 +364,46 @@ def _draw_error_map(rows: list[dict[str, str]], path: Path) -> None:
         axes.set_xticks(range(len(ratios)), [f"{ratio:.2f}" for ratio in ratios])
         axes.set_xlim(-0.5, len(ratios) - 0.5)
         axes.set_xlabel("$a_2/a_1$")
-        axes.set_title(("with bulk tension ($\\eta \\neq 0$)" if tension
-                        else "without bulk tension ($\\eta = 0$)")
-                       + f": {len(chosen)} slipping edges, bound up to {bound:.2f}",
-                       fontsize="medium")  # fmt: skip
+        axes.set_title(
+            (
+                "with bulk tension ($\\eta \\neq 0$)"
+                if tension
+                else "without bulk tension ($\\eta = 0$)"
+            )
+            + f": {len(chosen)} slipping edges, bound up to {bound:.2f}",
+            fontsize="medium",
+        )
         axes.grid(True, which="major", axis="y", color="0.8", linewidth=0.5)
     axes_pair[0].set_ylabel("|estimate - solver b| in solver elements")
     handles += [
         Patch(color="0.9", label="within the solver's bound"),
-        Line2D([], [], linestyle="none", marker="o", color="0.4", alpha=0.5,
-               label="an edge, no validity warning"),
-        Line2D([], [], linestyle="none", marker="o", markerfacecolor="none",
-               markeredgecolor="0.4", label="an edge with a validity warning"),
-    ]  # fmt: skip
+        Line2D(
+            [],
+            [],
+            linestyle="none",
+            marker="o",
+            color="0.4",
+            alpha=0.5,
+            label="an edge, no validity warning",
+        ),
+        Line2D(
+            [],
+            [],
+            linestyle="none",
+            marker="o",
+            markerfacecolor="none",
+            markeredgecolor="0.4",
+            label="an edge with a validity warning",
+        ),
+    ]
     figure.legend(handles=handles, loc="lower center", ncol=4, frameon=False, fontsize="small")
     module = error_map_module
     figure.suptitle(
         "Stick boundary: every estimate against the reference solver, largest error (line) and "
         f"each slipping edge (points)\nN = {module.ELEMENTS} elements, $\\mu$ = {module.MU:g}, "
         "Hertz, rounded flat, power law n = 1.5 and 3; errors below 0.01 drawn at 0.01",
-        fontsize="medium")  # fmt: skip
+        fontsize="medium",
+    )
     figure.tight_layout(rect=(0, 0.1, 1, 1))
     with atomic_write(path, "out") as handle:
         figure.savefig(handle, format="png", dpi=130, metadata={"Software": None})
@@ -395,8 +450,9 @@ def write_error_map(
     written = []
     if redraw:
         if not csv_path.is_file():
-            raise InputError("data", f"has no {ERROR_MAP_CSV} to redraw: run the map first",
-                             str(data))  # fmt: skip
+            raise InputError(
+                "data", f"has no {ERROR_MAP_CSV} to redraw: run the map first", str(data)
+            )
         text = csv_path.read_text(encoding="utf-8")
     else:
         text = error_map_module.csv_text(error_map_module.error_map(progress=progress))

@@ -81,48 +81,106 @@ def _rule_table() -> dict[str, Rule]:
     texts += [
         ("P1_positive", "P1", "must be > 0"),
         ("P2_positive", "P2", "must be > 0"),
-        ("P_order", "P2", "must exceed P1: state 2 is the state with the larger normal load "
-         "(swap the two states; for P2 == P1 the paper's analysis does not apply)"),
+        (
+            "P_order",
+            "P2",
+            "must exceed P1: state 2 is the state with the larger normal load "
+            "(swap the two states; for P2 == P1 the paper's analysis does not apply)",
+        ),
         ("mu_positive", "mu", "must be > 0"),
         ("dQ_finite", "Q2", "Q2 - Q1 overflows double precision"),
         ("dsigma_finite", "sigma2", "sigma2 - sigma1 overflows double precision"),
-        ("lam_finite", "Q2", "lambda = (Q2 - Q1)/(P2 - P1) overflows double precision: the "
-         "load change is too small for the shear change"),
-        ("eta_finite", "sigma2", "eta = (sigma2 - sigma1)/(P2 - P1) overflows double precision: "
-         "the load change is too small for the tension change"),
-        ("sliding_1", "Q1", "|Q1| = {abs_Q1} must be < mu P1 = {mu_P1}: at state 1 the contact "
-         "would slide as a whole (gross sliding), not slip partially"),
-        ("sliding_2", "Q2", "|Q2| = {abs_Q2} must be < mu P2 = {mu_P2}: at state 2 the contact "
-         "would slide as a whole (gross sliding), not slip partially"),
+        (
+            "lam_finite",
+            "Q2",
+            "lambda = (Q2 - Q1)/(P2 - P1) overflows double precision: the "
+            "load change is too small for the shear change",
+        ),
+        (
+            "eta_finite",
+            "sigma2",
+            "eta = (sigma2 - sigma1)/(P2 - P1) overflows double precision: "
+            "the load change is too small for the tension change",
+        ),
+        (
+            "sliding_1",
+            "Q1",
+            "|Q1| = {abs_Q1} must be < mu P1 = {mu_P1}: at state 1 the contact "
+            "would slide as a whole (gross sliding), not slip partially",
+        ),
+        (
+            "sliding_2",
+            "Q2",
+            "|Q2| = {abs_Q2} must be < mu P2 = {mu_P2}: at state 2 the contact "
+            "would slide as a whole (gross sliding), not slip partially",
+        ),
         # The contact law at the loads of the cycle.
-        ("law_range_1", "P1", "no contact half-width of the {law} law carries this load "
-         "(P(a) = P1 has no root a > 0 where P increases with a): the load is outside the "
-         "law's range{range}"),
-        ("law_range_2", "P2", "no contact half-width of the {law} law carries this load "
-         "(P(a) = P2 has no root a > 0 where P increases with a): the load is outside the "
-         "law's range{range}"),
-        ("law_finite_1", "P1", "the {law} law gives a non-finite contact half-width or edge "
-         "multiplier at this load (overflow in double precision)"),
-        ("law_finite_2", "P2", "the {law} law gives a non-finite contact half-width or edge "
-         "multiplier at this load (overflow in double precision)"),
-        ("law_increasing", "law", "the {law} contact law must be increasing (dP/da > 0) over "
-         "the cycle; dP/da = {slope} at one of its loads"),
+        (
+            "law_range_1",
+            "P1",
+            "no contact half-width of the {law} law carries this load "
+            "(P(a) = P1 has no root a > 0 where P increases with a): the load is outside the "
+            "law's range{range}",
+        ),
+        (
+            "law_range_2",
+            "P2",
+            "no contact half-width of the {law} law carries this load "
+            "(P(a) = P2 has no root a > 0 where P increases with a): the load is outside the "
+            "law's range{range}",
+        ),
+        (
+            "law_finite_1",
+            "P1",
+            "the {law} law gives a non-finite contact half-width or edge "
+            "multiplier at this load (overflow in double precision)",
+        ),
+        (
+            "law_finite_2",
+            "P2",
+            "the {law} law gives a non-finite contact half-width or edge "
+            "multiplier at this load (overflow in double precision)",
+        ),
+        (
+            "law_increasing",
+            "law",
+            "the {law} contact law must be increasing (dP/da > 0) over "
+            "the cycle; dP/da = {slope} at one of its loads",
+        ),
         # What the asymptotic solution can answer, per edge.
-        ("denominator", "mu", "at the {side} edge the denominator of (17), mu (L_I1 + L_I2) + "
-         "L_II1 - L_II2, is not positive ({denominator}) for this friction coefficient and load "
-         "path: no steady partial-slip state exists (the stick boundary would lie beyond a2)"
-         "{note}"),
-        ("result_finite", "cycle", "the {law} law gives a non-finite {quantity} at the {side} "
-         "edge (overflow in double precision)"),
-        ("b_range", "cycle", "at the {side} edge the stick boundary b = {b} lies outside the "
-         "contact (0, a2]: the asymptotic solution is outside its range, eq25 = "
-         "|b - a1|/a1 = {eq25} is not small (eq24 = {eq24}, eq27 = {eq27})"),
-        ("slip_zones_meet", "cycle", "the slip zones of the two edges meet (b_right + b_left = "
-         "{b_sum} <= 0): no stick zone is left, so the contact cannot be in steady partial "
-         "slip"),
-    ]  # fmt: skip
-    return {key: Rule(code, parameter, text)
-            for code, (key, parameter, text) in enumerate(texts, start=1)}  # fmt: skip
+        (
+            "denominator",
+            "mu",
+            "at the {side} edge the denominator of (17), mu (L_I1 + L_I2) + "
+            "L_II1 - L_II2, is not positive ({denominator}) for this friction coefficient and load "
+            "path: no steady partial-slip state exists (the stick boundary would lie beyond a2)"
+            "{note}",
+        ),
+        (
+            "result_finite",
+            "cycle",
+            "the {law} law gives a non-finite {quantity} at the {side} "
+            "edge (overflow in double precision)",
+        ),
+        (
+            "b_range",
+            "cycle",
+            "at the {side} edge the stick boundary b = {b} lies outside the "
+            "contact (0, a2]: the asymptotic solution is outside its range, eq25 = "
+            "|b - a1|/a1 = {eq25} is not small (eq24 = {eq24}, eq27 = {eq27})",
+        ),
+        (
+            "slip_zones_meet",
+            "cycle",
+            "the slip zones of the two edges meet (b_right + b_left = "
+            "{b_sum} <= 0): no stick zone is left, so the contact cannot be in steady partial "
+            "slip",
+        ),
+    ]
+    return {
+        key: Rule(code, parameter, text)
+        for code, (key, parameter, text) in enumerate(texts, start=1)
+    }
 
 
 #: Every rule, by key, in the order elements are checked against them.
@@ -152,8 +210,13 @@ class Verdict:
     def any_invalid(self) -> bool:
         return bool(self.code.any())
 
-    def require(self, key: str, ok: ArrayLike | bool, shown: ArrayLike | None = None,
-                **fields: ArrayLike | str) -> None:  # fmt: skip
+    def require(
+        self,
+        key: str,
+        ok: ArrayLike | bool,
+        shown: ArrayLike | None = None,
+        **fields: ArrayLike | str,
+    ) -> None:
         """Mark the still-valid elements where ``ok`` fails as breaking rule ``key``.
 
         ``fields`` are the values the rule's text names (arrays broadcast to the shape, or
@@ -215,8 +278,11 @@ class Verdict:
         error = self.error(index)
         assert error is not None
         if self.shape:
-            where = f"at element {flat}" if len(self.shape) == 1 \
-                else f"at element {tuple(int(i) for i in index)}"  # fmt: skip
+            where = (
+                f"at element {flat}"
+                if len(self.shape) == 1
+                else f"at element {tuple(int(i) for i in index)}"
+            )
             if invalid.size > 1:
                 where += f"; {invalid.size} of {self.code.size} elements break a rule"
             error = InputError(error.parameter, error.rule, error.value, where)
@@ -257,8 +323,14 @@ def check_cycle_inputs(verdict: Verdict, values: Mapping[str, FloatArray]) -> No
     verdict.require("P_order", values["P2"] > values["P1"], values["P2"])
 
 
-def check_changes(verdict: Verdict, dQ: FloatArray, dsigma: FloatArray, lam: FloatArray,
-                  eta: FloatArray, values: Mapping[str, FloatArray]) -> None:  # fmt: skip
+def check_changes(
+    verdict: Verdict,
+    dQ: FloatArray,
+    dsigma: FloatArray,
+    lam: FloatArray,
+    eta: FloatArray,
+    values: Mapping[str, FloatArray],
+) -> None:
     """Overflow of the load changes and the path slopes (18)."""
     verdict.require("dQ_finite", finite(dQ), values["Q2"])
     verdict.require("dsigma_finite", finite(dsigma), values["sigma2"])
@@ -272,8 +344,7 @@ def check_friction(verdict: Verdict, mu: FloatArray) -> None:
     verdict.require("mu_positive", mu > 0, mu)
 
 
-def check_partial_slip(verdict: Verdict, mu: FloatArray,
-                       values: Mapping[str, FloatArray]) -> None:  # fmt: skip
+def check_partial_slip(verdict: Verdict, mu: FloatArray, values: Mapping[str, FloatArray]) -> None:
     """No gross sliding at either state: |Q_i| < mu P_i.
 
     The admissible states form the cone |Q| < mu P, which is convex, so a straight path
@@ -284,5 +355,9 @@ def check_partial_slip(verdict: Verdict, mu: FloatArray,
     for state in ("1", "2"):
         capacity = mu * values[f"P{state}"]
         shear = abs(values[f"Q{state}"])
-        verdict.require(f"sliding_{state}", shear < capacity, None,
-                        **{f"abs_Q{state}": shear, f"mu_P{state}": capacity})  # fmt: skip
+        verdict.require(
+            f"sliding_{state}",
+            shear < capacity,
+            None,
+            **{f"abs_Q{state}": shear, f"mu_P{state}": capacity},
+        )

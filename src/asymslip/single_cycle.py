@@ -56,11 +56,14 @@ from .edge_flags import (
 )
 from .laws.base import ContactLaw, LawState
 
-EQ24_LARGE, EQ25_LARGE, EQ26_LARGE, EQ27_LARGE = (MEASURE_FLAGS[key] for key in
-                                                  ("eq24", "eq25", "eq26", "eq27"))
+EQ24_LARGE, EQ25_LARGE, EQ26_LARGE, EQ27_LARGE = (
+    MEASURE_FLAGS[key] for key in ("eq24", "eq25", "eq26", "eq27")
+)
 
-def evaluate_one(law: ContactLaw, cycle: LoadCycle,
-                 mu: ArrayLike) -> tuple[dict[str, object], dict[str, object]] | None:  # fmt: skip
+
+def evaluate_one(
+    law: ContactLaw, cycle: LoadCycle, mu: ArrayLike
+) -> tuple[dict[str, object], dict[str, object]] | None:
     """The fields of the right and left edges' results (the numbers of
     :class:`~asymslip.slip_zones.SlipZoneResult`, its ``validity`` and ``warning_flags``), or
     None where the array path must answer.
@@ -70,12 +73,17 @@ def evaluate_one(law: ContactLaw, cycle: LoadCycle,
     raises where NumPy would give inf or NaN.
     """
     numbers = cycle.numbers
-    if numbers is None or not cycle.checked or not law.symmetric \
-            or hasattr(law, "shear_multiplier"):  # fmt: skip
+    if (
+        numbers is None
+        or not cycle.checked
+        or not law.symmetric
+        or hasattr(law, "shear_multiplier")
+    ):
         return None
     if type(mu) is not float:
-        if type(mu) is not int and not (isinstance(mu, (np.floating, np.ndarray))
-                                        and np.ndim(mu) == 0):  # fmt: skip
+        if type(mu) is not int and not (
+            isinstance(mu, (np.floating, np.ndarray)) and np.ndim(mu) == 0
+        ):
             return None
         mu = float(mu)
     P1, Q1, P2, Q2, sigma1, sigma2 = numbers
@@ -91,8 +99,9 @@ def evaluate_one(law: ContactLaw, cycle: LoadCycle,
         return None  # the array path gives the infs and NaNs its rules then name
 
 
-def _both_edges(law: ContactLaw, mu: float, P1: float, P2: float, dQ: float,
-                dsigma: float) -> tuple[dict[str, object], dict[str, object]] | None:  # fmt: skip
+def _both_edges(
+    law: ContactLaw, mu: float, P1: float, P2: float, dQ: float, dsigma: float
+) -> tuple[dict[str, object], dict[str, object]] | None:
     dP = P2 - P1
     lam, eta = dQ / dP, dsigma / dP
     state = law.cycle_state(P1, dP)
@@ -103,18 +112,21 @@ def _both_edges(law: ContactLaw, mu: float, P1: float, P2: float, dQ: float,
     right = _shear(mu, lam, eta, state)
     left = _shear(mu, -lam, eta, state)
     # Where the law is known only over a range of loads (a table law): the same at both edges.
-    extrapolated = (EXTRAPOLATED_P1 if law.extrapolated(P1) else 0) \
-        | (EXTRAPOLATED_P2 if law.extrapolated(state.P2) else 0)  # fmt: skip
+    extrapolated = (EXTRAPOLATED_P1 if law.extrapolated(P1) else 0) | (
+        EXTRAPOLATED_P2 if law.extrapolated(state.P2) else 0
+    )
     right_oriented = _oriented(lam, eta, right[2], left[2])
     left_oriented = _oriented(-lam, eta, left[2], right[2])
-    right_estimates = edge_estimates(kernels, mu, *right_oriented[:2], state, dP,
-                                     right_oriented[2])  # fmt: skip
+    right_estimates = edge_estimates(kernels, mu, *right_oriented[:2], state, dP, right_oriented[2])
     # Without bulk tension a symmetric contact is its own mirror image: where the two edges
     # slip opposite ways in their own frames, the left edge asks the kernels exactly what the
     # right one asked (the same oriented lam, eta = +-0 and other-edge factor), so it is
     # answered once (derivations/edge_symmetry.py).
-    left_estimates = right_estimates if left_oriented == right_oriented else \
-        edge_estimates(kernels, mu, *left_oriented[:2], state, dP, left_oriented[2])  # fmt: skip
+    left_estimates = (
+        right_estimates
+        if left_oriented == right_oriented
+        else edge_estimates(kernels, mu, *left_oriented[:2], state, dP, left_oriented[2])
+    )
     right_edge = _edge(law, state, mu, lam, eta, right, left[2], extrapolated, right_estimates)
     if right_edge is None:
         return None
@@ -127,10 +139,22 @@ def _both_edges(law: ContactLaw, mu: float, P1: float, P2: float, dQ: float,
 def _law_answers(state: LawState) -> bool:
     """The law carries both loads, finitely, and increases there (law_range, law_finite,
     law_increasing)."""
-    total = state.a1 + state.L_I1 + state.load_slope1 + state.a2 + state.da + state.L_I2 \
-        + state.load_slope2  # fmt: skip
-    return bool(state.found1 and state.found2 and total - total == 0
-                and state.load_slope1 > 0 and state.load_slope2 > 0)
+    total = (
+        state.a1
+        + state.L_I1
+        + state.load_slope1
+        + state.a2
+        + state.da
+        + state.L_I2
+        + state.load_slope2
+    )
+    return bool(
+        state.found1
+        and state.found2
+        and total - total == 0
+        and state.load_slope1 > 0
+        and state.load_slope2 > 0
+    )
 
 
 def _shear(mu: float, lam: float, eta: float, state: LawState) -> tuple[float, float, float]:
@@ -140,25 +164,33 @@ def _shear(mu: float, lam: float, eta: float, state: LawState) -> tuple[float, f
     return L_II1, L_II2, slip_direction(mu, state.L_I2, L_II2)
 
 
-def _oriented(lam: float, eta: float, direction: float,
-              other_direction: float) -> tuple[float, float, float]:  # fmt: skip
+def _oriented(
+    lam: float, eta: float, direction: float, other_direction: float
+) -> tuple[float, float, float]:
     """lam and eta in the edge's slip direction, and the other-edge factor of b2."""
     orientation = direction if direction != 0.0 else 1.0
     other_edge = 1.0 if other_direction == 0.0 else -direction * other_direction
     return orientation * lam, orientation * eta, other_edge
 
 
-def _edge(law: ContactLaw, state: LawState, mu: float, lam: float, eta: float,
-          shear: tuple[float, float, float], other_direction: float, extrapolated: int,
-          estimates: tuple[float, ...]) -> dict[str, object] | None:  # fmt: skip
+def _edge(
+    law: ContactLaw,
+    state: LawState,
+    mu: float,
+    lam: float,
+    eta: float,
+    shear: tuple[float, float, float],
+    other_direction: float,
+    extrapolated: int,
+    estimates: tuple[float, ...],
+) -> dict[str, object] | None:
     """The fields of one edge's result (every field of a SlipZoneResult), as
     :func:`asymslip.slip_zones._edge` and ``_finish_edge`` give them, or None if a rule is
     broken."""
     a1, a2, da, L_I1, L_I2, P1 = state.a1, state.a2, state.da, state.L_I1, state.L_I2, state.P1
     L_II1, L_II2, direction = shear
     slips = direction != 0.0
-    paper_width, denominator, b_first_order, width, stick_width, P_K, eq24, eq26, eq27 = \
-        estimates  # fmt: skip
+    paper_width, denominator, b_first_order, width, stick_width, P_K, eq24, eq26, eq27 = estimates
     if slips:
         # (17) has a steady partial-slip state only for a positive denominator (denominator).
         scale = 2 * mu * (L_I1 + L_I2) + abs(L_II1) + abs(L_II2)
@@ -181,8 +213,9 @@ def _edge(law: ContactLaw, state: LawState, mu: float, lam: float, eta: float,
     # The warnings, flag by flag as in slip_zones._edge and _finish_edge.
     flags = extrapolated
     if slips:
-        paper_limit, first_limit, stick_limit, exact_limit = disagreement_limits(a1, da, width,
-                                                                                 accuracy)
+        paper_limit, first_limit, stick_limit, exact_limit = disagreement_limits(
+            a1, da, width, accuracy
+        )
         if abs(b_paper - b) > paper_limit:
             flags |= DISAGREE_PAPER
         if abs(b_first_order - b) > first_limit:
@@ -217,15 +250,27 @@ def _edge(law: ContactLaw, state: LawState, mu: float, lam: float, eta: float,
     # The fields of the edge's SlipZoneResult, in its order (slip_zones.SlipZoneResult); None
     # for an estimate not derived here (NaN).
     return {
-        "a1": a1, "a2": a2, "lam": lam, "eta": eta, "L_I1": L_I1, "L_I2": L_I2,
-        "L_II1": L_II1, "L_II2": L_II2, "b": b, "slip_zone_width": width,
+        "a1": a1,
+        "a2": a2,
+        "lam": lam,
+        "eta": eta,
+        "L_I1": L_I1,
+        "L_I2": L_I2,
+        "L_II1": L_II1,
+        "L_II2": L_II2,
+        "b": b,
+        "slip_zone_width": width,
         "b_accuracy": accuracy,
         "b_paper": b_paper if b_paper == b_paper else None,
         "b_first_order": b_first_order if b_first_order == b_first_order else None,
         "b_exact": b_exact if b_exact == b_exact else None,
-        "b_corrective_stick": b_corrective_stick if b_corrective_stick == b_corrective_stick
+        "b_corrective_stick": b_corrective_stick
+        if b_corrective_stick == b_corrective_stick
         else None,
         "slip_direction": int(direction),
         "validity": {"eq24": eq24, "eq25": eq25, "eq26": eq26, "eq27": eq27},
-        "warning_flags": flags, "law": law, "errors": None, "left": None,
-    }  # fmt: skip
+        "warning_flags": flags,
+        "law": law,
+        "errors": None,
+        "left": None,
+    }

@@ -69,6 +69,7 @@ FloatArray = NDArray[np.float64]
 Side = Literal["right", "left"]
 SIDES: tuple[Side, Side] = ("right", "left")
 
+
 # --- the evaluation -----------------------------------------------------------------------------
 @dataclass
 class Evaluation:
@@ -92,7 +93,11 @@ def _is_array(value: object) -> bool:
 
 
 def _shear_multipliers(
-    law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta: FloatArray,
+    law: ContactLaw,
+    state: LawState,
+    mu: FloatArray,
+    lam: FloatArray,
+    eta: FloatArray,
     kernels: ModuleType,
 ) -> tuple[FloatArray, FloatArray, FloatArray]:
     """L_II1, L_II2 and the slip direction of one edge (in its own frame).
@@ -109,24 +114,35 @@ def _shear_multipliers(
     return L_II1, L_II2, slip_direction(mu, state.L_I2, L_II2)
 
 
-def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta: FloatArray,
-          dP: FloatArray, verdict: Verdict, side: Side,
-          shear: tuple[FloatArray, FloatArray, FloatArray],
-          other_direction: FloatArray, kernels: ModuleType) -> EdgeValues:  # fmt: skip
+def _edge(
+    law: ContactLaw,
+    state: LawState,
+    mu: FloatArray,
+    lam: FloatArray,
+    eta: FloatArray,
+    dP: FloatArray,
+    verdict: Verdict,
+    side: Side,
+    shear: tuple[FloatArray, FloatArray, FloatArray],
+    other_direction: FloatArray,
+    kernels: ModuleType,
+) -> EdgeValues:
     a1, a2, da, L_I1, L_I2 = state.a1, state.a2, state.da, state.L_I1, state.L_I2
     L_II1, L_II2, direction = shear
     slips = direction != 0
     orientation = _where(slips, direction, 1.0)
     lam_o, eta_o = orientation * lam, orientation * eta
     if hasattr(law, "shear_multiplier"):
-        return _edge_with_own_multipliers(law, state, mu, lam, eta, dP, verdict, side, shear,
-                                          slips, orientation, kernels)  # fmt: skip
+        return _edge_with_own_multipliers(
+            law, state, mu, lam, eta, dP, verdict, side, shear, slips, orientation, kernels
+        )
     # The other edge slips the same way in the global frame when the two own-frame directions
     # differ in sign (the left edge's frame is mirrored); +1 too where it does not slip
     # (derivations/second_order_slip_zone.py).
     other_edge = _where(other_direction == 0, 1.0, -direction * other_direction)
-    (paper_width, denominator, b_first_order, width, stick_width, P_K, eq24, eq26,
-     eq27) = edge_estimates(kernels, mu, lam_o, eta_o, state, dP, other_edge)
+    (paper_width, denominator, b_first_order, width, stick_width, P_K, eq24, eq26, eq27) = (
+        edge_estimates(kernels, mu, lam_o, eta_o, state, dP, other_edge)
+    )
     # (22), the paper's headline, and its cancellation-free width a1 - b.
     paper_width = _where(slips, paper_width, 0.0)
     # The headline: b to second order with both edges and bulk tension (b2), the estimate the
@@ -137,14 +153,23 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
     exact = (eta == 0) & law.symmetric
     P_K = _where(slips, P_K, state.P1)
     if exact is True or (_is_array(exact) and exact.any()):
-        b_exact = _where(exact, law.half_width_near(_where(exact, P_K, state.P1), state.P1, a1),
-                         np.nan)  # fmt: skip
+        b_exact = _where(
+            exact, law.half_width_near(_where(exact, P_K, state.P1), state.P1, a1), np.nan
+        )
     else:
         b_exact = np.full(np.shape(a1), np.nan) if _is_array(a1) else np.nan
     accuracy = stated_accuracy(a1, da, width)
     values = {
-        "a1": a1, "a2": a2, "lam": lam, "eta": eta, "L_I1": L_I1, "L_I2": L_I2,
-        "L_II1": L_II1, "L_II2": L_II2, "b": b, "slip_zone_width": width,
+        "a1": a1,
+        "a2": a2,
+        "lam": lam,
+        "eta": eta,
+        "L_I1": L_I1,
+        "L_I2": L_I2,
+        "L_II1": L_II1,
+        "L_II2": L_II2,
+        "b": b,
+        "slip_zone_width": width,
         "b_accuracy": accuracy,
         "b_paper": a1 - paper_width,
         "b_first_order": _where(slips, b_first_order, a1),
@@ -158,7 +183,7 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
         "eq25": abs(width) / a1,
         "eq26": eq26,
         "eq27": _where(slips, eq27, 0.0),
-    }  # fmt: skip
+    }
     disagree = 0
     limits = disagreement_limits(a1, da, width, accuracy)
     for (key, bit), limit in zip(DISAGREEMENTS, limits, strict=True):
@@ -167,30 +192,55 @@ def _edge(law: ContactLaw, state: LawState, mu: FloatArray, lam: FloatArray, eta
     return _finish_edge(law, state, mu, verdict, side, values, denominator, slips, disagree)
 
 
-def _finish_edge(law: ContactLaw, state: LawState, mu: FloatArray, verdict: Verdict, side: Side,
-                 values: dict[str, FloatArray], denominator: FloatArray, slips: ArrayLike,
-                 disagree: ArrayLike) -> EdgeValues:  # fmt: skip
+def _finish_edge(
+    law: ContactLaw,
+    state: LawState,
+    mu: FloatArray,
+    verdict: Verdict,
+    side: Side,
+    values: dict[str, FloatArray],
+    denominator: FloatArray,
+    slips: ArrayLike,
+    disagree: ArrayLike,
+) -> EdgeValues:
     """What the asymptotic solution can answer at this edge (the rules), and the warnings."""
     L_I1, L_I2, L_II1, L_II2 = values["L_I1"], values["L_I2"], values["L_II1"], values["L_II2"]
     b, a2 = values["b"], values["a2"]
     scale = 2 * mu * (L_I1 + L_I2) + abs(L_II1) + abs(L_II2)
     tolerance = DENOMINATOR_TOLERANCE * scale
-    admits = ~slips | (denominator > tolerance) if not isinstance(slips, (bool, np.bool_)) \
-        else (not slips) or denominator > tolerance  # fmt: skip
+    admits = (
+        ~slips | (denominator > tolerance)
+        if not isinstance(slips, (bool, np.bool_))
+        else (not slips) or denominator > tolerance
+    )
     refused = ~np.asarray(admits)
-    note = law.resolution_note(np.broadcast_to(state.P1, refused.shape)[refused],
-                               np.broadcast_to(state.P2, refused.shape)[refused]) \
-        if refused.any() else ""  # fmt: skip
+    note = (
+        law.resolution_note(
+            np.broadcast_to(state.P1, refused.shape)[refused],
+            np.broadcast_to(state.P2, refused.shape)[refused],
+        )
+        if refused.any()
+        else ""
+    )
     verdict.require("denominator", admits, mu, side=side, denominator=denominator, note=note)
     # Non-finite results first: a b that overflowed is not "outside the contact".
     checked = ("b", "slip_zone_width", "b_first_order", "L_II1", "L_II2", *MEASURE_KEYS)
     total = sum(values[key] for key in checked)
     if not (finite(total).all() if _is_array(total) else finite(total)):
         for key in checked:
-            verdict.require("result_finite", finite(values[key]), None, side=side,
-                            law=law.name, quantity=key)  # fmt: skip
-    verdict.require("b_range", (b > 0) & (b <= a2), None, side=side, b=b,
-                    eq25=values["eq25"], eq24=values["eq24"], eq27=values["eq27"])  # fmt: skip
+            verdict.require(
+                "result_finite", finite(values[key]), None, side=side, law=law.name, quantity=key
+            )
+    verdict.require(
+        "b_range",
+        (b > 0) & (b <= a2),
+        None,
+        side=side,
+        b=b,
+        eq25=values["eq25"],
+        eq24=values["eq24"],
+        eq27=values["eq27"],
+    )
     flags = _where(slips, 0, NO_SLIP) | disagree
     for key, bit in MEASURE_FLAGS.items():
         flags = flags | _where(values[key] > VALIDITY_THRESHOLD, bit, 0)
@@ -204,12 +254,20 @@ def _finish_edge(law: ContactLaw, state: LawState, mu: FloatArray, verdict: Verd
     return EdgeValues(values, flags)
 
 
-def _edge_with_own_multipliers(law: ContactLaw, state: LawState, mu: FloatArray,
-                               lam: FloatArray, eta: FloatArray,
-                               dP: FloatArray, verdict: Verdict, side: Side,
-                               shear: tuple[FloatArray, FloatArray, FloatArray],
-                               slips: ArrayLike, orientation: ArrayLike,
-                               kernels: ModuleType) -> EdgeValues:  # fmt: skip
+def _edge_with_own_multipliers(
+    law: ContactLaw,
+    state: LawState,
+    mu: FloatArray,
+    lam: FloatArray,
+    eta: FloatArray,
+    dP: FloatArray,
+    verdict: Verdict,
+    side: Side,
+    shear: tuple[FloatArray, FloatArray, FloatArray],
+    slips: ArrayLike,
+    orientation: ArrayLike,
+    kernels: ModuleType,
+) -> EdgeValues:
     """An edge whose multipliers are its own (an asymmetric or calibrated contact).
 
     b is (17) in the edge's own L_I and L_II: (21), and so (22), do not hold at an edge of an
@@ -224,29 +282,45 @@ def _edge_with_own_multipliers(law: ContactLaw, state: LawState, mu: FloatArray,
     a1, a2, da, L_I1, L_I2 = state.a1, state.a2, state.da, state.L_I1, state.L_I2
     L_II1, L_II2, direction = shear
     L_II1_o, L_II2_o = orientation * L_II1, orientation * L_II2
-    width = _where(slips, kernels.slip_zone_width_from_multipliers(mu, da, L_I1, L_I2, L_II1_o,
-                                                                    L_II2_o), 0.0)  # fmt: skip
+    width = _where(
+        slips, kernels.slip_zone_width_from_multipliers(mu, da, L_I1, L_I2, L_II1_o, L_II2_o), 0.0
+    )
     b = a1 - width
-    denominator = kernels.stick_boundary_denominator_from_multipliers(mu, L_I1, L_I2, L_II1_o,
-                                                                       L_II2_o)  # fmt: skip
+    denominator = kernels.stick_boundary_denominator_from_multipliers(
+        mu, L_I1, L_I2, L_II1_o, L_II2_o
+    )
     worst_slope = larger(state.a_slope1, state.a_slope2)
     worst_multiplier_slope = larger(abs(state.L_I_slope1), abs(state.L_I_slope2))
     ratio = L_II1_o / L_I1  # the edge's own lambda + pi eta a1/4
     first_order = a1 * kernels.stick_ratio_first_order(mu, ratio, 0.0, a1, dP, state.a_slope1)
     missing = np.full(np.shape(a1), np.nan) if _is_array(a1) else np.nan
     values = {
-        "a1": a1, "a2": a2, "lam": lam, "eta": eta, "L_I1": L_I1, "L_I2": L_I2,
-        "L_II1": L_II1, "L_II2": L_II2, "b": b,
-        "slip_zone_width": width, "b_accuracy": 2 * da / a1 * abs(width), "b_paper": missing,
-        "b_first_order": _where(slips, first_order, a1), "b_exact": missing,
-        "b_corrective_stick": missing, "slip_direction": direction, "P_K": missing,
-        "paper_width": missing, "b_consistent": b,  # b is (17) in the edge's own multipliers
+        "a1": a1,
+        "a2": a2,
+        "lam": lam,
+        "eta": eta,
+        "L_I1": L_I1,
+        "L_I2": L_I2,
+        "L_II1": L_II1,
+        "L_II2": L_II2,
+        "b": b,
+        "slip_zone_width": width,
+        "b_accuracy": 2 * da / a1 * abs(width),
+        "b_paper": missing,
+        "b_first_order": _where(slips, first_order, a1),
+        "b_exact": missing,
+        "b_corrective_stick": missing,
+        "slip_direction": direction,
+        "P_K": missing,
+        "paper_width": missing,
+        "b_consistent": b,  # b is (17) in the edge's own multipliers
         "eq24": kernels.contact_growth_measure(dP, worst_slope, a1),
         "eq25": abs(width) / a1,
         "eq26": kernels.multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),
-        "eq27": _where(slips, kernels.slip_zone_growth_measure(mu, ratio, 0.0, a1, dP,
-                                                               worst_slope), 0.0),
-    }  # fmt: skip
+        "eq27": _where(
+            slips, kernels.slip_zone_growth_measure(mu, ratio, 0.0, a1, dP, worst_slope), 0.0
+        ),
+    }
     return _finish_edge(law, state, mu, verdict, side, values, denominator, slips, 0)
 
 
@@ -255,10 +329,13 @@ def _check_law(verdict: Verdict, state: LawState, law: ContactLaw) -> None:
     name = law.name
     verdict.require("law_range_1", state.found1, state.P1, law=name, range=law.range_note)
     verdict.require("law_range_2", state.found2, state.P2, law=name, range=law.range_note)
-    for number, quantities in (("1", (state.a1, state.L_I1, state.load_slope1)),
-                               ("2", (state.a2, state.da, state.L_I2, state.load_slope2))):
-        verdict.require(f"law_finite_{number}", finite(sum(quantities)),
-                        getattr(state, f"P{number}"), law=name)  # fmt: skip
+    for number, quantities in (
+        ("1", (state.a1, state.L_I1, state.load_slope1)),
+        ("2", (state.a2, state.da, state.L_I2, state.load_slope2)),
+    ):
+        verdict.require(
+            f"law_finite_{number}", finite(sum(quantities)), getattr(state, f"P{number}"), law=name
+        )
     slope = -larger(-state.load_slope1, -state.load_slope2)
     verdict.require("law_increasing", slope > 0, slope, law=name, slope=slope)
 
@@ -279,13 +356,14 @@ def evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> Evaluation:
             return _evaluate(law, cycle, mu, np.float64)
 
 
-def _evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike,
-              scalar: type[float]) -> Evaluation:  # fmt: skip
+def _evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike, scalar: type[float]) -> Evaluation:
     mu = as_numbers("mu", mu)
-    shape = () if cycle.shape == () and mu.shape == () else \
-        np.broadcast_shapes(cycle.shape, mu.shape)  # fmt: skip
-    verdict = cycle.verdict(shape) if not cycle.checked or shape != cycle.shape \
-        else Verdict(shape)  # a checked cycle of this shape already passed its rules
+    shape = (
+        () if cycle.shape == () and mu.shape == () else np.broadcast_shapes(cycle.shape, mu.shape)
+    )
+    verdict = (
+        cycle.verdict(shape) if not cycle.checked or shape != cycle.shape else Verdict(shape)
+    )  # a checked cycle of this shape already passed its rules
     if shape == ():
         # One cycle: scalars through the kernels cost a fraction of 0-d arrays.
         mu = scalar(mu)
@@ -319,13 +397,25 @@ def _evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike,
         states["left"] = states["right"]
     # One cycle on Python floats uses the math kernels (NumPy's per-call cost would dominate).
     kernels = scalar_kernels if scalar is float and shape == () else asymslip_gen
-    shear = {side: _shear_multipliers(law.for_edge(side), states[side], mu, sign * lam, eta,
-                                      kernels)
-             for side, sign in (("right", 1.0), ("left", -1.0))}  # fmt: skip
+    shear = {
+        side: _shear_multipliers(law.for_edge(side), states[side], mu, sign * lam, eta, kernels)
+        for side, sign in (("right", 1.0), ("left", -1.0))
+    }
     edges: dict[str, EdgeValues] = {}
     for side, sign, other in (("right", 1.0, "left"), ("left", -1.0, "right")):
-        edges[side] = _edge(law.for_edge(side), states[side], mu, sign * lam, eta, dP,
-                            verdict, side, shear[side], shear[other][2], kernels)  # fmt: skip
+        edges[side] = _edge(
+            law.for_edge(side),
+            states[side],
+            mu,
+            sign * lam,
+            eta,
+            dP,
+            verdict,
+            side,
+            shear[side],
+            shear[other][2],
+            kernels,
+        )
     b_sum = edges["right"].values["b"] + edges["left"].values["b"]
     verdict.require("slip_zones_meet", b_sum > 0, None, b_sum=b_sum)
     return Evaluation(law, shape, verdict, edges)
@@ -375,8 +465,7 @@ class SlipZoneResult:
         """The warnings in words: a list for one cycle, a list of lists for many."""
         if np.ndim(self.warning_flags) == 0:
             return warning_texts(int(self.warning_flags), self.law)
-        return [warning_texts(int(flags), self.law)
-                for flags in np.ravel(self.warning_flags)]  # fmt: skip
+        return [warning_texts(int(flags), self.law) for flags in np.ravel(self.warning_flags)]
 
     def to_dict(self) -> dict[str, object]:
         """The JSON object of one cycle: these keys, with ``left`` when both edges were asked."""
@@ -400,8 +489,9 @@ def _one_result(fields: dict[str, object]) -> SlipZoneResult:
     return result
 
 
-def _edge_result(evaluation: Evaluation, side: str, scalar: bool,
-                 errors: list[str | None] | None) -> SlipZoneResult:  # fmt: skip
+def _edge_result(
+    evaluation: Evaluation, side: str, scalar: bool, errors: list[str | None] | None
+) -> SlipZoneResult:
     edge = evaluation.edges[side]
     law = evaluation.law.for_edge(side)  # type: ignore[arg-type]
     if scalar:  # Python floats (NumPy scalars where a cycle fell back on them), None for NaN
@@ -426,7 +516,7 @@ def _edge_result(evaluation: Evaluation, side: str, scalar: bool,
         warning_flags=np.broadcast_to(np.asarray(edge.flags, dtype=np.int64), shape).copy(),
         law=law,
         errors=errors,
-    )  # fmt: skip
+    )
 
 
 def slip_zone(

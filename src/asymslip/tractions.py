@@ -88,8 +88,11 @@ def _edge_values(evaluation: Evaluation, edge: str) -> dict[str, float]:
         raise InputError("edge", "must be 'right' or 'left'", edge)
     values = {key: float(value) for key, value in evaluation.edges[edge].values.items()}
     if values["slip_direction"] == 0:
-        raise InputError("cycle", f"the {edge} edge does not slip (|lam + pi eta a2/4| <= mu): "
-                         "the traction difference is that of full stick, not (49)")  # fmt: skip
+        raise InputError(
+            "cycle",
+            f"the {edge} edge does not slip (|lam + pi eta a2/4| <= mu): "
+            "the traction difference is that of full stick, not (49)",
+        )
     return values
 
 
@@ -97,10 +100,14 @@ def _positions(x: ArrayLike, edge: str, a2: float) -> tuple[np.ndarray, np.ndarr
     """(the points as given, the points measured along the edge's outward direction)."""
     points = as_float_array("x", x).ravel()
     outward = points if edge == "right" else -points
-    edge_rule, far_rule = (f"must be < a2 = {a2:.12g}", f"must be > -a2 = {-a2:.12g}") \
-        if edge == "right" else (f"must be > -a2 = {-a2:.12g}", f"must be < a2 = {a2:.12g}")
-    require(outward < a2, "x", f"{edge_rule} (the {edge} state-2 edge: (49) is singular "
-            "there)", points)  # fmt: skip
+    edge_rule, far_rule = (
+        (f"must be < a2 = {a2:.12g}", f"must be > -a2 = {-a2:.12g}")
+        if edge == "right"
+        else (f"must be > -a2 = {-a2:.12g}", f"must be < a2 = {a2:.12g}")
+    )
+    require(
+        outward < a2, "x", f"{edge_rule} (the {edge} state-2 edge: (49) is singular there)", points
+    )
     require(outward > -a2, "x", f"{far_rule} (inside the contact)", points)
     return points, outward
 
@@ -149,25 +156,36 @@ def traction_difference(
         b = q["b_consistent"]  # (17)/(22): the b for which the density (15) solves (12)
     elif stick_boundary == "exact":
         if np.isnan(q["b_exact"]):
-            raise InputError("b", "the exact stick boundary a(P_K) does not exist for this "
-                             "cycle (it needs a symmetric law and eta = 0)")  # fmt: skip
+            raise InputError(
+                "b",
+                "the exact stick boundary a(P_K) does not exist for this "
+                "cycle (it needs a symmetric law and eta = 0)",
+            )
         b = q["b_exact"]
     else:
         raise InputError("b", "must be 'consistent' or 'exact'", stick_boundary)
     # Backward slip is forward slip of the reversed loads, with q_diff negated (edge_symmetry).
     direction = q["slip_direction"]
     asymptotic = direction * shear_traction_difference(
-        outward, b, q["a1"], q["a2"], mu, q["L_I1"], q["L_I2"], direction * q["L_II1"],
+        outward,
+        b,
+        q["a1"],
+        q["a2"],
+        mu,
+        q["L_I1"],
+        q["L_I2"],
+        direction * q["L_II1"],
         direction * q["L_II2"],
-    )  # fmt: skip
+    )
     exact = None
     if not np.isnan(q["b_exact"]):
         # The wedge's pressure is infinite at its apex, so (47) is inf - inf there; a pressure
         # can also overflow (a huge contact).  Such points are left out below, not warned.
         with np.errstate(all="ignore"):
             try:
-                pressures = [law.pressure(points, P)
-                             for P in (float(cycle.P2), float(cycle.P1), q["P_K"])]  # fmt: skip
+                pressures = [
+                    law.pressure(points, P) for P in (float(cycle.P2), float(cycle.P1), q["P_K"])
+                ]
             except NotImplementedError:
                 pressures = None
             if pressures is not None:
@@ -179,12 +197,16 @@ def traction_difference(
     if exact is not None:
         exact = np.asarray(exact, dtype=float) * np.ones(points.shape)
         defined = np.isfinite(exact)
-        exact_values = [float(value) if ok else None
-                        for value, ok in zip(exact.tolist(), defined.tolist(), strict=True)]
+        exact_values = [
+            float(value) if ok else None
+            for value, ok in zip(exact.tolist(), defined.tolist(), strict=True)
+        ]
         if not defined.all():
-            warnings.append(f"q_diff_exact (47) is left out (null) at {int((~defined).sum())} "
-                            "point(s) where it is not a finite double: the law's pressure is "
-                            "infinite there (the apex x = 0 of a wedge) or overflows")  # fmt: skip
+            warnings.append(
+                f"q_diff_exact (47) is left out (null) at {int((~defined).sum())} "
+                "point(s) where it is not a finite double: the law's pressure is "
+                "infinite there (the apex x = 0 of a wedge) or overflows"
+            )
     # The left edge is the right edge of the mirrored cycle: back in the global frame a
     # traction along x changes sign.
     global_sign = 1.0 if edge == "right" else -1.0
@@ -192,7 +214,8 @@ def traction_difference(
         edge=edge,
         x=points.tolist(),
         q_diff=(global_sign * np.asarray(asymptotic, dtype=float)).tolist(),
-        q_diff_exact=None if exact_values is None
+        q_diff_exact=None
+        if exact_values is None
         else [None if value is None else global_sign * value for value in exact_values],
         near_edge=(outward >= near_from).tolist(),
         near_edge_from=near_from,
@@ -234,26 +257,42 @@ def slip_displacement(
     if E_star is None:
         E_star = getattr(law, "E_star", None)
         if E_star is None:
-            raise InputError("E_star", f"is required for the slip displacement: the {law.name} "
-                             "law does not define the modulus E*")  # fmt: skip
+            raise InputError(
+                "E_star",
+                f"is required for the slip displacement: the {law.name} "
+                "law does not define the modulus E*",
+            )
     E_star = float(positive("E_star", E_star))
     points, outward = _positions(x, edge, q["a2"])
     direction = q["slip_direction"]
     # Along the edge's outward direction, then back to the global x (the left edge's outward
     # direction is -x, which flips the sign of a displacement measured along x).
     with np.errstate(all="ignore"):  # an overflow is refused below, not warned
-        along = direction * slip_on_loading(outward, q["b_consistent"], q["a1"], mu,
-                                            q["L_I1"], q["L_I2"], direction * q["L_II1"],
-                                            direction * q["L_II2"], E_star)  # fmt: skip
+        along = direction * slip_on_loading(
+            outward,
+            q["b_consistent"],
+            q["a1"],
+            mu,
+            q["L_I1"],
+            q["L_I2"],
+            direction * q["L_II1"],
+            direction * q["L_II2"],
+            E_star,
+        )
         global_sign = 1.0 if edge == "right" else -1.0
         slip = global_sign * np.asarray(along, dtype=float)
         inverse_modulus = np.float64(1.0) / np.float64(E_star)
     if not np.isfinite(slip).all():
         if not np.isfinite(inverse_modulus):
-            raise InputError("E_star", "is too small: the slip displacement scales as 1/E*, "
-                             "which overflows double precision", E_star)  # fmt: skip
-        raise InputError("cycle", "the slip displacement overflows double precision at these "
-                         "positions")  # fmt: skip
+            raise InputError(
+                "E_star",
+                "is too small: the slip displacement scales as 1/E*, "
+                "which overflows double precision",
+                E_star,
+            )
+        raise InputError(
+            "cycle", "the slip displacement overflows double precision at these positions"
+        )
     return SlipResult(
         edge=edge,
         x=points.tolist(),

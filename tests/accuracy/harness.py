@@ -118,16 +118,29 @@ def draw_problem(
     x_contact = a2 - min(distance, a2 * mpmath.mpf("0.999"))
 
     exact = {
-        "a1": a1, "a2": a2, "da": a2 - a1, "L_I1": L_I1, "L_I2": L_I2, "L_II1": L_II1,
-        "L_II2": L_II2, "b": b, "dP_da1": dP_da1, "da_dP": 1 / dP_da1, "dL_I_dP": dL_I_dP,
+        "a1": a1,
+        "a2": a2,
+        "da": a2 - a1,
+        "L_I1": L_I1,
+        "L_I2": L_I2,
+        "L_II1": L_II1,
+        "L_II2": L_II2,
+        "b": b,
+        "dP_da1": dP_da1,
+        "da_dP": 1 / dP_da1,
+        "dL_I_dP": dL_I_dP,
         "d2a_dP2": -d2P_da2 / dP_da1**3,
-        "dQ_da": lam_ * dP_da1, "dsigma_da": eta_ * dP_da1, "x_slip": x_slip,
-        "x_contact": x_contact, "P_K": P1_ + dP_ * (mu_ - lam_) / (2 * mu_),
+        "dQ_da": lam_ * dP_da1,
+        "dsigma_da": eta_ * dP_da1,
+        "x_slip": x_slip,
+        "x_contact": x_contact,
+        "P_K": P1_ + dP_ * (mu_ - lam_) / (2 * mu_),
         # s = log a against u = log P: s' = P a'/a, s'' = s' + P^2 a''/a - s'^2.
         "log_slope1": P1_ / (dP_da1 * a1),
-        "log_curvature1": P1_ / (dP_da1 * a1) + P1_**2 * (-d2P_da2 / dP_da1**3) / a1
+        "log_curvature1": P1_ / (dP_da1 * a1)
+        + P1_**2 * (-d2P_da2 / dP_da1**3) / a1
         - (P1_ / (dP_da1 * a1)) ** 2,
-    }  # fmt: skip
+    }
     if law.extras is not None:
         exact.update(law.extras(a1, mp))
     problem = {key: float(value) for key, value in exact.items()}
@@ -284,8 +297,9 @@ def resolve(quantity: Quantity) -> Callable[..., object] | str:
     return quantity.compose
 
 
-def condition_number(reference: Callable[..., mpmath.mpf], arguments: dict[str, mpmath.mpf],
-                     value: mpmath.mpf) -> float:  # fmt: skip
+def condition_number(
+    reference: Callable[..., mpmath.mpf], arguments: dict[str, mpmath.mpf], value: mpmath.mpf
+) -> float:
     """Componentwise relative condition number of ``reference`` at ``arguments``.
 
     Forward differences with relative step 1e-20 at 50 digits: accurate to ~1e-20 relative,
@@ -340,8 +354,9 @@ def evaluate(
     # Valid input must not raise NumPy warnings (the test suite runs with -W error anyway).
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        computed = np.broadcast_to(np.asarray(function(**keywords), dtype=np.float64),
-                                   (len(chosen),))  # fmt: skip
+        computed = np.broadcast_to(
+            np.asarray(function(**keywords), dtype=np.float64), (len(chosen),)
+        )
     # Condition numbers cost one reference per argument: skip them for quadrature references
     # unless the error needs explaining.
     always_condition = every_condition and quantity.every == 1 and not quantity.costly
@@ -398,24 +413,36 @@ def run(
         near_cancellation_share=near_cancellation_share,
     )
     if verbose:
-        print(f"drew {len(problems)} problems in {time.perf_counter() - start:.1f} s",
-              file=sys.stderr)  # fmt: skip
+        print(
+            f"drew {len(problems)} problems in {time.perf_counter() - start:.1f} s", file=sys.stderr
+        )
     chosen = [q for q in QUANTITIES.values() if select in q.name]
     results = []
     for number, quantity in enumerate(chosen, start=1):
         started = time.perf_counter()
 
         def progress(done: int, total: int, number=number, name=quantity.name) -> None:
-            print(f"\r[{number}/{len(chosen)}] {name}: {done}/{total} samples",
-                  end="", file=sys.stderr, flush=True)  # fmt: skip
+            print(
+                f"\r[{number}/{len(chosen)}] {name}: {done}/{total} samples",
+                end="",
+                file=sys.stderr,
+                flush=True,
+            )
 
-        result = evaluate(quantity, problems, progress=progress if verbose else None,
-                          every_condition=every_condition)  # fmt: skip
+        result = evaluate(
+            quantity,
+            problems,
+            progress=progress if verbose else None,
+            every_condition=every_condition,
+        )
         results.append(result)
         if verbose:
-            print(f"\r[{number}/{len(chosen)}] {quantity.name}: {result.samples} samples, "
-                  f"max rel. error {result.max_error:.1e}, {time.perf_counter() - started:.1f} s",
-                  file=sys.stderr, flush=True)  # fmt: skip
+            print(
+                f"\r[{number}/{len(chosen)}] {quantity.name}: {result.samples} samples, "
+                f"max rel. error {result.max_error:.1e}, {time.perf_counter() - started:.1f} s",
+                file=sys.stderr,
+                flush=True,
+            )
     return results
 
 
@@ -474,8 +501,11 @@ def report(
         cells = [_number(by_law.get(name, math.nan)) for name in names]
         lines.append(f"| {result.quantity.name} | " + " | ".join(cells) + " |")
     unchecked = unchecked_generated_functions()
-    lines += ["", "Generated functions without a registered reference: "
-              + (", ".join(unchecked) if unchecked else "none")]  # fmt: skip
+    lines += [
+        "",
+        "Generated functions without a registered reference: "
+        + (", ".join(unchecked) if unchecked else "none"),
+    ]
     return "\n".join(lines)
 
 
@@ -487,13 +517,18 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--select", default="", help="only quantities whose name contains this")
     parser.add_argument(
-        "--dP-over-P1", type=float, default=None, dest="relative_load_change",
+        "--dP-over-P1",
+        type=float,
+        default=None,
+        dest="relative_load_change",
         help="fix dP/P1 (e.g. 1e-12) instead of drawing it",
-    )  # fmt: skip
+    )
     parser.add_argument(
-        "--near-cancellation", type=float, default=NEAR_CANCELLATION_SHARE,
+        "--near-cancellation",
+        type=float,
+        default=NEAR_CANCELLATION_SHARE,
         help="share of problems drawn near lam/mu + pi eta a1/(4 mu) = 1",
-    )  # fmt: skip
+    )
     parser.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
     args = parser.parse_args(argv)
     results = run(

@@ -144,16 +144,18 @@ def flat_half_width_mp(P, c, R, E_star):
         low, high = max(c, hertz), c + hertz
         if low == high:
             return +hertz
-        root = mpmath.findroot(lambda a: published_flat_load(a, c, R, E_star) - P,
-                               (low, high), solver="anderson")  # fmt: skip
+        root = mpmath.findroot(
+            lambda a: published_flat_load(a, c, R, E_star) - P, (low, high), solver="anderson"
+        )
     return +root
 
 
 def flat_load_slope_mp(a, c, R, E_star, order=1):
     """d^order P/da^order of the published law by mpmath.diff, with 20 digits to spare."""
     with mpmath.workdps(mpmath.mp.dps + 20):
-        derivative = mpmath.diff(lambda s: published_flat_load(s, c, R, E_star),
-                                 mpmath.mpf(a), order)  # fmt: skip
+        derivative = mpmath.diff(
+            lambda s: published_flat_load(s, c, R, E_star), mpmath.mpf(a), order
+        )
     return +derivative
 
 
@@ -212,8 +214,10 @@ register_law(
         # d/da of the published law, by hand: E* a arccos(c/a) / R.
         load_slope=lambda a, law: law["E_star"] * a * mpmath.acos(law["c"] / a) / law["R"],
         # The chord sqrt(a^2 - c^2) and corner angle arccos(c/a) at a1, by their definitions.
-        extras=lambda a, law: {"chord1": mpmath.sqrt(a * a - law["c"] ** 2),
-                               "angle1": mpmath.acos(law["c"] / a)},
+        extras=lambda a, law: {
+            "chord1": mpmath.sqrt(a * a - law["c"] ** 2),
+            "angle1": mpmath.acos(law["c"] / a),
+        },
     )
 )
 
@@ -296,21 +300,32 @@ def dislocation_density_15(x, b, a1, mu, L_I1, L_I2, L_II1, L_II2, E_star):
     )
 
 
-register_quantity(Quantity(
-    "corrective_slip.stick_boundary",
-    ("mu", "a1", "a2", "L_I1", "L_I2", "L_II1", "L_II2"),
-    stick_boundary_17, ("17",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "corrective_slip.stick_boundary_proportional",
-    ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2"),
-    stick_boundary_22, ("22", "50"),
-))  # fmt: skip
-register_quantity(Quantity(
-    "corrective_slip.stick_boundary_denominator",
-    ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2"),
-    stick_boundary_denominator_17, ("17", "21"),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "corrective_slip.stick_boundary",
+        ("mu", "a1", "a2", "L_I1", "L_I2", "L_II1", "L_II2"),
+        stick_boundary_17,
+        ("17",),
+    )
+)
+register_quantity(
+    Quantity(
+        "corrective_slip.stick_boundary_proportional",
+        ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2"),
+        stick_boundary_22,
+        ("22", "50"),
+    )
+)
+register_quantity(
+    Quantity(
+        "corrective_slip.stick_boundary_denominator",
+        ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2"),
+        stick_boundary_denominator_17,
+        ("17", "21"),
+    )
+)
+
+
 def width_17(mu, da, L_I1, L_I2, L_II1, L_II2):
     """a1 - b of (17) as printed, with a2 = a1 + da (exact at 50 digits)."""
     a1 = mpmath.mpf(1)  # (17) is translation-invariant: any a1
@@ -319,25 +334,38 @@ def width_17(mu, da, L_I1, L_I2, L_II1, L_II2):
     return a1 - (c2 * a2 + c1 * a1) / (c2 + c1)
 
 
-register_quantity(Quantity(
-    "corrective_slip.slip_zone_width_from_multipliers",
-    ("mu", "da", "L_I1", "L_I2", "L_II1", "L_II2"), width_17, ("17",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "corrective_slip.stick_boundary_denominator_from_multipliers",
-    ("mu", "L_I1", "L_I2", "L_II1", "L_II2"),
-    lambda mu, L_I1, L_I2, L_II1, L_II2: mu * (L_I1 + L_I2) + L_II1 - L_II2, ("17",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "corrective_slip.slip_zone_width",
-    ("mu", "lam", "eta", "a1", "da", "L_I1", "L_I2"),
-    slip_zone_width_22, ("22",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "corrective_slip.dislocation_density",
-    ("x=x_slip", "b", "a1", "mu", "L_I1", "L_I2", "L_II1", "L_II2", "E_star"),
-    dislocation_density_15, ("15",),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "corrective_slip.slip_zone_width_from_multipliers",
+        ("mu", "da", "L_I1", "L_I2", "L_II1", "L_II2"),
+        width_17,
+        ("17",),
+    )
+)
+register_quantity(
+    Quantity(
+        "corrective_slip.stick_boundary_denominator_from_multipliers",
+        ("mu", "L_I1", "L_I2", "L_II1", "L_II2"),
+        lambda mu, L_I1, L_I2, L_II1, L_II2: mu * (L_I1 + L_I2) + L_II1 - L_II2,
+        ("17",),
+    )
+)
+register_quantity(
+    Quantity(
+        "corrective_slip.slip_zone_width",
+        ("mu", "lam", "eta", "a1", "da", "L_I1", "L_I2"),
+        slip_zone_width_22,
+        ("22",),
+    )
+)
+register_quantity(
+    Quantity(
+        "corrective_slip.dislocation_density",
+        ("x=x_slip", "b", "a1", "mu", "L_I1", "L_I2", "L_II1", "L_II2", "E_star"),
+        dislocation_density_15,
+        ("15",),
+    )
+)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -360,18 +388,30 @@ def shear_multiplier_21(lam, eta, a, L_I):
     return (lam + pi * eta * a / 4) * L_I
 
 
-register_quantity(Quantity(
-    "edge_multipliers.normal_edge_multiplier", ("a=a1", "dP_da=dP_da1"),
-    normal_multiplier_19, ("19",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "edge_multipliers.shear_edge_multiplier", ("a=a1", "dQ_da", "dsigma_da"),
-    shear_multiplier_20, ("20",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "edge_multipliers.shear_edge_multiplier_proportional", ("lam", "eta", "a=a1", "L_I=L_I1"),
-    shear_multiplier_21, ("21",),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "edge_multipliers.normal_edge_multiplier",
+        ("a=a1", "dP_da=dP_da1"),
+        normal_multiplier_19,
+        ("19",),
+    )
+)
+register_quantity(
+    Quantity(
+        "edge_multipliers.shear_edge_multiplier",
+        ("a=a1", "dQ_da", "dsigma_da"),
+        shear_multiplier_20,
+        ("20",),
+    )
+)
+register_quantity(
+    Quantity(
+        "edge_multipliers.shear_edge_multiplier_proportional",
+        ("lam", "eta", "a=a1", "L_I=L_I1"),
+        shear_multiplier_21,
+        ("21",),
+    )
+)
 
 
 # Beyond the paper: the edges of an asymmetric contact (derivations/asymmetric_edge_multipliers.py)
@@ -387,25 +427,41 @@ def normal_multiplier_asymmetric(w, dP_da, dMc_da):
     return 2 / (pi * mpmath.sqrt(w)) * (dP_da + 4 * dMc_da / w)
 
 
-register_quantity(Quantity(
-    "asymmetric_edges.shear_edge_multiplier_asymmetric", ("lam", "eta", "w=a1", "da_dP"),
-    shear_multiplier_asymmetric, ("20", "21"),
-))  # fmt: skip
-register_quantity(Quantity(
-    "asymmetric_edges.normal_edge_multiplier_asymmetric",
-    ("w=a2", "dP_da=dP_da1", "dMc_da=dP_da1"), normal_multiplier_asymmetric, ("19",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "asymmetric_edges.edge_moment_factor", ("w=a1", "L_I=L_I1", "da_dP"),
-    lambda w, L_I, da_dP: pi * mpmath.sqrt(w) * L_I * da_dP / 2, ("19", "21"),
-))  # fmt: skip
-register_quantity(Quantity(
-    "asymmetric_edges.edge_multiplier_balance",
-    ("w=a2", "L_I_right=L_I1", "da_dP_right=da_dP", "L_I_left=L_I2", "da_dP_left=da_dP"),
-    lambda w, L_I_right, da_dP_right, L_I_left, da_dP_left: pi * mpmath.sqrt(w) / 4
-    * (L_I_right * da_dP_right + L_I_left * da_dP_left),
-    ("19",),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "asymmetric_edges.shear_edge_multiplier_asymmetric",
+        ("lam", "eta", "w=a1", "da_dP"),
+        shear_multiplier_asymmetric,
+        ("20", "21"),
+    )
+)
+register_quantity(
+    Quantity(
+        "asymmetric_edges.normal_edge_multiplier_asymmetric",
+        ("w=a2", "dP_da=dP_da1", "dMc_da=dP_da1"),
+        normal_multiplier_asymmetric,
+        ("19",),
+    )
+)
+register_quantity(
+    Quantity(
+        "asymmetric_edges.edge_moment_factor",
+        ("w=a1", "L_I=L_I1", "da_dP"),
+        lambda w, L_I, da_dP: pi * mpmath.sqrt(w) * L_I * da_dP / 2,
+        ("19", "21"),
+    )
+)
+register_quantity(
+    Quantity(
+        "asymmetric_edges.edge_multiplier_balance",
+        ("w=a2", "L_I_right=L_I1", "da_dP_right=da_dP", "L_I_left=L_I2", "da_dP_left=da_dP"),
+        lambda w, L_I_right, da_dP_right, L_I_left, da_dP_left: pi
+        * mpmath.sqrt(w)
+        / 4
+        * (L_I_right * da_dP_right + L_I_left * da_dP_left),
+        ("19",),
+    )
+)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -424,36 +480,59 @@ def first_order_bracket(mu, lam, eta, a1):
     return lam / mu + pi * a1 / 4 * eta / mu - 1
 
 
-register_quantity(Quantity(
-    "validity.contact_growth_measure", ("dP", "da_dP", "a1"),
-    lambda dP, da_dP, a1: dP * da_dP / a1, ("24",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "validity.relative_slip_zone_measure", ("mu", "lam", "eta", "a1", "da", "L_I1", "L_I2"),
-    relative_slip_zone_25, ("25",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "validity.multiplier_growth_measure", ("dP", "dL_I_dP", "L_I1"),
-    lambda dP, dL_I_dP, L_I1: dP * abs(dL_I_dP) / L_I1, ("26",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "validity.slip_zone_growth_measure", ("mu", "lam", "eta", "a1", "dP", "da_dP"),
-    lambda mu, lam, eta, a1, dP, da_dP: dP * da_dP / a1
-    * abs(first_order_bracket(mu, lam, eta, a1)),
-    ("27",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "validity.stick_ratio_first_order", ("mu", "lam", "eta", "a1", "dP", "da_dP"),
-    lambda mu, lam, eta, a1, dP, da_dP: 1 - dP * da_dP / (2 * a1) * first_order_bracket(
-        mu, lam, eta, a1),
-    ("28", "51"),
-))  # fmt: skip
-register_quantity(Quantity(
-    "validity.slip_zone_width_first_order", ("mu", "lam", "eta", "a1", "dP", "da_dP"),
-    # a1 (1 - b/a1) with b/a1 from (28).
-    lambda mu, lam, eta, a1, dP, da_dP: dP * da_dP / 2 * first_order_bracket(mu, lam, eta, a1),
-    ("28",),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "validity.contact_growth_measure",
+        ("dP", "da_dP", "a1"),
+        lambda dP, da_dP, a1: dP * da_dP / a1,
+        ("24",),
+    )
+)
+register_quantity(
+    Quantity(
+        "validity.relative_slip_zone_measure",
+        ("mu", "lam", "eta", "a1", "da", "L_I1", "L_I2"),
+        relative_slip_zone_25,
+        ("25",),
+    )
+)
+register_quantity(
+    Quantity(
+        "validity.multiplier_growth_measure",
+        ("dP", "dL_I_dP", "L_I1"),
+        lambda dP, dL_I_dP, L_I1: dP * abs(dL_I_dP) / L_I1,
+        ("26",),
+    )
+)
+register_quantity(
+    Quantity(
+        "validity.slip_zone_growth_measure",
+        ("mu", "lam", "eta", "a1", "dP", "da_dP"),
+        lambda mu, lam, eta, a1, dP, da_dP: dP
+        * da_dP
+        / a1
+        * abs(first_order_bracket(mu, lam, eta, a1)),
+        ("27",),
+    )
+)
+register_quantity(
+    Quantity(
+        "validity.stick_ratio_first_order",
+        ("mu", "lam", "eta", "a1", "dP", "da_dP"),
+        lambda mu, lam, eta, a1, dP, da_dP: 1
+        - dP * da_dP / (2 * a1) * first_order_bracket(mu, lam, eta, a1),
+        ("28", "51"),
+    )
+)
+register_quantity(
+    Quantity(
+        "validity.slip_zone_width_first_order",
+        ("mu", "lam", "eta", "a1", "dP", "da_dP"),
+        # a1 (1 - b/a1) with b/a1 from (28).
+        lambda mu, lam, eta, a1, dP, da_dP: dP * da_dP / 2 * first_order_bracket(mu, lam, eta, a1),
+        ("28",),
+    )
+)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -470,34 +549,62 @@ def hertz_multiplier_31(P, R, E_star):
     return E_star / R * mpmath.sqrt(hertz_half_width(P, _hertz(R, E_star)) / 2)
 
 
-register_quantity(Quantity(
-    "hertz.hertz_load", ("a=a1", "R", "E_star"),
-    lambda a, R, E_star: pi * E_star * a**2 / (4 * R), ("29",), laws=("hertz",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "hertz.hertz_load_slope", ("a=a1", "R", "E_star"),
-    lambda a, R, E_star: hertz_load_slope(a, _hertz(R, E_star)), ("29",), laws=("hertz",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "hertz.hertz_half_width", ("P=P1", "R", "E_star"),
-    lambda P, R, E_star: hertz_half_width(P, _hertz(R, E_star)), ("29",), laws=("hertz",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "hertz.hertz_normal_edge_multiplier", ("P=P1", "R", "E_star"),
-    hertz_multiplier_31, ("31",), laws=("hertz",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "hertz.hertz_normal_edge_multiplier_slope", ("P=P1", "R", "E_star"),
-    # L_I'(P) = L_I / (4P), Section 3 below (31); differentiated here numerically at 50 digits.
-    lambda P, R, E_star: mpmath.diff(lambda p: hertz_multiplier_31(p, R, E_star), P),
-    ("31",), laws=("hertz",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "hertz.hertz_half_width_growth", ("P1", "dP", "R", "E_star"),
-    lambda P1, dP, R, E_star: hertz_half_width(P1 + dP, _hertz(R, E_star))
-    - hertz_half_width(P1, _hertz(R, E_star)),
-    ("29", "42"), laws=("hertz",),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "hertz.hertz_load",
+        ("a=a1", "R", "E_star"),
+        lambda a, R, E_star: pi * E_star * a**2 / (4 * R),
+        ("29",),
+        laws=("hertz",),
+    )
+)
+register_quantity(
+    Quantity(
+        "hertz.hertz_load_slope",
+        ("a=a1", "R", "E_star"),
+        lambda a, R, E_star: hertz_load_slope(a, _hertz(R, E_star)),
+        ("29",),
+        laws=("hertz",),
+    )
+)
+register_quantity(
+    Quantity(
+        "hertz.hertz_half_width",
+        ("P=P1", "R", "E_star"),
+        lambda P, R, E_star: hertz_half_width(P, _hertz(R, E_star)),
+        ("29",),
+        laws=("hertz",),
+    )
+)
+register_quantity(
+    Quantity(
+        "hertz.hertz_normal_edge_multiplier",
+        ("P=P1", "R", "E_star"),
+        hertz_multiplier_31,
+        ("31",),
+        laws=("hertz",),
+    )
+)
+register_quantity(
+    Quantity(
+        "hertz.hertz_normal_edge_multiplier_slope",
+        ("P=P1", "R", "E_star"),
+        # L_I'(P) = L_I / (4P), Section 3 below (31); differentiated here numerically at 50 digits.
+        lambda P, R, E_star: mpmath.diff(lambda p: hertz_multiplier_31(p, R, E_star), P),
+        ("31",),
+        laws=("hertz",),
+    )
+)
+register_quantity(
+    Quantity(
+        "hertz.hertz_half_width_growth",
+        ("P1", "dP", "R", "E_star"),
+        lambda P1, dP, R, E_star: hertz_half_width(P1 + dP, _hertz(R, E_star))
+        - hertz_half_width(P1, _hertz(R, E_star)),
+        ("29", "42"),
+        laws=("hertz",),
+    )
+)
 
 
 def hertz_slip_zone_width_end_to_end(mu, lam, eta, P1, dP, R, E_star):
@@ -522,17 +629,27 @@ def generated_hertz_slip_zone_width(mu, lam, eta, P1, dP, R, E_star):
     )
 
     return slip_zone_width(
-        mu, lam, eta, half_width(P1, R, E_star), growth(P1, dP, R, E_star),
-        multiplier(P1, R, E_star), multiplier(P1 + dP, R, E_star),
-    )  # fmt: skip
+        mu,
+        lam,
+        eta,
+        half_width(P1, R, E_star),
+        growth(P1, dP, R, E_star),
+        multiplier(P1, R, E_star),
+        multiplier(P1 + dP, R, E_star),
+    )
 
 
-register_quantity(Quantity(
-    "corrective_slip.slip_zone_width", ("mu", "lam", "eta", "P1", "dP", "R", "E_star"),
-    hertz_slip_zone_width_end_to_end, ("22", "29", "31"), laws=("hertz",),
-    label="hertz slip_zone_width, end to end from (P1, dP)",
-    compose=generated_hertz_slip_zone_width,
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "corrective_slip.slip_zone_width",
+        ("mu", "lam", "eta", "P1", "dP", "R", "E_star"),
+        hertz_slip_zone_width_end_to_end,
+        ("22", "29", "31"),
+        laws=("hertz",),
+        label="hertz slip_zone_width, end to end from (P1, dP)",
+        compose=generated_hertz_slip_zone_width,
+    )
+)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -572,49 +689,84 @@ def _positive_stick_load(values) -> bool:
     return values["P1"] + values["dP"] * (values["mu"] - values["lam"]) / (2 * values["mu"]) > 0
 
 
-register_quantity(Quantity(
-    "exact_solution.permanent_stick_load", ("P1", "dP", "lam", "mu"),
-    permanent_stick_load_33, ("33",), laws=("hertz",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "exact_solution.hertz_stick_boundary_exact", ("P1", "dP", "lam", "mu", "R", "E_star"),
-    exact_stick_boundary_34, ("33", "34"), laws=("hertz",), where=_positive_stick_load,
-))  # fmt: skip
-register_quantity(Quantity(
-    "exact_solution.hertz_slip_zone_width_exact", ("P1", "dP", "lam", "mu", "R", "E_star"),
-    lambda P1, dP, lam, mu, R, E_star: hertz_half_width(P1, _hertz(R, E_star))
-    - exact_stick_boundary_34(P1, dP, lam, mu, R, E_star),
-    ("34", "35"), laws=("hertz",), where=_positive_stick_load,
-))  # fmt: skip
-register_quantity(Quantity(
-    "corrective_stick.shear_intensity_rate", ("lam", "eta", "a=a1"),
-    shear_intensity_rate_39, ("39",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "corrective_stick.corrective_stick_slip_zone_width",
-    ("mu", "lam", "eta", "a1", "da", "L_I1", "dP"),
-    corrective_stick_width_40, ("40",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "corrective_stick.hertz_stick_boundary_corrective_stick",
-    ("P1", "dP", "lam", "eta", "mu", "R", "E_star"),
-    corrective_stick_boundary_41, ("41",), laws=("hertz",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "corrective_stick.hertz_slip_zone_width_corrective_stick",
-    ("P1", "dP", "lam", "eta", "mu", "R", "E_star"),
-    lambda P1, dP, lam, eta, mu, R, E_star: hertz_half_width(P1, _hertz(R, E_star))
-    - corrective_stick_boundary_41(P1, dP, lam, eta, mu, R, E_star),
-    ("41",), laws=("hertz",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "method_agreement.hertz_slip_zone_width_first_order",
-    ("P1", "dP", "lam", "eta", "mu", "R", "E_star"),
-    # a1 (1 - b/a1) with b/a1 from (44).
-    lambda P1, dP, lam, eta, mu, R, E_star: hertz_half_width(P1, _hertz(R, E_star))
-    * (lam / mu + eta / mu * pi * hertz_half_width(P1, _hertz(R, E_star)) / 4 - 1) * dP / (4 * P1),
-    ("36", "44", "45"), laws=("hertz",),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "exact_solution.permanent_stick_load",
+        ("P1", "dP", "lam", "mu"),
+        permanent_stick_load_33,
+        ("33",),
+        laws=("hertz",),
+    )
+)
+register_quantity(
+    Quantity(
+        "exact_solution.hertz_stick_boundary_exact",
+        ("P1", "dP", "lam", "mu", "R", "E_star"),
+        exact_stick_boundary_34,
+        ("33", "34"),
+        laws=("hertz",),
+        where=_positive_stick_load,
+    )
+)
+register_quantity(
+    Quantity(
+        "exact_solution.hertz_slip_zone_width_exact",
+        ("P1", "dP", "lam", "mu", "R", "E_star"),
+        lambda P1, dP, lam, mu, R, E_star: hertz_half_width(P1, _hertz(R, E_star))
+        - exact_stick_boundary_34(P1, dP, lam, mu, R, E_star),
+        ("34", "35"),
+        laws=("hertz",),
+        where=_positive_stick_load,
+    )
+)
+register_quantity(
+    Quantity(
+        "corrective_stick.shear_intensity_rate",
+        ("lam", "eta", "a=a1"),
+        shear_intensity_rate_39,
+        ("39",),
+    )
+)
+register_quantity(
+    Quantity(
+        "corrective_stick.corrective_stick_slip_zone_width",
+        ("mu", "lam", "eta", "a1", "da", "L_I1", "dP"),
+        corrective_stick_width_40,
+        ("40",),
+    )
+)
+register_quantity(
+    Quantity(
+        "corrective_stick.hertz_stick_boundary_corrective_stick",
+        ("P1", "dP", "lam", "eta", "mu", "R", "E_star"),
+        corrective_stick_boundary_41,
+        ("41",),
+        laws=("hertz",),
+    )
+)
+register_quantity(
+    Quantity(
+        "corrective_stick.hertz_slip_zone_width_corrective_stick",
+        ("P1", "dP", "lam", "eta", "mu", "R", "E_star"),
+        lambda P1, dP, lam, eta, mu, R, E_star: hertz_half_width(P1, _hertz(R, E_star))
+        - corrective_stick_boundary_41(P1, dP, lam, eta, mu, R, E_star),
+        ("41",),
+        laws=("hertz",),
+    )
+)
+register_quantity(
+    Quantity(
+        "method_agreement.hertz_slip_zone_width_first_order",
+        ("P1", "dP", "lam", "eta", "mu", "R", "E_star"),
+        # a1 (1 - b/a1) with b/a1 from (44).
+        lambda P1, dP, lam, eta, mu, R, E_star: hertz_half_width(P1, _hertz(R, E_star))
+        * (lam / mu + eta / mu * pi * hertz_half_width(P1, _hertz(R, E_star)) / 4 - 1)
+        * dP
+        / (4 * P1),
+        ("36", "44", "45"),
+        laws=("hertz",),
+    )
+)
 
 
 def _series_coefficient(function, order: int, lowest: int) -> mpmath.mpf:
@@ -650,21 +802,36 @@ def _hertz_discrepancy(boundary: str, lam, mu):
     return discrepancy
 
 
-register_quantity(Quantity(
-    "method_agreement.corrective_slip_discrepancy_third_order", ("lam", "mu"),
-    lambda lam, mu: _series_coefficient(_hertz_discrepancy("22", lam, mu), 3, 3),
-    ("22", "34"), laws=("hertz",), every=3,
-))  # fmt: skip
-register_quantity(Quantity(
-    "method_agreement.corrective_stick_discrepancy_second_order", ("lam", "mu"),
-    lambda lam, mu: _series_coefficient(_hertz_discrepancy("41", lam, mu), 2, 2),
-    ("41", "34"), laws=("hertz",), every=3,
-))  # fmt: skip
-register_quantity(Quantity(
-    "method_agreement.corrective_stick_discrepancy_third_order", ("lam", "mu"),
-    lambda lam, mu: _series_coefficient(_hertz_discrepancy("41", lam, mu), 3, 2),
-    ("41", "34"), laws=("hertz",), every=3,
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "method_agreement.corrective_slip_discrepancy_third_order",
+        ("lam", "mu"),
+        lambda lam, mu: _series_coefficient(_hertz_discrepancy("22", lam, mu), 3, 3),
+        ("22", "34"),
+        laws=("hertz",),
+        every=3,
+    )
+)
+register_quantity(
+    Quantity(
+        "method_agreement.corrective_stick_discrepancy_second_order",
+        ("lam", "mu"),
+        lambda lam, mu: _series_coefficient(_hertz_discrepancy("41", lam, mu), 2, 2),
+        ("41", "34"),
+        laws=("hertz",),
+        every=3,
+    )
+)
+register_quantity(
+    Quantity(
+        "method_agreement.corrective_stick_discrepancy_third_order",
+        ("lam", "mu"),
+        lambda lam, mu: _series_coefficient(_hertz_discrepancy("41", lam, mu), 3, 2),
+        ("41", "34"),
+        laws=("hertz",),
+        every=3,
+    )
+)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -701,8 +868,9 @@ def traction_difference_49(x, b, a1, a2, mu, L_I1, L_I2, L_II1, L_II2):
     E_star = 1
 
     def weighted(t):
-        return mpmath.sqrt(a2 - t) * dislocation_density_15(t, b, a1, mu, L_I1, L_I2, L_II1, L_II2,
-                                                            E_star)  # fmt: skip
+        return mpmath.sqrt(a2 - t) * dislocation_density_15(
+            t, b, a1, mu, L_I1, L_I2, L_II1, L_II2, E_star
+        )
 
     if b < x < a2:
         at_pole = weighted(x)
@@ -739,15 +907,27 @@ def _stick_zone_inside(values) -> bool:
     return 0 < values["P_K"] < values["P1"]
 
 
-register_quantity(Quantity(
-    "tractions.hertz_pressure", ("x=x_contact", "P=P2", "R", "E_star"),
-    hertz_pressure_48, ("48",), laws=("hertz",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "tractions.hertz_shear_traction_difference",
-    ("x=x_contact", "P1", "dP", "P_K", "mu", "R", "E_star"),
-    exact_traction_difference_47, ("47", "48"), laws=("hertz",), where=_stick_zone_inside,
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "tractions.hertz_pressure",
+        ("x=x_contact", "P=P2", "R", "E_star"),
+        hertz_pressure_48,
+        ("48",),
+        laws=("hertz",),
+    )
+)
+register_quantity(
+    Quantity(
+        "tractions.hertz_shear_traction_difference",
+        ("x=x_contact", "P1", "dP", "P_K", "mu", "R", "E_star"),
+        exact_traction_difference_47,
+        ("47", "48"),
+        laws=("hertz",),
+        where=_stick_zone_inside,
+    )
+)
+
+
 def multiplier_slope_along_loglog_fit(P, L_I, ds, d2s):
     """dL_I/dP by numerical differentiation of (19), with a(P) the local quadratic in log-log
     through (log P, log a) of slope ds and curvature d2s; log a is fixed by L_I itself."""
@@ -764,11 +944,14 @@ def multiplier_slope_along_loglog_fit(P, L_I, ds, d2s):
     return mpmath.diff(multiplier, u0) / P
 
 
-register_quantity(Quantity(
-    "table_law.normal_edge_multiplier_slope_loglog",
-    ("P=P1", "L_I=L_I1", "ds=log_slope1", "d2s=log_curvature1"),
-    multiplier_slope_along_loglog_fit, ("19", "26"),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "table_law.normal_edge_multiplier_slope_loglog",
+        ("P=P1", "L_I=L_I1", "ds=log_slope1", "d2s=log_curvature1"),
+        multiplier_slope_along_loglog_fit,
+        ("19", "26"),
+    )
+)
 
 
 def jaeger_ciavarella_47(p2, p1, p_K, mu):
@@ -778,20 +961,34 @@ def jaeger_ciavarella_47(p2, p1, p_K, mu):
 
 # The general (47) is arithmetic on three pressures: any positive values exercise it, so the
 # problem's own positive quantities stand in for them.
-register_quantity(Quantity(
-    "tractions.jaeger_ciavarella_traction_difference", ("p2=L_I2", "p1=L_I1", "p_K=a1", "mu"),
-    jaeger_ciavarella_47, ("47",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "tractions.shear_traction_difference",
-    ("x=x_contact", "b", "a1", "a2", "mu", "L_I1", "L_I2", "L_II1", "L_II2"),
-    traction_difference_49, ("49",), where=_slip_zone_inside_a1, every=4,
-))  # fmt: skip
-register_quantity(Quantity(
-    "slip_displacement.slip_on_loading",
-    ("x=x_slip", "b", "a1", "mu", "L_I1", "L_I2", "L_II1", "L_II2", "E_star"),
-    slip_on_loading_15, ("15",), where=_slip_zone_inside_a1, every=4,
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "tractions.jaeger_ciavarella_traction_difference",
+        ("p2=L_I2", "p1=L_I1", "p_K=a1", "mu"),
+        jaeger_ciavarella_47,
+        ("47",),
+    )
+)
+register_quantity(
+    Quantity(
+        "tractions.shear_traction_difference",
+        ("x=x_contact", "b", "a1", "a2", "mu", "L_I1", "L_I2", "L_II1", "L_II2"),
+        traction_difference_49,
+        ("49",),
+        where=_slip_zone_inside_a1,
+        every=4,
+    )
+)
+register_quantity(
+    Quantity(
+        "slip_displacement.slip_on_loading",
+        ("x=x_slip", "b", "a1", "mu", "L_I1", "L_I2", "L_II1", "L_II2", "E_star"),
+        slip_on_loading_15,
+        ("15",),
+        where=_slip_zone_inside_a1,
+        every=4,
+    )
+)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -810,61 +1007,113 @@ def flat_multiplier_slope_mp(a, c, R, E_star):
 
 _FLAT = ("a=a1", "c", "R", "E_star")
 
-register_quantity(Quantity(
-    "flat_rounded.flat_rounded_load", _FLAT,
-    published_flat_load, ("29",), laws=("flat-rounded",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "flat_rounded.flat_rounded_load_slope", _FLAT,
-    flat_load_slope_mp, ("29",), laws=("flat-rounded",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "flat_rounded.flat_rounded_normal_edge_multiplier", _FLAT,
-    lambda a, c, R, E_star: normal_multiplier_19(a, flat_load_slope_mp(a, c, R, E_star)),
-    ("19",), laws=("flat-rounded",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "flat_rounded.flat_rounded_normal_edge_multiplier_slope", _FLAT,
-    flat_multiplier_slope_mp, ("19", "26"), laws=("flat-rounded",),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "flat_rounded.flat_rounded_load",
+        _FLAT,
+        published_flat_load,
+        ("29",),
+        laws=("flat-rounded",),
+    )
+)
+register_quantity(
+    Quantity(
+        "flat_rounded.flat_rounded_load_slope",
+        _FLAT,
+        flat_load_slope_mp,
+        ("29",),
+        laws=("flat-rounded",),
+    )
+)
+register_quantity(
+    Quantity(
+        "flat_rounded.flat_rounded_normal_edge_multiplier",
+        _FLAT,
+        lambda a, c, R, E_star: normal_multiplier_19(a, flat_load_slope_mp(a, c, R, E_star)),
+        ("19",),
+        laws=("flat-rounded",),
+    )
+)
+register_quantity(
+    Quantity(
+        "flat_rounded.flat_rounded_normal_edge_multiplier_slope",
+        _FLAT,
+        flat_multiplier_slope_mp,
+        ("19", "26"),
+        laws=("flat-rounded",),
+    )
+)
 # The same quantities from the chord and corner angle passed in: the references do not use
 # them (they recompute everything from a), so a wrong chord or angle kernel, or a wrong use of
 # them, shows up as a difference.
 _AT_ANGLE = ("a=a1", "c", "R", "E_star", "psi=angle1")
-register_quantity(Quantity(
-    "flat_rounded.flat_rounded_chord", ("a=a1", "c"),
-    lambda a, c: mpmath.sqrt(a * a - c * c), ("29",), laws=("flat-rounded",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "flat_rounded.flat_rounded_corner_angle", ("D=chord1", "c"),
-    lambda D, c: mpmath.atan2(D, c), ("29",), laws=("flat-rounded",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "flat_rounded.flat_rounded_load_at_angle", (*_AT_ANGLE, "D=chord1"),
-    lambda a, c, R, E_star, psi, D: published_flat_load(a, c, R, E_star), ("29",),
-    laws=("flat-rounded",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "flat_rounded.flat_rounded_load_slope_at_angle", _AT_ANGLE,
-    lambda a, c, R, E_star, psi: flat_load_slope_mp(a, c, R, E_star), ("29",),
-    laws=("flat-rounded",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "flat_rounded.flat_rounded_normal_edge_multiplier_at_angle", _AT_ANGLE,
-    lambda a, c, R, E_star, psi: normal_multiplier_19(a, flat_load_slope_mp(a, c, R, E_star)),
-    ("19",), laws=("flat-rounded",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "flat_rounded.flat_rounded_normal_edge_multiplier_slope_at_angle", (*_AT_ANGLE, "D=chord1"),
-    lambda a, c, R, E_star, psi, D: flat_multiplier_slope_mp(a, c, R, E_star), ("19", "26"),
-    laws=("flat-rounded",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "flat_rounded.flat_rounded_pressure", ("x=x_contact", "a=a2", "c", "R", "E_star"),
-    lambda x, a, c, R, E_star: pressure_by_inversion(
-        lambda t: flat_slope(t, c, R), a, x, E_star, breaks=(c,)),
-    ("4", "48"), laws=("flat-rounded",), every=4, costly=True,
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "flat_rounded.flat_rounded_chord",
+        ("a=a1", "c"),
+        lambda a, c: mpmath.sqrt(a * a - c * c),
+        ("29",),
+        laws=("flat-rounded",),
+    )
+)
+register_quantity(
+    Quantity(
+        "flat_rounded.flat_rounded_corner_angle",
+        ("D=chord1", "c"),
+        lambda D, c: mpmath.atan2(D, c),
+        ("29",),
+        laws=("flat-rounded",),
+    )
+)
+register_quantity(
+    Quantity(
+        "flat_rounded.flat_rounded_load_at_angle",
+        (*_AT_ANGLE, "D=chord1"),
+        lambda a, c, R, E_star, psi, D: published_flat_load(a, c, R, E_star),
+        ("29",),
+        laws=("flat-rounded",),
+    )
+)
+register_quantity(
+    Quantity(
+        "flat_rounded.flat_rounded_load_slope_at_angle",
+        _AT_ANGLE,
+        lambda a, c, R, E_star, psi: flat_load_slope_mp(a, c, R, E_star),
+        ("29",),
+        laws=("flat-rounded",),
+    )
+)
+register_quantity(
+    Quantity(
+        "flat_rounded.flat_rounded_normal_edge_multiplier_at_angle",
+        _AT_ANGLE,
+        lambda a, c, R, E_star, psi: normal_multiplier_19(a, flat_load_slope_mp(a, c, R, E_star)),
+        ("19",),
+        laws=("flat-rounded",),
+    )
+)
+register_quantity(
+    Quantity(
+        "flat_rounded.flat_rounded_normal_edge_multiplier_slope_at_angle",
+        (*_AT_ANGLE, "D=chord1"),
+        lambda a, c, R, E_star, psi, D: flat_multiplier_slope_mp(a, c, R, E_star),
+        ("19", "26"),
+        laws=("flat-rounded",),
+    )
+)
+register_quantity(
+    Quantity(
+        "flat_rounded.flat_rounded_pressure",
+        ("x=x_contact", "a=a2", "c", "R", "E_star"),
+        lambda x, a, c, R, E_star: pressure_by_inversion(
+            lambda t: flat_slope(t, c, R), a, x, E_star, breaks=(c,)
+        ),
+        ("4", "48"),
+        laws=("flat-rounded",),
+        every=4,
+        costly=True,
+    )
+)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -913,55 +1162,100 @@ def power_pressure_with_exact_2f1(x, a, n, A, E_star, K):
         factor = [
             float(mpmath.hyp2f1(1 - mpmath.mpf(n_) / 2, 1, 1.5, 1 - (mpmath.mpf(x_) / a_) ** 2))
             for x_, a_, n_ in zip(*np.broadcast_arrays(x, a, n), strict=True)
-        ]  # fmt: skip
+        ]
     return power_law_pressure(x, a, n, A, E_star, K, np.array(factor))
 
 
 _POWER = ("n", "A", "E_star", "K")
 
-register_quantity(Quantity(
-    "power_law.power_law_load", ("a=a1", *_POWER),
-    lambda a, n, A, E_star, K: _power_load(n, A, E_star, K)(a), ("29",), laws=("power",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "power_law.power_law_load_slope", ("a=a1", *_POWER),
-    lambda a, n, A, E_star, K: mpmath.diff(_power_load(n, A, E_star, K), a),
-    ("29",), laws=("power",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "power_law.power_law_half_width", ("P=P1", *_POWER),
-    power_half_width_mp, ("29",), laws=("power",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "power_law.power_law_half_width_growth", ("P1", "dP", *_POWER),
-    lambda P1, dP, n, A, E_star, K: power_half_width_mp(P1 + dP, n, A, E_star, K)
-    - power_half_width_mp(P1, n, A, E_star, K),
-    ("23", "42"), laws=("power",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "power_law.power_law_normal_edge_multiplier", ("P=P1", *_POWER),
-    power_multiplier_mp, ("19",), laws=("power",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "power_law.power_law_normal_edge_multiplier_slope", ("P=P1", *_POWER),
-    power_multiplier_slope_mp, ("19", "26"), laws=("power",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "power_law.power_law_hypergeometric_argument", ("x=x_contact", "a=a2"),
-    lambda x, a: max(mpmath.mpf(0), 1 - (x / a) ** 2), ("48",), laws=("power",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "power_law.power_law_pressure", ("x=x_contact", "a=a2", *_POWER),
-    lambda x, a, n, A, E_star, K: pressure_by_inversion(
-        lambda t: power_slope(t, A, n), a, x, E_star, breaks=(0,)),
-    ("4", "48"), laws=("power",), every=4, costly=True,
-    compose=power_pressure_with_exact_2f1,
-))  # fmt: skip
-register_quantity(Quantity(
-    "power_law.wedge_pressure", ("x=x_contact", "a=a2", "A", "E_star"),
-    wedge_pressure_published, ("4", "48"), laws=("power",),
-    where=lambda values: values["n"] == 1.0,
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "power_law.power_law_load",
+        ("a=a1", *_POWER),
+        lambda a, n, A, E_star, K: _power_load(n, A, E_star, K)(a),
+        ("29",),
+        laws=("power",),
+    )
+)
+register_quantity(
+    Quantity(
+        "power_law.power_law_load_slope",
+        ("a=a1", *_POWER),
+        lambda a, n, A, E_star, K: mpmath.diff(_power_load(n, A, E_star, K), a),
+        ("29",),
+        laws=("power",),
+    )
+)
+register_quantity(
+    Quantity(
+        "power_law.power_law_half_width",
+        ("P=P1", *_POWER),
+        power_half_width_mp,
+        ("29",),
+        laws=("power",),
+    )
+)
+register_quantity(
+    Quantity(
+        "power_law.power_law_half_width_growth",
+        ("P1", "dP", *_POWER),
+        lambda P1, dP, n, A, E_star, K: power_half_width_mp(P1 + dP, n, A, E_star, K)
+        - power_half_width_mp(P1, n, A, E_star, K),
+        ("23", "42"),
+        laws=("power",),
+    )
+)
+register_quantity(
+    Quantity(
+        "power_law.power_law_normal_edge_multiplier",
+        ("P=P1", *_POWER),
+        power_multiplier_mp,
+        ("19",),
+        laws=("power",),
+    )
+)
+register_quantity(
+    Quantity(
+        "power_law.power_law_normal_edge_multiplier_slope",
+        ("P=P1", *_POWER),
+        power_multiplier_slope_mp,
+        ("19", "26"),
+        laws=("power",),
+    )
+)
+register_quantity(
+    Quantity(
+        "power_law.power_law_hypergeometric_argument",
+        ("x=x_contact", "a=a2"),
+        lambda x, a: max(mpmath.mpf(0), 1 - (x / a) ** 2),
+        ("48",),
+        laws=("power",),
+    )
+)
+register_quantity(
+    Quantity(
+        "power_law.power_law_pressure",
+        ("x=x_contact", "a=a2", *_POWER),
+        lambda x, a, n, A, E_star, K: pressure_by_inversion(
+            lambda t: power_slope(t, A, n), a, x, E_star, breaks=(0,)
+        ),
+        ("4", "48"),
+        laws=("power",),
+        every=4,
+        costly=True,
+        compose=power_pressure_with_exact_2f1,
+    )
+)
+register_quantity(
+    Quantity(
+        "power_law.wedge_pressure",
+        ("x=x_contact", "a=a2", "A", "E_star"),
+        wedge_pressure_published,
+        ("4", "48"),
+        laws=("power",),
+        where=lambda values: values["n"] == 1.0,
+    )
+)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -986,8 +1280,9 @@ def _gap_coefficient(mu, lam, a1, da_dP, d2a_dP2, multiplier):
             return a1 + da_dP * h + d2a_dP2 * h**2 / 2
 
         def gap(dP):
-            b = stick_boundary_22(mu, lam, 0, a1, local_half_width(dP), multiplier(0),
-                                  multiplier(dP))  # fmt: skip
+            b = stick_boundary_22(
+                mu, lam, 0, a1, local_half_width(dP), multiplier(0), multiplier(dP)
+            )
             return b - local_half_width(permanent_stick_load_33(0, dP, lam, mu))  # (33)
 
         coefficient = (gap(step) + gap(-step)) / (2 * step**2)
@@ -997,10 +1292,15 @@ def _gap_coefficient(mu, lam, a1, da_dP, d2a_dP2, multiplier):
 def second_order_gap_from_curvature(mu, lam, a1, da_dP, d2a_dP2):
     """C with L_I(P1 + h) = (19) at a(P1 + h), dP/da = 1/a'(P1 + h)."""
     return _gap_coefficient(
-        mu, lam, a1, da_dP, d2a_dP2,
-        lambda h: normal_multiplier_19(a1 + da_dP * h + d2a_dP2 * h**2 / 2,
-                                       1 / (da_dP + d2a_dP2 * h)),
-    )  # fmt: skip
+        mu,
+        lam,
+        a1,
+        da_dP,
+        d2a_dP2,
+        lambda h: normal_multiplier_19(
+            a1 + da_dP * h + d2a_dP2 * h**2 / 2, 1 / (da_dP + d2a_dP2 * h)
+        ),
+    )
 
 
 def second_order_gap_from_multiplier(mu, lam, a1, da_dP, L_I1, dL_I_dP):
@@ -1010,15 +1310,22 @@ def second_order_gap_from_multiplier(mu, lam, a1, da_dP, L_I1, dL_I_dP):
     return _gap_coefficient(mu, lam, a1, da_dP, curvature, lambda h: L_I1 + dL_I_dP * h)
 
 
-register_quantity(Quantity(
-    "generic_law.second_order_stick_boundary_gap", ("mu", "lam", "a1", "da_dP", "d2a_dP2"),
-    second_order_gap_from_curvature, ("22", "28", "33"),
-))  # fmt: skip
-register_quantity(Quantity(
-    "generic_law.second_order_stick_boundary_gap_from_multiplier",
-    ("mu", "lam", "a1", "da_dP", "L_I1", "dL_I_dP"),
-    second_order_gap_from_multiplier, ("22", "26", "33"),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "generic_law.second_order_stick_boundary_gap",
+        ("mu", "lam", "a1", "da_dP", "d2a_dP2"),
+        second_order_gap_from_curvature,
+        ("22", "28", "33"),
+    )
+)
+register_quantity(
+    Quantity(
+        "generic_law.second_order_stick_boundary_gap_from_multiplier",
+        ("mu", "lam", "a1", "da_dP", "L_I1", "dL_I_dP"),
+        second_order_gap_from_multiplier,
+        ("22", "26", "33"),
+    )
+)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1054,8 +1361,15 @@ def _paper_error(mu, lam, eta, a1, da_dP, d2a_dP2, other_edge):
 
         def width_22(h):
             a2 = a1 + da_dP * h + d2a_dP2 * h**2 / 2
-            b = stick_boundary_22(mu, lam, eta, a1, a2, normal_multiplier_19(a1, 1 / da_dP),
-                                  normal_multiplier_19(a2, 1 / (da_dP + d2a_dP2 * h)))  # fmt: skip
+            b = stick_boundary_22(
+                mu,
+                lam,
+                eta,
+                a1,
+                a2,
+                normal_multiplier_19(a1, 1 / da_dP),
+                normal_multiplier_19(a2, 1 / (da_dP + d2a_dP2 * h)),
+            )
             return a1 - b
 
         paper = (width_22(step) + width_22(-step)) / (2 * step**2)
@@ -1064,35 +1378,58 @@ def _paper_error(mu, lam, eta, a1, da_dP, d2a_dP2, other_edge):
 
 
 _SECOND = ("mu", "lam", "eta", "a1", "da_dP", "d2a_dP2")
-register_quantity(Quantity(
-    "second_order.slip_zone_width_second_order", (*_SECOND, "dP", "other_edge"),
-    _width_second_order, ("22", "28"),
-))  # fmt: skip
-register_quantity(Quantity(
-    "second_order.stick_boundary_second_order", (*_SECOND, "dP", "other_edge"),
-    lambda a1, **k: a1 - _width_second_order(a1=a1, **k), ("22", "28"),
-))  # fmt: skip
-register_quantity(Quantity(
-    "second_order.slip_zone_width_second_coefficient", (*_SECOND, "other_edge"),
-    _second_coefficient, ("28",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "second_order.paper_stick_boundary_error", (*_SECOND, "other_edge"), _paper_error, ("22",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "second_order.slip_zone_width_second_order_from_multiplier",
-    ("mu", "lam", "eta", "a1", "da_dP", "L_I1", "dL_I_dP", "dP", "other_edge"),
-    lambda L_I1, dL_I_dP, a1, da_dP, **k: _width_second_order(
-        a1=a1, da_dP=da_dP, d2a_dP2=_curvature_19(a1, da_dP, L_I1, dL_I_dP), **k),
-    ("19", "22", "28"),
-))  # fmt: skip
-register_quantity(Quantity(
-    "second_order.paper_stick_boundary_error_from_multiplier",
-    ("mu", "lam", "eta", "a1", "da_dP", "L_I1", "dL_I_dP", "other_edge"),
-    lambda L_I1, dL_I_dP, a1, da_dP, **k: _paper_error(
-        a1=a1, da_dP=da_dP, d2a_dP2=_curvature_19(a1, da_dP, L_I1, dL_I_dP), **k),
-    ("19", "22"),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "second_order.slip_zone_width_second_order",
+        (*_SECOND, "dP", "other_edge"),
+        _width_second_order,
+        ("22", "28"),
+    )
+)
+register_quantity(
+    Quantity(
+        "second_order.stick_boundary_second_order",
+        (*_SECOND, "dP", "other_edge"),
+        lambda a1, **k: a1 - _width_second_order(a1=a1, **k),
+        ("22", "28"),
+    )
+)
+register_quantity(
+    Quantity(
+        "second_order.slip_zone_width_second_coefficient",
+        (*_SECOND, "other_edge"),
+        _second_coefficient,
+        ("28",),
+    )
+)
+register_quantity(
+    Quantity(
+        "second_order.paper_stick_boundary_error",
+        (*_SECOND, "other_edge"),
+        _paper_error,
+        ("22",),
+    )
+)
+register_quantity(
+    Quantity(
+        "second_order.slip_zone_width_second_order_from_multiplier",
+        ("mu", "lam", "eta", "a1", "da_dP", "L_I1", "dL_I_dP", "dP", "other_edge"),
+        lambda L_I1, dL_I_dP, a1, da_dP, **k: _width_second_order(
+            a1=a1, da_dP=da_dP, d2a_dP2=_curvature_19(a1, da_dP, L_I1, dL_I_dP), **k
+        ),
+        ("19", "22", "28"),
+    )
+)
+register_quantity(
+    Quantity(
+        "second_order.paper_stick_boundary_error_from_multiplier",
+        ("mu", "lam", "eta", "a1", "da_dP", "L_I1", "dL_I_dP", "other_edge"),
+        lambda L_I1, dL_I_dP, a1, da_dP, **k: _paper_error(
+            a1=a1, da_dP=da_dP, d2a_dP2=_curvature_19(a1, da_dP, L_I1, dL_I_dP), **k
+        ),
+        ("19", "22"),
+    )
+)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1139,31 +1476,48 @@ API_LAWS = {
     law.name: law
     for law in (
         ApiLaw(
-            "hertz", _make_hertz_law, ("R", "E_star"),
+            "hertz",
+            _make_hertz_law,
+            ("R", "E_star"),
             lambda R, E_star: lambda a: pi * E_star * a**2 / (4 * R),  # (29)
             lambda R, E_star: lambda P: half_width_by_root(
-                lambda a: pi * E_star * a**2 / (4 * R), P),
-            {"a1": "hertz.hertz_half_width", "a2": "hertz.hertz_half_width_growth",
-             "L_I": "hertz.hertz_normal_edge_multiplier"},
+                lambda a: pi * E_star * a**2 / (4 * R), P
+            ),
+            {
+                "a1": "hertz.hertz_half_width",
+                "a2": "hertz.hertz_half_width_growth",
+                "L_I": "hertz.hertz_normal_edge_multiplier",
+            },
         ),
         ApiLaw(
-            "flat-rounded", _make_flat_law, ("c", "R", "E_star"),
+            "flat-rounded",
+            _make_flat_law,
+            ("c", "R", "E_star"),
             lambda c, R, E_star: lambda a: published_flat_load(a, c, R, E_star),
             lambda c, R, E_star: lambda P: flat_half_width_mp(P, c, R, E_star),
             # a(P) inverts flat_rounded_load; a2 - a1 integrates 1/flat_rounded_load_slope.
-            {"a1": "flat_rounded.flat_rounded_load", "a2": "flat_rounded.flat_rounded_load_slope",
-             "L_I": "flat_rounded.flat_rounded_normal_edge_multiplier"},
+            {
+                "a1": "flat_rounded.flat_rounded_load",
+                "a2": "flat_rounded.flat_rounded_load_slope",
+                "L_I": "flat_rounded.flat_rounded_normal_edge_multiplier",
+            },
         ),
         ApiLaw(
-            "power", _make_power_law, ("A", "n", "E_star"),
+            "power",
+            _make_power_law,
+            ("A", "n", "E_star"),
             lambda A, n, E_star: _power_load(n, A, E_star, power_shape_factor(n)),
             lambda A, n, E_star: lambda P: half_width_by_root(
-                _power_load(n, A, E_star, power_shape_factor(n)), P),
-            {"a1": "power_law.power_law_half_width", "a2": "power_law.power_law_half_width_growth",
-             "L_I": "power_law.power_law_normal_edge_multiplier"},
+                _power_load(n, A, E_star, power_shape_factor(n)), P
+            ),
+            {
+                "a1": "power_law.power_law_half_width",
+                "a2": "power_law.power_law_half_width_growth",
+                "L_I": "power_law.power_law_normal_edge_multiplier",
+            },
         ),
     )
-}  # fmt: skip
+}
 
 
 @functools.cache
@@ -1180,8 +1534,9 @@ def _slip_zone_exact(law_name, digits, mu, P1, dP, dQ, dsigma, parameters):
     """The API's quantities at ``digits`` (+20 inside) for P2 = P1 + dP, lam = dQ/dP,
     eta = dsigma/dP.  Cached: the quantities and their condition numbers share it."""
     with mpmath.workdps(digits + 20):
-        (a1, L_I1), (a2, L_I2) = (_law_exact(law_name, digits + 20, P, parameters)
-                                  for P in (P1, P1 + dP))  # fmt: skip
+        (a1, L_I1), (a2, L_I2) = (
+            _law_exact(law_name, digits + 20, P, parameters) for P in (P1, P1 + dP)
+        )
         lam, eta = dQ / dP, dsigma / dP
 
         def direction_of(edge_lam):  # forward, backward or no slip, in the edge's own frame
@@ -1202,13 +1557,19 @@ def _slip_zone_exact(law_name, digits, mu, P1, dP, dQ, dsigma, parameters):
             load = spec.load(**dict(parameters))
             first, second = mpmath.diff(load, a1), mpmath.diff(load, a1, 2)
             same_way = 1 if other == 0 else -direction * other
-            width = _width_second_order(mu, lam, eta, a1, 1 / first, -second / first**3, dP,
-                                        same_way)  # fmt: skip
+            width = _width_second_order(
+                mu, lam, eta, a1, 1 / first, -second / first**3, dP, same_way
+            )
         exact = {
-            "a1": a1, "a2": a2, "L_I1": L_I1, "L_I2": L_I2, "b": a1 - width,
-            "slip_zone_width": width, "b_paper": b22,
+            "a1": a1,
+            "a2": a2,
+            "L_I1": L_I1,
+            "L_I2": L_I2,
+            "b": a1 - width,
+            "slip_zone_width": width,
+            "b_paper": b22,
             "b_exact": None if dsigma else _law_exact(law_name, digits + 20, P_K, parameters)[0],
-        }  # fmt: skip
+        }
     return {key: value if value is None else +value for key, value in exact.items()}
 
 
@@ -1252,8 +1613,7 @@ def _slip_zone_api(law_name, field, variant):
         columns = [mu, P1, dP, Q1, dQ, sigma1, dsigma if dsigma is not None else sigma1]
         columns += [parameters[name] for name in spec.parameters]
         values = []
-        for row in zip(*(np.asarray(column, dtype=np.float64) for column in columns),
-                       strict=True):  # fmt: skip
+        for row in zip(*(np.asarray(column, dtype=np.float64) for column in columns), strict=True):
             cycle = tuple(map(float, row[:7]))
             named = tuple(zip(spec.parameters, map(float, row[7:]), strict=True))
             result = _slip_zone_computed(law_name, variant, *cycle, named)
@@ -1284,12 +1644,18 @@ def register_slip_zone_quantities(law_name: str) -> None:
     cycle = ("mu", "P1", "dP=dP_cycle", "Q1", "dQ", "sigma1", "dsigma")
     for field, kernel, variant, equations in checks:
         args = cycle[:-1] if variant == "eta = 0" else cycle
-        register_quantity(Quantity(
-            kernel, (*args, *spec.parameters),
-            _slip_zone_reference(law_name, field, variant), equations,
-            laws=(law_name,), label=f"slip_zone({law_name}).{field}{VARIANTS[variant]}",
-            compose=_slip_zone_api(law_name, field, variant), costly=True,
-        ))  # fmt: skip
+        register_quantity(
+            Quantity(
+                kernel,
+                (*args, *spec.parameters),
+                _slip_zone_reference(law_name, field, variant),
+                equations,
+                laws=(law_name,),
+                label=f"slip_zone({law_name}).{field}{VARIANTS[variant]}",
+                compose=_slip_zone_api(law_name, field, variant),
+                costly=True,
+            )
+        )
 
 
 for _name in API_LAWS:
@@ -1306,18 +1672,33 @@ for _name in API_LAWS:
 # over the contact half-width a2 is laid so that the drawn x_contact picks the offset k.
 # ---------------------------------------------------------------------------------------------
 
-register_quantity(Quantity(
-    "hertz.hertz_profile", ("x=x_contact", "R"),
-    lambda x, R: x**2 / (2 * R), ("29",), laws=("hertz",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "flat_rounded.flat_rounded_profile", ("x=x_contact", "c", "R"),
-    lambda x, c, R: max(0, abs(x) - c) ** 2 / (2 * R), ("29",), laws=("flat-rounded",),
-))  # fmt: skip
-register_quantity(Quantity(
-    "power_law.power_law_profile", ("x=x_contact", "n", "A"),
-    lambda x, n, A: A * abs(x) ** n, ("29",), laws=("power",),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "hertz.hertz_profile",
+        ("x=x_contact", "R"),
+        lambda x, R: x**2 / (2 * R),
+        ("29",),
+        laws=("hertz",),
+    )
+)
+register_quantity(
+    Quantity(
+        "flat_rounded.flat_rounded_profile",
+        ("x=x_contact", "c", "R"),
+        lambda x, c, R: max(0, abs(x) - c) ** 2 / (2 * R),
+        ("29",),
+        laws=("flat-rounded",),
+    )
+)
+register_quantity(
+    Quantity(
+        "power_law.power_law_profile",
+        ("x=x_contact", "n", "A"),
+        lambda x, n, A: A * abs(x) ** n,
+        ("29",),
+        laws=("power",),
+    )
+)
 
 _SOLVER_ELEMENTS = 500
 
@@ -1346,19 +1727,36 @@ def _kernel_on_grid(name):
     return compose
 
 
-register_quantity(Quantity(
-    "solver_influence.relative_slip_influence", ("x=x_contact", "a=a2", "E_star"),
-    lambda x, a, E_star: _log_kernel_over_element(x, a, E_star, +1), ("F-3", "F-5"),
-    laws=("hertz",), compose=_kernel_on_grid("relative_slip_influence"), costly=True,
-))  # fmt: skip
-register_quantity(Quantity(
-    "solver_influence.gap_opening_influence", ("x=x_contact", "a=a2", "E_star"),
-    lambda x, a, E_star: _log_kernel_over_element(x, a, E_star, -1), ("F-3", "F-5"),
-    laws=("hertz",), compose=_kernel_on_grid("gap_opening_influence"), costly=True,
-))  # fmt: skip
-register_quantity(Quantity(
-    "solver_influence.tension_relative_displacement", ("x=x_contact", "sigma=eta", "E_star"),
-    lambda x, sigma, E_star: (1 - mpmath.mpf("0.3") ** 2) * sigma * x
-    / (2 * (1 - mpmath.mpf("0.3") ** 2) * E_star),  # (1 - nu^2) sigma x / E, any nu
-    ("F-4",),
-))  # fmt: skip
+register_quantity(
+    Quantity(
+        "solver_influence.relative_slip_influence",
+        ("x=x_contact", "a=a2", "E_star"),
+        lambda x, a, E_star: _log_kernel_over_element(x, a, E_star, +1),
+        ("F-3", "F-5"),
+        laws=("hertz",),
+        compose=_kernel_on_grid("relative_slip_influence"),
+        costly=True,
+    )
+)
+register_quantity(
+    Quantity(
+        "solver_influence.gap_opening_influence",
+        ("x=x_contact", "a=a2", "E_star"),
+        lambda x, a, E_star: _log_kernel_over_element(x, a, E_star, -1),
+        ("F-3", "F-5"),
+        laws=("hertz",),
+        compose=_kernel_on_grid("gap_opening_influence"),
+        costly=True,
+    )
+)
+register_quantity(
+    Quantity(
+        "solver_influence.tension_relative_displacement",
+        ("x=x_contact", "sigma=eta", "E_star"),
+        lambda x, sigma, E_star: (1 - mpmath.mpf("0.3") ** 2)
+        * sigma
+        * x
+        / (2 * (1 - mpmath.mpf("0.3") ** 2) * E_star),  # (1 - nu^2) sigma x / E, any nu
+        ("F-4",),
+    )
+)

@@ -63,44 +63,81 @@ def bench_scalar(rounds: int, calls: int) -> list[Row]:
     # The headline kernel's arguments for this cycle, as the core passes them: Python floats
     # (the left edge slips backward, so the other edge's factor is +1).
     state = law.cycle_state(100.0, 5.0)
-    arguments = (mu, result.lam, result.eta, result.a1, float(state.a_slope1), result.L_I1,
-                 float(state.L_I_slope1), 5.0, 1.0)  # fmt: skip
+    arguments = (
+        mu,
+        result.lam,
+        result.eta,
+        result.a1,
+        float(state.a_slope1),
+        result.L_I1,
+        float(state.L_I_slope1),
+        5.0,
+        1.0,
+    )
     width = slip_zone_width_second_order_from_multiplier(*arguments)
     if not np.isclose(width, result.slip_zone_width, rtol=1e-12):
-        raise RuntimeError(f"the headline kernel gives {width}, slip_zone "
-                           f"{result.slip_zone_width}: the core wraps another kernel now")
+        raise RuntimeError(
+            f"the headline kernel gives {width}, slip_zone "
+            f"{result.slip_zone_width}: the core wraps another kernel now"
+        )
     kernel_calls = generated_calls(lambda: slip_zone(law, cycle, mu, edge="both"))
     # With bulk tension the left edge no longer mirrors the right one: its kernels run too.
     tension = LoadCycle(P1=100.0, Q1=0.0, P2=105.0, Q2=1.0, sigma1=0.0, sigma2=0.5)
-    measured = interleaved({
-        "slip_zone": lambda: slip_zone(law, cycle, mu, edge="both"),
-        "tension": lambda: slip_zone(law, tension, mu, edge="both"),
-        "evaluate": lambda: evaluate(law, cycle, mu),
-        "kernel": lambda: slip_zone_width_second_order_from_multiplier(*arguments),
-    }, rounds, calls=calls)  # fmt: skip
+    measured = interleaved(
+        {
+            "slip_zone": lambda: slip_zone(law, cycle, mu, edge="both"),
+            "tension": lambda: slip_zone(law, tension, mu, edge="both"),
+            "evaluate": lambda: evaluate(law, cycle, mu),
+            "kernel": lambda: slip_zone_width_second_order_from_multiplier(*arguments),
+        },
+        rounds,
+        calls=calls,
+    )
     t = {name: measured.best(name) for name in ("slip_zone", "tension", "evaluate", "kernel")}
     return [
-        Row("one scalar `slip_zone(HertzLaw(1, 1), LoadCycle(100, 0, 105, 1), 0.1, "
-            "edge=\"both\")`", duration(t["slip_zone"]), "", "", f"<= {SCALAR_TARGET * 1e6:g} µs",
+        Row(
+            'one scalar `slip_zone(HertzLaw(1, 1), LoadCycle(100, 0, 105, 1), 0.1, edge="both")`',
+            duration(t["slip_zone"]),
+            "",
+            "",
+            f"<= {SCALAR_TARGET * 1e6:g} µs",
             verdict(t["slip_zone"] <= SCALAR_TARGET),
             f"{measured.clock_words(calls)}; the paper's Fig. 5 "
-            "cycle, both edges, result objects built"),
-        Row("same, against the generated kernel of its headline width (`asymslip_gen.scalar."
+            "cycle, both edges, result objects built",
+        ),
+        Row(
+            "same, against the generated kernel of its headline width (`asymslip_gen.scalar."
             "slip_zone_width_second_order_from_multiplier`, one call on Python floats)",
-            duration(t["slip_zone"]), duration(t["kernel"]),
-            times(measured.ratio("slip_zone", "kernel")), "(information)", "-",
+            duration(t["slip_zone"]),
+            duration(t["kernel"]),
+            times(measured.ratio("slip_zone", "kernel")),
+            "(information)",
+            "-",
             measured.how("slip_zone", "kernel", calls) + f"; one `slip_zone` makes "
-            f"{kernel_calls} calls into `asymslip_gen` (counted by a profile hook)"),
-        Row("same cycle with bulk tension (sigma2 = 0.5): the left edge no longer mirrors the "
-            "right one, so its kernels run too", duration(t["tension"]),
-            duration(t["slip_zone"]), times(measured.ratio("tension", "slip_zone")),
-            "(information)", "-", measured.how("tension", "slip_zone", calls)),
-        Row("the array path (`asymslip.slip_zones.evaluate`, no result objects) on the Fig. 5 "
+            f"{kernel_calls} calls into `asymslip_gen` (counted by a profile hook)",
+        ),
+        Row(
+            "same cycle with bulk tension (sigma2 = 0.5): the left edge no longer mirrors the "
+            "right one, so its kernels run too",
+            duration(t["tension"]),
+            duration(t["slip_zone"]),
+            times(measured.ratio("tension", "slip_zone")),
+            "(information)",
+            "-",
+            measured.how("tension", "slip_zone", calls),
+        ),
+        Row(
+            "the array path (`asymslip.slip_zones.evaluate`, no result objects) on the Fig. 5 "
             "cycle: what a cycle the one-cycle path leaves to it costs (a broken rule, an "
-            "asymmetric law)", duration(t["evaluate"]), duration(t["slip_zone"]),
-            times(measured.ratio("evaluate", "slip_zone")), "(information)", "-",
-            measured.how("evaluate", "slip_zone", calls)),
-    ]  # fmt: skip
+            "asymmetric law)",
+            duration(t["evaluate"]),
+            duration(t["slip_zone"]),
+            times(measured.ratio("evaluate", "slip_zone")),
+            "(information)",
+            "-",
+            measured.how("evaluate", "slip_zone", calls),
+        ),
+    ]
 
 
 # --- 10^6 cycles, law against law ---------------------------------------------------------------
@@ -117,8 +154,9 @@ def laws() -> dict[str, object]:
     }
 
 
-def cycles_for(law: object, count: int, mu: float, tension: bool = False,
-               seed: int = 0) -> LoadCycle:  # fmt: skip
+def cycles_for(
+    law: object, count: int, mu: float, tension: bool = False, seed: int = 0
+) -> LoadCycle:
     """Valid cycles of ``law``: a1 in (1.1, 3), dP/P1 in (1e-4, 0.05), |dQ/dP| < 1.5 mu; with
     ``tension``, a bulk-tension slope eta = dsigma/dP in (-0.02, 0.02) (no exact b then)."""
     rng = np.random.default_rng(seed)
@@ -141,30 +179,50 @@ def bench_laws(count: int, rounds: int, mu: float = 0.3) -> list[Row]:
         evaluation = evaluate(law, cycle, mu)
         valid = int(np.count_nonzero(evaluation.verdict.valid))
         if valid != count:
-            raise RuntimeError(f"{name}: {count - valid} of {count} benchmark cycles invalid: "
-                               f"{evaluation.verdict.messages()[0]}")  # fmt: skip
-    measured = interleaved({name: (lambda law=law, cycle=cycle: evaluate(law, cycle, mu))
-                            for name, (law, cycle) in work.items()}, rounds)  # fmt: skip
+            raise RuntimeError(
+                f"{name}: {count - valid} of {count} benchmark cycles invalid: "
+                f"{evaluation.verdict.messages()[0]}"
+            )
+    measured = interleaved(
+        {
+            name: (lambda law=law, cycle=cycle: evaluate(law, cycle, mu))
+            for name, (law, cycle) in work.items()
+        },
+        rounds,
+    )
     hertz = measured.best("hertz")
-    rows = [Row(f"{number(count)} cycles, both edges, `evaluate`: Hertz", duration(hertz), "",
-                "", "(information)", "-",
-                f"{measured.clock_words()}; every cycle valid; no bulk "
-                "tension, so the exact b = a(P_K) is computed too")]  # fmt: skip
+    rows = [
+        Row(
+            f"{number(count)} cycles, both edges, `evaluate`: Hertz",
+            duration(hertz),
+            "",
+            "",
+            "(information)",
+            "-",
+            f"{measured.clock_words()}; every cycle valid; no bulk "
+            "tension, so the exact b = a(P_K) is computed too",
+        )
+    ]
     described = {
         "flat-rounded": "rounded flat (c = 1, R = 10) / Hertz",
         "table": "table law (20 points of the rounded flat) / Hertz",
         "power": "power law (n = 1.5) / Hertz",
-        "flat-rounded tension": "with bulk tension (no exact b to solve for): rounded flat / "
-                                "Hertz",
+        "flat-rounded tension": "with bulk tension (no exact b to solve for): rounded flat / Hertz",
         "table tension": "with bulk tension: table law / Hertz",
-    }  # fmt: skip
+    }
     for name, words in described.items():
         baseline = "hertz tension" if name.endswith("tension") else "hertz"
         ratio = measured.ratio(name, baseline)
         target = None if name.endswith("tension") else LAW_TARGETS.get(name)
-        rows.append(Row(f"same: {words}", duration(measured.best(name)),
-                        duration(measured.best(baseline)), times(ratio),
-                        f"<= {target:g}x" if target else "(information)",
-                        verdict(ratio <= target) if target else "-",
-                        measured.how(name, baseline)))  # fmt: skip
+        rows.append(
+            Row(
+                f"same: {words}",
+                duration(measured.best(name)),
+                duration(measured.best(baseline)),
+                times(ratio),
+                f"<= {target:g}x" if target else "(information)",
+                verdict(ratio <= target) if target else "-",
+                measured.how(name, baseline),
+            )
+        )
     return rows

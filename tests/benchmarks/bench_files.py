@@ -35,8 +35,12 @@ from asymslip.files import Categorical, TextColumn, open_table, read_table
 from asymslip.files.writer import csv_rows
 
 FLOAT_COLUMNS = 43
-WARNINGS = ("", "eq24 = 0.31 > 0.1: the contact grows too much", "no slip: |lam| < mu",
-            "P_K <= 0: b_exact is not defined | eq27 = 0.2 > 0.1")  # fmt: skip
+WARNINGS = (
+    "",
+    "eq24 = 0.31 > 0.1: the contact grows too much",
+    "no slip: |lam| < mu",
+    "P_K <= 0: b_exact is not defined | eq27 = 0.2 > 0.1",
+)
 
 
 @dataclass
@@ -69,8 +73,7 @@ def write_cases(path: Path, rows: int, seed: int = 0) -> None:
     P1 = rng.uniform(50.0, 150.0, rows)
     dP = P1 * rng.uniform(1e-4, 0.1, rows)
     lam = rng.uniform(-1.0, 1.0, rows)
-    table = np.column_stack([P1, np.zeros(rows), np.zeros(rows), P1 + dP, lam * dP,
-                             np.zeros(rows)])  # fmt: skip
+    table = np.column_stack([P1, np.zeros(rows), np.zeros(rows), P1 + dP, lam * dP, np.zeros(rows)])
     with path.open("w") as handle:
         handle.write("P1,Q1,sigma1,P2,Q2,sigma2\n")
         np.savetxt(handle, table, delimiter=",", fmt="%.17g")
@@ -107,19 +110,32 @@ def bench_read(rows: int, repeat: int) -> list[Row]:
         path = Path(scratch) / "cases.csv"
         write_cases(path, rows)
         required, numeric = ["P1", "Q1", "P2", "Q2"], ["sigma1", "sigma2", "mu"]
-        raw, fast, slow = best_of_each([
-            lambda: pcsv.read_csv(path),
-            lambda: read_table(path, required=required, numeric=numeric, engine="pyarrow"),
-            lambda: read_table(path, required=required, numeric=numeric, engine="numpy"),
-        ], repeat)  # fmt: skip
+        raw, fast, slow = best_of_each(
+            [
+                lambda: pcsv.read_csv(path),
+                lambda: read_table(path, required=required, numeric=numeric, engine="pyarrow"),
+                lambda: read_table(path, required=required, numeric=numeric, engine="numpy"),
+            ],
+            repeat,
+        )
     how = f"best of {repeat}, interleaved"
     label = f"read {rows:,} cases (6 columns)"
     return [
-        Row(f"{label}: `read_table`, pyarrow", seconds(fast), seconds(raw), f"{fast / raw:.2f}x",
-            how + "; baseline `pyarrow.csv.read_csv` with type inference"),
-        Row(f"{label}: `read_table`, NumPy only", seconds(slow), seconds(raw),
-            f"{slow / raw:.2f}x", how),
-    ]  # fmt: skip
+        Row(
+            f"{label}: `read_table`, pyarrow",
+            seconds(fast),
+            seconds(raw),
+            f"{fast / raw:.2f}x",
+            how + "; baseline `pyarrow.csv.read_csv` with type inference",
+        ),
+        Row(
+            f"{label}: `read_table`, NumPy only",
+            seconds(slow),
+            seconds(raw),
+            f"{slow / raw:.2f}x",
+            how,
+        ),
+    ]
 
 
 def bench_write(rows: int, repeat: int) -> list[Row]:
@@ -134,27 +150,50 @@ def bench_write(rows: int, repeat: int) -> list[Row]:
             def run() -> None:
                 with open_table(folder / name, schema, engine=engine) as writer:
                     for start in range(0, rows, 100_000):
-                        writer.write({key: _part(column, start, start + 100_000)
-                                      for key, column in columns.items()})  # fmt: skip
+                        writer.write(
+                            {
+                                key: _part(column, start, start + 100_000)
+                                for key, column in columns.items()
+                            }
+                        )
+
             return run
 
-        floor, fast, slow, parquet = best_of_each([
-            lambda: pcsv.write_csv(table, str(folder / "floor.csv")),
-            write("arrow.csv", "pyarrow"),
-            write("numpy.csv", "numpy"),
-            write("out.parquet", None),
-        ], repeat)  # fmt: skip
+        floor, fast, slow, parquet = best_of_each(
+            [
+                lambda: pcsv.write_csv(table, str(folder / "floor.csv")),
+                write("arrow.csv", "pyarrow"),
+                write("numpy.csv", "numpy"),
+                write("out.parquet", None),
+            ],
+            repeat,
+        )
         same = (folder / "arrow.csv").read_bytes() == (folder / "numpy.csv").read_bytes()
     how = f"best of {repeat}, interleaved; chunks of 100,000 rows"
     label = f"write {rows:,} rows x {FLOAT_COLUMNS} doubles + 2 text"
     return [
-        Row(f"{label}: CSV, `open_table` with pyarrow", seconds(fast), seconds(floor),
-            f"{fast / floor:.2f}x", how + "; baseline one `pyarrow.csv.write_csv` call"),
-        Row(f"{label}: CSV, NumPy only", seconds(slow), seconds(floor), f"{slow / floor:.2f}x",
-            how + f"; same bytes as the pyarrow writer: {'yes' if same else 'NO'}"),
-        Row(f"{label}: Parquet", seconds(parquet), seconds(fast), f"{parquet / fast:.2f}x",
-            how + "; baseline the CSV writer with pyarrow"),
-    ]  # fmt: skip
+        Row(
+            f"{label}: CSV, `open_table` with pyarrow",
+            seconds(fast),
+            seconds(floor),
+            f"{fast / floor:.2f}x",
+            how + "; baseline one `pyarrow.csv.write_csv` call",
+        ),
+        Row(
+            f"{label}: CSV, NumPy only",
+            seconds(slow),
+            seconds(floor),
+            f"{slow / floor:.2f}x",
+            how + f"; same bytes as the pyarrow writer: {'yes' if same else 'NO'}",
+        ),
+        Row(
+            f"{label}: Parquet",
+            seconds(parquet),
+            seconds(fast),
+            f"{parquet / fast:.2f}x",
+            how + "; baseline the CSV writer with pyarrow",
+        ),
+    ]
 
 
 def _part(column, start: int, stop: int):  # noqa: ANN001, ANN202
@@ -177,8 +216,11 @@ def _format_half(half: int) -> bytes:
     import pyarrow.csv as pcsv
 
     sink = io.BytesIO()
-    pcsv.write_csv(arrow_table(schema, part), sink,
-                   pcsv.WriteOptions(include_header=False, quoting_style="none"))  # fmt: skip
+    pcsv.write_csv(
+        arrow_table(schema, part),
+        sink,
+        pcsv.WriteOptions(include_header=False, quoting_style="none"),
+    )
     return sink.getvalue()
 
 
@@ -202,25 +244,41 @@ def bench_pool(rows: int, repeat: int) -> list[Row]:
                 pool.map(_format_half, [0, 1])
 
         single, pooled = best_of_each([one, two], repeat)
-        out.append(Row(f"format {rows:,} rows to CSV text ({engine}): 2 worker processes",
-                       seconds(pooled), seconds(single), f"{pooled / single:.2f}x",
-                       f"best of {repeat}, interleaved; baseline the same work in one "
-                       "process; workers forked, bytes sent back by pipe"))  # fmt: skip
+        out.append(
+            Row(
+                f"format {rows:,} rows to CSV text ({engine}): 2 worker processes",
+                seconds(pooled),
+                seconds(single),
+                f"{pooled / single:.2f}x",
+                f"best of {repeat}, interleaved; baseline the same work in one "
+                "process; workers forked, bytes sent back by pipe",
+            )
+        )
     _JOB = None
     table = arrow_table(schema, columns)
     cpu, wall = time.process_time(), time.perf_counter()
     pcsv.write_csv(table, io.BytesIO())
     cpu, wall = time.process_time() - cpu, time.perf_counter() - wall
-    out.append(Row("`pyarrow.csv.write_csv`: CPU seconds per wall second", f"{cpu / wall:.2f}",
-                   "", "", f"one call, {rows:,} rows; {os.cpu_count()} cores"))  # fmt: skip
+    out.append(
+        Row(
+            "`pyarrow.csv.write_csv`: CPU seconds per wall second",
+            f"{cpu / wall:.2f}",
+            "",
+            "",
+            f"one call, {rows:,} rows; {os.cpu_count()} cores",
+        )
+    )
     return out
 
 
 def table(rows: list[Row]) -> str:
-    lines = ["| Benchmark | Measured | Baseline | Ratio | How |",
-             "| --- | ---: | ---: | ---: | --- |"]
-    lines += [f"| {r.benchmark} | {r.measured} | {r.baseline} | {r.ratio} | {r.how} |"
-              for r in rows]  # fmt: skip
+    lines = [
+        "| Benchmark | Measured | Baseline | Ratio | How |",
+        "| --- | ---: | ---: | ---: | --- |",
+    ]
+    lines += [
+        f"| {r.benchmark} | {r.measured} | {r.baseline} | {r.ratio} | {r.how} |" for r in rows
+    ]
     return "\n".join(lines)
 
 

@@ -50,8 +50,16 @@ def load_states(count: int, seed: int = 0) -> dict[str, np.ndarray]:
     da = a1 * 10.0 ** rng.uniform(-8.0, -1.0, count)
     L_I1 = rng.uniform(0.5, 2.0, count)
     L_I2 = L_I1 * (1.0 + da / a1 / 4.0)
-    return {"mu": mu, "lam": lam, "eta": eta, "a1": a1, "a2": a1 + da, "da": da,
-            "L_I1": L_I1, "L_I2": L_I2}  # fmt: skip
+    return {
+        "mu": mu,
+        "lam": lam,
+        "eta": eta,
+        "a1": a1,
+        "a2": a1 + da,
+        "da": da,
+        "L_I1": L_I1,
+        "L_I2": L_I2,
+    }
 
 
 class HandStickBoundary:
@@ -153,12 +161,19 @@ def lambdified(name: str) -> Callable[..., np.ndarray] | None:
 
 
 KERNELS = {
-    "stick_boundary_proportional": (stick_boundary_proportional, HandStickBoundary,
-                                    hand_stick_boundary_allocating,
-                                    ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2")),
-    "slip_zone_width": (slip_zone_width, HandSlipZoneWidth, hand_slip_zone_width_allocating,
-                        ("mu", "lam", "eta", "a1", "da", "L_I1", "L_I2")),
-}  # fmt: skip
+    "stick_boundary_proportional": (
+        stick_boundary_proportional,
+        HandStickBoundary,
+        hand_stick_boundary_allocating,
+        ("mu", "lam", "eta", "a1", "a2", "L_I1", "L_I2"),
+    ),
+    "slip_zone_width": (
+        slip_zone_width,
+        HandSlipZoneWidth,
+        hand_slip_zone_width_allocating,
+        ("mu", "lam", "eta", "a1", "da", "L_I1", "L_I2"),
+    ),
+}
 
 
 def largest_relative_difference(first: np.ndarray, second: np.ndarray) -> float:
@@ -183,39 +198,70 @@ def bench_kernels(count: int, rounds: int, seed: int = 0) -> list[Row]:
             candidates["lambdify"] = partial(function, *arrays)
         # The same numbers first, or the comparison means nothing.
         reference = generated(*arrays)
-        spread = max(largest_relative_difference(candidate(), reference)
-                     for key, candidate in candidates.items() if key != "floor")  # fmt: skip
-        print(f"  {name}: largest relative difference from the generated kernel {spread:.1e}",
-              file=sys.stderr)  # fmt: skip
+        spread = max(
+            largest_relative_difference(candidate(), reference)
+            for key, candidate in candidates.items()
+            if key != "floor"
+        )
+        print(
+            f"  {name}: largest relative difference from the generated kernel {spread:.1e}",
+            file=sys.stderr,
+        )
         measured = interleaved(candidates, rounds)
         t = {key: measured.best(key) for key in candidates}
         label = f"`{name}` (22), {number(count)} states"
         same = f"; same numbers (largest relative difference {spread:.0e})"
-        rows.append(Row(
-            f"{label}: generated vs hand-written NumPy, in place with `out=` buffers",
-            duration(t["generated"]), duration(t["hand"]),
-            times(measured.ratio("generated", "hand")), f"<= {HAND_TARGET}x",
-            verdict(t["generated"] <= HAND_TARGET * t["hand"]),
-            measured.how("generated", "hand") + same))  # fmt: skip
-        rows.append(Row(
-            "same: hand-written, the same operations allocating (no `out=`)",
-            duration(t["allocating"]), duration(t["hand"]),
-            times(measured.ratio("allocating", "hand")), "(information)", "-",
-            "what in-place updates are worth; " + measured.how("allocating", "hand")))  # fmt: skip
+        rows.append(
+            Row(
+                f"{label}: generated vs hand-written NumPy, in place with `out=` buffers",
+                duration(t["generated"]),
+                duration(t["hand"]),
+                times(measured.ratio("generated", "hand")),
+                f"<= {HAND_TARGET}x",
+                verdict(t["generated"] <= HAND_TARGET * t["hand"]),
+                measured.how("generated", "hand") + same,
+            )
+        )
+        rows.append(
+            Row(
+                "same: hand-written, the same operations allocating (no `out=`)",
+                duration(t["allocating"]),
+                duration(t["hand"]),
+                times(measured.ratio("allocating", "hand")),
+                "(information)",
+                "-",
+                "what in-place updates are worth; " + measured.how("allocating", "hand"),
+            )
+        )
         if function is not None:
-            rows.append(Row(
-                "same: generated vs `sympy.lambdify(..., cse=True)` of the emitted expression",
-                duration(t["generated"]), duration(t["lambdify"]),
-                times(measured.ratio("generated", "lambdify")), "<= 1x",
-                verdict(t["generated"] <= t["lambdify"] * 1.05),
-                measured.how("generated", "lambdify") + "; met within 5 %"))  # fmt: skip
+            rows.append(
+                Row(
+                    "same: generated vs `sympy.lambdify(..., cse=True)` of the emitted expression",
+                    duration(t["generated"]),
+                    duration(t["lambdify"]),
+                    times(measured.ratio("generated", "lambdify")),
+                    "<= 1x",
+                    verdict(t["generated"] <= t["lambdify"] * 1.05),
+                    measured.how("generated", "lambdify") + "; met within 5 %",
+                )
+            )
         else:
-            rows.append(Row("same: generated vs `sympy.lambdify(..., cse=True)`",
-                            "skipped: SymPy not installed (the derive extra)"))  # fmt: skip
-        rows.append(Row(
-            f"same: generated vs the memory floor ({len(arrays)} inputs read once, one output "
-            "written)", duration(t["generated"]), duration(t["floor"]),
-            times(measured.ratio("generated", "floor")), f"<= {FLOOR_TARGET:g}x",
-            verdict(t["generated"] <= FLOOR_TARGET * t["floor"]),
-            measured.how("generated", "floor") + "; floor: a sum over blocks in cache"))
+            rows.append(
+                Row(
+                    "same: generated vs `sympy.lambdify(..., cse=True)`",
+                    "skipped: SymPy not installed (the derive extra)",
+                )
+            )
+        rows.append(
+            Row(
+                f"same: generated vs the memory floor ({len(arrays)} inputs read once, one output "
+                "written)",
+                duration(t["generated"]),
+                duration(t["floor"]),
+                times(measured.ratio("generated", "floor")),
+                f"<= {FLOOR_TARGET:g}x",
+                verdict(t["generated"] <= FLOOR_TARGET * t["floor"]),
+                measured.how("generated", "floor") + "; floor: a sum over blocks in cache",
+            )
+        )
     return rows

@@ -40,8 +40,13 @@ def growth_exponent(counts: list[int], seconds: list[float]) -> float:
 def bench_solver(quick: bool, repeat: int) -> list[Row]:
     module = solver_module()
     if module is None or not hasattr(module, "solver_rows"):
-        return [Row("reference solver, cost against N", "skipped: `tests/benchmarks/"
-                    "bench_solver.py` (with `solver_rows`) is not on this branch yet")]  # fmt: skip
+        return [
+            Row(
+                "reference solver, cost against N",
+                "skipped: `tests/benchmarks/"
+                "bench_solver.py` (with `solver_rows`) is not on this branch yet",
+            )
+        ]
     counts = list(getattr(module, "COUNTS", (500, 1000, 2000, 4000)))
     if quick:
         counts = counts[:1]
@@ -53,12 +58,29 @@ def bench_solver(quick: bool, repeat: int) -> list[Row]:
         target, met = "(information)", "-"
         if count == target_count and target_seconds is not None:
             target, met = f"<= {target_seconds:g} s", verdict(seconds <= target_seconds)
-        rows.append(Row(f"reference solver, Fig. 5 cycle to its steady state, N = {count:,} "
-                        "elements", duration(seconds), "", "", target, met,
-                        f"wall clock, best of {repeat} (`bench_solver.solver_rows`); {steps} "
-                        f"load steps, {periods} periods"))  # fmt: skip
+        rows.append(
+            Row(
+                f"reference solver, Fig. 5 cycle to its steady state, N = {count:,} elements",
+                duration(seconds),
+                "",
+                "",
+                target,
+                met,
+                f"wall clock, best of {repeat} (`bench_solver.solver_rows`); {steps} "
+                f"load steps, {periods} periods",
+            )
+        )
     if len(measured) >= 2:
         exponent = growth_exponent([row[0] for row in measured], [row[1] for row in measured])
-        rows.append(Row("same: growth of the cost with N", f"N^{exponent:.2f}", "", "",
-                        "(information)", "-", "least-squares slope of log time on log N"))
+        rows.append(
+            Row(
+                "same: growth of the cost with N",
+                f"N^{exponent:.2f}",
+                "",
+                "",
+                "(information)",
+                "-",
+                "least-squares slope of log time on log N",
+            )
+        )
     return rows

@@ -37,14 +37,23 @@ def _import_seconds(statement: str, cache: str) -> tuple[float, float]:
     ``cache``, as an installed package's is (pip compiles it; an environment with
     PYTHONDONTWRITEBYTECODE would otherwise time the compilation of every source file of
     asymslip while NumPy loads its installed bytecode)."""
-    environment = {key: value for key, value in os.environ.items()
-                   if key != "PYTHONDONTWRITEBYTECODE"}  # fmt: skip
+    environment = {
+        key: value for key, value in os.environ.items() if key != "PYTHONDONTWRITEBYTECODE"
+    }
     environment["PYTHONPYCACHEPREFIX"] = cache
-    code = ("import time; cpu, wall = time.process_time(), time.perf_counter(); "
-            f"{statement}; "
-            "print(time.process_time() - cpu, time.perf_counter() - wall)")  # fmt: skip
-    completed = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True,
-                               text=True, check=True, env=environment)  # fmt: skip
+    code = (
+        "import time; cpu, wall = time.process_time(), time.perf_counter(); "
+        f"{statement}; "
+        "print(time.process_time() - cpu, time.perf_counter() - wall)"
+    )
+    completed = subprocess.run(
+        [sys.executable, "-c", code],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        check=True,
+        env=environment,
+    )
     cpu, wall = completed.stdout.split()
     return float(cpu), float(wall)
 
@@ -66,27 +75,47 @@ def bench_imports(rounds: int) -> list[Row]:
     per_round = sorted(a / n for a, n in zip(seconds["asymslip"], seconds["numpy"], strict=True))
     median = per_round[len(per_round) // 2]
     wall_ratio = min(walls["asymslip"]) / min(walls["numpy"])
-    how = (f"fresh interpreters timing the import from inside, bytecode cached as after an "
-           f"install, CPU time of the child, best of "
-           f"{rounds} interleaved rounds; median per-round ratio {median:.2f}x; wall clock "
-           f"{duration(min(walls['asymslip']))} vs {duration(min(walls['numpy']))}, "
-           f"{times(wall_ratio)}")  # fmt: skip
+    how = (
+        f"fresh interpreters timing the import from inside, bytecode cached as after an "
+        f"install, CPU time of the child, best of "
+        f"{rounds} interleaved rounds; median per-round ratio {median:.2f}x; wall clock "
+        f"{duration(min(walls['asymslip']))} vs {duration(min(walls['numpy']))}, "
+        f"{times(wall_ratio)}"
+    )
     ratio = best["asymslip"] / best["numpy"]
     return [
-        Row(f"`{IMPORTS['asymslip']}` vs `import numpy`", duration(best["asymslip"]),
-            duration(best["numpy"]), times(ratio), f"< {IMPORT_TARGET}x",
-            verdict(ratio < IMPORT_TARGET), how),
-        Row("`from asymslip_gen import *` (every generated kernel) vs `import numpy`",
-            duration(best["asymslip_gen"]), duration(best["numpy"]),
-            times(best["asymslip_gen"] / best["numpy"]), "(information)", "-",
-            how.split(";")[0]),
-    ]  # fmt: skip
+        Row(
+            f"`{IMPORTS['asymslip']}` vs `import numpy`",
+            duration(best["asymslip"]),
+            duration(best["numpy"]),
+            times(ratio),
+            f"< {IMPORT_TARGET}x",
+            verdict(ratio < IMPORT_TARGET),
+            how,
+        ),
+        Row(
+            "`from asymslip_gen import *` (every generated kernel) vs `import numpy`",
+            duration(best["asymslip_gen"]),
+            duration(best["numpy"]),
+            times(best["asymslip_gen"] / best["numpy"]),
+            "(information)",
+            "-",
+            how.split(";")[0],
+        ),
+    ]
 
 
 def bench_generate(rounds: int) -> list[Row]:
     with tempfile.TemporaryDirectory() as scratch:
-        command = [sys.executable, "-m", "asymslip.codegen", "generate", "--root", scratch,
-                   "--quiet"]  # fmt: skip
+        command = [
+            sys.executable,
+            "-m",
+            "asymslip.codegen",
+            "generate",
+            "--root",
+            scratch,
+            "--quiet",
+        ]
 
         def generate() -> None:
             completed = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
@@ -99,9 +128,16 @@ def bench_generate(rounds: int) -> list[Row]:
         total = time.perf_counter() - started
     best = measured.best("generate")
     wall = measured.best("generate", "wall")
-    return [Row(f"`make generate` (every derivation, 4 languages, the report), best of {rounds}",
-                duration(best), "", "", f"< {GENERATE_TARGET:g} s",
-                verdict(best < GENERATE_TARGET),
-                f"CPU time of the child processes (SymPy runs on one thread), "
-                f"`python -m asymslip.codegen generate` into a scratch root; wall clock best "
-                f"{duration(wall)}, {duration(total)} for all {rounds}")]  # fmt: skip
+    return [
+        Row(
+            f"`make generate` (every derivation, 4 languages, the report), best of {rounds}",
+            duration(best),
+            "",
+            "",
+            f"< {GENERATE_TARGET:g} s",
+            verdict(best < GENERATE_TARGET),
+            f"CPU time of the child processes (SymPy runs on one thread), "
+            f"`python -m asymslip.codegen generate` into a scratch root; wall clock best "
+            f"{duration(wall)}, {duration(total)} for all {rounds}",
+        )
+    ]

@@ -70,10 +70,12 @@ def floor(cases: Path, out: Path, law: HertzLaw) -> int:
         for key in (*NUMBER_KEYS, *MEASURE_KEYS):
             columns[prefix + key] = pa.array(np.broadcast_to(edge.values[key], P1.shape))
         distinct, codes = np.unique(edge.flags, return_inverse=True)
-        words = [WARNING_SEPARATOR.join(warning_texts(int(flags), law))
-                 for flags in distinct.tolist()]  # fmt: skip
+        words = [
+            WARNING_SEPARATOR.join(warning_texts(int(flags), law)) for flags in distinct.tolist()
+        ]
         columns[prefix + "warnings"] = pa.DictionaryArray.from_arrays(
-            pa.array(codes.astype(np.int32)), pa.array(words, pa.string()))
+            pa.array(codes.astype(np.int32)), pa.array(words, pa.string())
+        )
     columns["error"] = pa.nulls(len(P1), pa.string())
     pcsv.write_csv(pa.table(columns), out)
     return len(columns)
@@ -94,24 +96,45 @@ def same_numbers(first: Path, second: Path) -> bool:
 
     options = pcsv.ConvertOptions(include_columns=list(COMPARED))
     one, two = (pcsv.read_csv(path, convert_options=options) for path in (first, second))
-    return all(np.array_equal(one.column(name).to_numpy(), two.column(name).to_numpy(),
-                              equal_nan=True) for name in COMPARED)  # fmt: skip
+    return all(
+        np.array_equal(one.column(name).to_numpy(), two.column(name).to_numpy(), equal_nan=True)
+        for name in COMPARED
+    )
 
 
 def bench_sweep(rows: int, rounds: int) -> list[Row]:
     try:
         import pyarrow  # noqa: F401
     except ImportError:
-        return [Row("sweep vs the floor", "skipped: pyarrow not installed (the parquet extra)",
-                    target=f"<= {CSV_TARGET}x")]  # fmt: skip
+        return [
+            Row(
+                "sweep vs the floor",
+                "skipped: pyarrow not installed (the parquet extra)",
+                target=f"<= {CSV_TARGET}x",
+            )
+        ]
     law = HertzLaw(R=1.0, E_star=1.0)
     with tempfile.TemporaryDirectory() as scratch:
         folder = Path(scratch)
         cases = folder / "cases.csv"
         write_cases(cases, rows)
-        command = [sys.executable, "-m", "asymslip", "sweep", str(cases), "--law", "hertz",
-                   "--R", "1", "--E-star", "1", "--mu", str(MU), "--out",
-                   str(folder / "cli.csv")]  # fmt: skip
+        command = [
+            sys.executable,
+            "-m",
+            "asymslip",
+            "sweep",
+            str(cases),
+            "--law",
+            "hertz",
+            "--R",
+            "1",
+            "--E-star",
+            "1",
+            "--mu",
+            str(MU),
+            "--out",
+            str(folder / "cli.csv"),
+        ]
 
         def cli() -> None:
             completed = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
@@ -122,9 +145,10 @@ def bench_sweep(rows: int, rounds: int) -> list[Row]:
             "api": lambda: sweep_file(cases, law, folder / "api.csv", mu=MU, progress=False),
             "cli": cli,
             "floor": lambda: floor(cases, folder / "floor.csv", law),
-            "parquet": lambda: sweep_file(cases, law, folder / "api.parquet", mu=MU,
-                                          progress=False),
-        }  # fmt: skip
+            "parquet": lambda: sweep_file(
+                cases, law, folder / "api.parquet", mu=MU, progress=False
+            ),
+        }
         measured = interleaved(candidates, rounds, clock="wall")
         # The floor wrote what the sweep wrote, or the comparison means nothing.
         expected = output_columns(list(INPUT_COLUMNS), "both")
@@ -136,20 +160,37 @@ def bench_sweep(rows: int, rounds: int) -> list[Row]:
             raise RuntimeError("the sweep and the floor wrote different numbers")
     t = {name: measured.best(name) for name in candidates}
     label = f"sweep, {number(rows)} Hertz rows, both edges, {len(expected)} columns, to CSV"
-    floor_how = (f"floor = `pyarrow.csv.read_csv` + `evaluate` + `pyarrow.csv.write_csv` of the "
-                 f"same columns and numbers ({sizes['floor.csv'] / 1e6:,.0f} MB; the sweep's "
-                 f"{sizes['api.csv'] / 1e6:,.0f} MB)")  # fmt: skip
+    floor_how = (
+        f"floor = `pyarrow.csv.read_csv` + `evaluate` + `pyarrow.csv.write_csv` of the "
+        f"same columns and numbers ({sizes['floor.csv'] / 1e6:,.0f} MB; the sweep's "
+        f"{sizes['api.csv'] / 1e6:,.0f} MB)"
+    )
     return [
-        Row(f"{label}: `sweep_file` (API) vs the floor", duration(t["api"]),
-            duration(t["floor"]), times(measured.ratio("api", "floor")), f"<= {CSV_TARGET}x",
+        Row(
+            f"{label}: `sweep_file` (API) vs the floor",
+            duration(t["api"]),
+            duration(t["floor"]),
+            times(measured.ratio("api", "floor")),
+            f"<= {CSV_TARGET}x",
             verdict(measured.ratio("api", "floor") <= CSV_TARGET),
-            f"{measured.how('api', 'floor')}; {floor_how}; {rows / t['api']:,.0f} rows/s"),
-        Row("same: `asymslip sweep` (command line, fresh interpreter) vs the floor",
-            duration(t["cli"]), duration(t["floor"]), times(measured.ratio("cli", "floor")),
-            f"<= {CSV_TARGET}x", verdict(measured.ratio("cli", "floor") <= CSV_TARGET),
-            measured.how("cli", "floor") + "; start-up and imports included"),
-        Row("same to Parquet (`sweep_file`, `.parquet`) vs the CSV sweep",
-            duration(t["parquet"]), duration(t["api"]), times(measured.ratio("parquet", "api")),
-            f"<= {PARQUET_TARGET}x", verdict(measured.ratio("parquet", "api") <= PARQUET_TARGET),
-            measured.how("parquet", "api")),
-    ]  # fmt: skip
+            f"{measured.how('api', 'floor')}; {floor_how}; {rows / t['api']:,.0f} rows/s",
+        ),
+        Row(
+            "same: `asymslip sweep` (command line, fresh interpreter) vs the floor",
+            duration(t["cli"]),
+            duration(t["floor"]),
+            times(measured.ratio("cli", "floor")),
+            f"<= {CSV_TARGET}x",
+            verdict(measured.ratio("cli", "floor") <= CSV_TARGET),
+            measured.how("cli", "floor") + "; start-up and imports included",
+        ),
+        Row(
+            "same to Parquet (`sweep_file`, `.parquet`) vs the CSV sweep",
+            duration(t["parquet"]),
+            duration(t["api"]),
+            times(measured.ratio("parquet", "api")),
+            f"<= {PARQUET_TARGET}x",
+            verdict(measured.ratio("parquet", "api") <= PARQUET_TARGET),
+            measured.how("parquet", "api"),
+        ),
+    ]

@@ -33,8 +33,17 @@ def fig5_problem() -> dict[str, float]:
     L_I2 = hertz_normal_edge_multiplier(P1 + dP, R, E_star)
     L_II1, L_II2 = lam * L_I1, lam * L_I2  # (21) with eta = 0
     b = stick_boundary(mu, a1, a2, L_I1, L_I2, L_II1, L_II2)
-    values = {"b": b, "a1": a1, "a2": a2, "mu": mu, "L_I1": L_I1, "L_I2": L_I2,
-              "L_II1": L_II1, "L_II2": L_II2, "E_star": E_star}  # fmt: skip
+    values = {
+        "b": b,
+        "a1": a1,
+        "a2": a2,
+        "mu": mu,
+        "L_I1": L_I1,
+        "L_I2": L_I2,
+        "L_II1": L_II1,
+        "L_II2": L_II2,
+        "E_star": E_star,
+    }
     return {key: float(value) for key, value in values.items()}
 
 
@@ -74,8 +83,13 @@ def bench_tractions(count: int, sample: int, rounds: int) -> list[Row]:
     try:
         import scipy  # noqa: F401
     except ImportError:
-        return [Row("closed-form (49) vs `scipy.integrate.quad(weight=\"cauchy\")`",
-                    "skipped: SciPy not installed (the bench extra)", target=">= 1e4x")]
+        return [
+            Row(
+                'closed-form (49) vs `scipy.integrate.quad(weight="cauchy")`',
+                "skipped: SciPy not installed (the bench extra)",
+                target=">= 1e4x",
+            )
+        ]
     p = fig5_problem()
     arguments = [p[name] for name in CLOSED_FORM_ARGUMENTS]
     many = points(count, p["a2"])
@@ -86,11 +100,15 @@ def bench_tractions(count: int, sample: int, rounds: int) -> list[Row]:
     def quad_at_points() -> None:
         quadrature[:] = [quad_traction_difference(xi, p) for xi in x_list]
 
-    measured = interleaved({
-        "quad": quad_at_points,
-        "closed": lambda: shear_traction_difference(many, *arguments),
-        "closed_sample": lambda: shear_traction_difference(x, *arguments),
-    }, rounds, warm_up=False)  # fmt: skip
+    measured = interleaved(
+        {
+            "quad": quad_at_points,
+            "closed": lambda: shear_traction_difference(many, *arguments),
+            "closed_sample": lambda: shear_traction_difference(x, *arguments),
+        },
+        rounds,
+        warm_up=False,
+    )
     closed = shear_traction_difference(x, *arguments)
     # Relative to the traction's scale: q_diff passes through zero inside the contact.
     agreement = float(np.max(np.abs(closed - quadrature)) / np.max(np.abs(quadrature)))
@@ -99,19 +117,34 @@ def bench_tractions(count: int, sample: int, rounds: int) -> list[Row]:
     speedup = per_point_quad / per_point_closed
     clock = measured.clock_words()
     return [
-        Row(f"(49) closed form `shear_traction_difference` on {number(count)} points vs "
-            f"`scipy.integrate.quad(weight=\"cauchy\")` of (15) on {len(x)} of them, per point",
-            duration(per_point_closed), duration(per_point_quad), f"{times(speedup)} faster",
-            f">= {SPEED_TARGET:.0e}x".replace("e+0", "e"), verdict(speedup >= SPEED_TARGET),
+        Row(
+            f"(49) closed form `shear_traction_difference` on {number(count)} points vs "
+            f'`scipy.integrate.quad(weight="cauchy")` of (15) on {len(x)} of them, per point',
+            duration(per_point_closed),
+            duration(per_point_quad),
+            f"{times(speedup)} faster",
+            f">= {SPEED_TARGET:.0e}x".replace("e+0", "e"),
+            verdict(speedup >= SPEED_TARGET),
             f"{clock}; per point: closed form {duration(measured.best('closed'))} for "
             f"{number(count)} points, quad {duration(measured.best('quad'))} for {len(x)}; "
-            "Fig. 5 problem, b from (17)"),
-        Row(f"same, both on the same {len(x)} points (the closed form's call overhead "
-            "dominates)", duration(measured.best("closed_sample")),
+            "Fig. 5 problem, b from (17)",
+        ),
+        Row(
+            f"same, both on the same {len(x)} points (the closed form's call overhead dominates)",
+            duration(measured.best("closed_sample")),
             duration(measured.best("quad")),
-            f"{times(measured.ratio('quad', 'closed_sample'))} faster", "(information)", "-",
-            measured.how("quad", "closed_sample")),
-        Row(f"agreement at the {len(x)} points: max abs(closed - quad) / max abs(quad)",
-            f"{agreement:.1e}", "", "", f"<= {AGREEMENT_TARGET:.0e}",
-            verdict(agreement <= AGREEMENT_TARGET), "quad at relative tolerance 1e-12"),
-    ]  # fmt: skip
+            f"{times(measured.ratio('quad', 'closed_sample'))} faster",
+            "(information)",
+            "-",
+            measured.how("quad", "closed_sample"),
+        ),
+        Row(
+            f"agreement at the {len(x)} points: max abs(closed - quad) / max abs(quad)",
+            f"{agreement:.1e}",
+            "",
+            "",
+            f"<= {AGREEMENT_TARGET:.0e}",
+            verdict(agreement <= AGREEMENT_TARGET),
+            "quad at relative tolerance 1e-12",
+        ),
+    ]

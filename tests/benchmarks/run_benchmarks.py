@@ -65,9 +65,22 @@ class Sizes:
     solver_repeat: int = 3
 
 
-QUICK = Sizes(scalar_rounds=3, scalar_calls=50, cycles=10**4, law_rounds=2, rows=2000,
-              sweep_rounds=1, states=10**4, kernel_rounds=2, points=10**4, quad_points=2,
-              traction_rounds=1, import_rounds=1, generate_rounds=0, solver_repeat=1)  # fmt: skip
+QUICK = Sizes(
+    scalar_rounds=3,
+    scalar_calls=50,
+    cycles=10**4,
+    law_rounds=2,
+    rows=2000,
+    sweep_rounds=1,
+    states=10**4,
+    kernel_rounds=2,
+    points=10**4,
+    quad_points=2,
+    traction_rounds=1,
+    import_rounds=1,
+    generate_rounds=0,
+    solver_repeat=1,
+)
 
 
 Measure = Callable[[], list[Row]]
@@ -108,8 +121,7 @@ def sections(sizes: Sizes, quick: bool, seed: int) -> dict[str, tuple[str, Measu
 
     def generate() -> list[Row]:
         if sizes.generate_rounds < 1:
-            return [Row("`make generate`", "skipped: --quick (about 20 s a run)",
-                        target="< 20 s")]  # fmt: skip
+            return [Row("`make generate`", "skipped: --quick (about 20 s a run)", target="< 20 s")]
         from .bench_startup import bench_generate
 
         return bench_generate(sizes.generate_rounds)
@@ -145,8 +157,7 @@ def run(keys: list[str], table: dict[str, tuple[str, Measure]]) -> list[Section]
             section.rows = [Row(f"{title}: failed", f"{type(error).__name__}: {error}")]
             section.failed = True
         section.seconds = time.perf_counter() - start
-        print(markdown([section]) + f"\n({section.seconds:.1f} s)\n", file=sys.stderr,
-              flush=True)  # fmt: skip
+        print(markdown([section]) + f"\n({section.seconds:.1f} s)\n", file=sys.stderr, flush=True)
         done.append(section)
     return done
 
@@ -155,21 +166,29 @@ def _keys(text: str, known: list[str], option: str) -> list[str]:
     keys = [key.strip() for key in text.split(",") if key.strip()]
     unknown = [key for key in keys if key not in known]
     if unknown:
-        raise SystemExit(f"{option}: unknown section {', '.join(unknown)} "
-                         f"(known: {', '.join(known)})")  # fmt: skip
+        raise SystemExit(
+            f"{option}: unknown section {', '.join(unknown)} (known: {', '.join(known)})"
+        )
     return keys
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--quick", action="store_true",
-                        help="small sizes, one or two rounds: a smoke test in a few seconds")
-    parser.add_argument("--markdown", type=Path, metavar="FILE",
-                        help="also write the table (and the machine line) to FILE")
+    parser.add_argument(
+        "--quick",
+        action="store_true",
+        help="small sizes, one or two rounds: a smoke test in a few seconds",
+    )
+    parser.add_argument(
+        "--markdown",
+        type=Path,
+        metavar="FILE",
+        help="also write the table (and the machine line) to FILE",
+    )
     parser.add_argument("--only", default="", help="comma-separated sections to run")
     parser.add_argument("--skip", default="", help="comma-separated sections to leave out")
     parser.add_argument("--seed", type=int, default=0, help="seed of the random inputs")
-    args = parser.parse_args(argv)  # fmt: skip
+    args = parser.parse_args(argv)
 
     sizes = QUICK if args.quick else Sizes()
     table = sections(sizes, args.quick, args.seed)
@@ -182,7 +201,7 @@ def main(argv: list[str] | None = None) -> int:
     done = run(keys, table)
     load_at_end = load_average()
     mode = " (--quick: small sizes, the figures mean little)" if args.quick else ""
-    text = (f"Machine: {machine(load_at_start, load_at_end)}{mode}\n\n{markdown(done)}\n")
+    text = f"Machine: {machine(load_at_start, load_at_end)}{mode}\n\n{markdown(done)}\n"
     print(text)
     if args.markdown is not None:
         with atomic_write(args.markdown, "markdown", mode="w") as handle:

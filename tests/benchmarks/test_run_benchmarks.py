@@ -12,18 +12,34 @@ from tests.benchmarks.timing import COLUMNS
 #: A measure every full table must have, per section title, in this order.
 EXPECTED = {
     "One scalar call": ["one scalar `slip_zone(", "kernel of its headline width", "evaluate`"],
-    "Cycles in bulk, law against law": ["Hertz", "rounded flat", "table law", "power law",
-                                        "bulk tension", "table law"],
-    "The sweep against its floor": ["`sweep_file` (API) vs the floor", "`asymslip sweep`",
-                                    "Parquet"],
+    "Cycles in bulk, law against law": [
+        "Hertz",
+        "rounded flat",
+        "table law",
+        "power law",
+        "bulk tension",
+        "table law",
+    ],
+    "The sweep against its floor": [
+        "`sweep_file` (API) vs the floor",
+        "`asymslip sweep`",
+        "Parquet",
+    ],
     "Generated kernels against the strongest baselines": [
-        "`stick_boundary_proportional`", "allocating", "lambdify", "memory floor",
-        "`slip_zone_width`", "allocating", "lambdify", "memory floor"],
+        "`stick_boundary_proportional`",
+        "allocating",
+        "lambdify",
+        "memory floor",
+        "`slip_zone_width`",
+        "allocating",
+        "lambdify",
+        "memory floor",
+    ],
     "Closed-form (49) against quadrature": ["quad", "same 2 points", "agreement"],
     "Import time": ["`from asymslip import", "`from asymslip_gen import *`"],
     "Code generation": ["`make generate`"],
     "Reference solver": ["reference solver"],
-}  # fmt: skip
+}
 MET = {"yes", "**no**", "-"}
 MEASURED = re.compile(r"^([\d.,]+ (s|ms|µs|ns)|[\d.]+e-\d+|N\^[\d.]+|skipped: .+)$")
 

@@ -77,8 +77,9 @@ class Timings:
     def round_ratio(self, name: str, baseline: str, clock: str | None = None) -> float:
         """Median over rounds of the ratio within a round."""
         clock = clock or self.clock
-        pairs = zip(self.by_name[name].times(clock), self.by_name[baseline].times(clock),
-                    strict=True)  # fmt: skip
+        pairs = zip(
+            self.by_name[name].times(clock), self.by_name[baseline].times(clock), strict=True
+        )
         return statistics.median(value / base for value, base in pairs)
 
     def best_ratio(self, name: str, baseline: str, clock: str | None = None) -> float:
@@ -96,13 +97,16 @@ class Timings:
         text = f"{CLOCK_WORDS[self.clock]}, best of {self.rounds} interleaved rounds{per_call}; "
         if self.clock == "cpu":
             text += f"median per-round ratio {self.round_ratio(name, baseline):.2f}x"
-            if self.rounds >= 3 and not _agree(self.best_ratio(name, baseline),
-                                               self.round_ratio(name, baseline)):  # fmt: skip
+            if self.rounds >= 3 and not _agree(
+                self.best_ratio(name, baseline), self.round_ratio(name, baseline)
+            ):
                 text += " (they disagree: the machine was busy, trust neither much)"
             return text
-        return (text + f"ratio = median of the per-round ratios (best over best "
-                f"{self.best_ratio(name, baseline):.2f}x; by CPU time "
-                f"{self.best_ratio(name, baseline, 'cpu'):.2f}x)")  # fmt: skip
+        return (
+            text + f"ratio = median of the per-round ratios (best over best "
+            f"{self.best_ratio(name, baseline):.2f}x; by CPU time "
+            f"{self.best_ratio(name, baseline, 'cpu'):.2f}x)"
+        )
 
     def clock_words(self, calls: int = 1) -> str:
         per_call = f", {calls:,} calls a round" if calls > 1 else ""
@@ -113,8 +117,13 @@ def _agree(first: float, second: float, tolerance: float = 0.25) -> bool:
     return abs(first - second) <= tolerance * max(first, second)
 
 
-def interleaved(candidates: Mapping[str, Callable[[], object]], rounds: int, calls: int = 1,
-                clock: str = "cpu", warm_up: bool = True) -> Timings:  # fmt: skip
+def interleaved(
+    candidates: Mapping[str, Callable[[], object]],
+    rounds: int,
+    calls: int = 1,
+    clock: str = "cpu",
+    warm_up: bool = True,
+) -> Timings:
     """Time each candidate ``calls`` times a round for ``rounds`` rounds, interleaved.
 
     Both clocks are read; ``clock`` (``"cpu"`` or ``"wall"``) is the one the rows judge by.
@@ -136,8 +145,9 @@ def interleaved(candidates: Mapping[str, Callable[[], object]], rounds: int, cal
                 function()
             wall[name].append((time.perf_counter() - wall_start) / calls)
             cpu[name].append((cpu_time() - cpu_start) / calls)
-    return Timings({name: Timing(tuple(cpu[name]), tuple(wall[name])) for name in names},
-                   rounds, clock)  # fmt: skip
+    return Timings(
+        {name: Timing(tuple(cpu[name]), tuple(wall[name])) for name in names}, rounds, clock
+    )
 
 
 # --- rows of the table ----------------------------------------------------------------------------
@@ -198,13 +208,19 @@ def count(value: int) -> str:
 
 def markdown(sections: list[Section]) -> str:
     """The table: one header, each section's rows under a bold section line."""
-    lines = ["| " + " | ".join(COLUMNS) + " |",
-             "| --- | ---: | ---: | ---: | --- | --- | --- |"]  # fmt: skip
+    lines = ["| " + " | ".join(COLUMNS) + " |", "| --- | ---: | ---: | ---: | --- | --- | --- |"]
     for section in sections:
         lines.append(f"| **{section.title}** |  |  |  |  |  |  |")
         for row in section.rows:
-            cells = (row.measure, row.measured, row.baseline, row.ratio, row.target, row.met,
-                     row.how)  # fmt: skip
+            cells = (
+                row.measure,
+                row.measured,
+                row.baseline,
+                row.ratio,
+                row.target,
+                row.met,
+                row.how,
+            )
             lines.append("| " + " | ".join(cell.replace("|", "\\|") for cell in cells) + " |")
     return "\n".join(lines)
 
@@ -242,11 +258,15 @@ def machine(load_at_start: float | None, load_at_end: float | None) -> str:
     text = f"{cpu_model()}, {cores} cores; {versions()}."
     if load_at_start is not None and load_at_end is not None:
         busy = max(load_at_start, load_at_end)
-        text += (f" Load average {load_at_start:.2f} at the start and {load_at_end:.2f} at the "
-                 f"end of the run")  # fmt: skip
+        text += (
+            f" Load average {load_at_start:.2f} at the start and {load_at_end:.2f} at the "
+            f"end of the run"
+        )
         if busy > 0.5 * cores:
-            text += (f": other work shared the {cores} cores, so absolute times are pessimistic "
-                     "and ratios are the figures to read (each from interleaved rounds in one "
-                     "process)")  # fmt: skip
+            text += (
+                f": other work shared the {cores} cores, so absolute times are pessimistic "
+                "and ratios are the figures to read (each from interleaved rounds in one "
+                "process)"
+            )
         text += "."
     return text

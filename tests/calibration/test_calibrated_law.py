@@ -83,8 +83,10 @@ def _check_stick_boundaries(name: str, calibrated: CalibratedLaw, eta_sigma2: fl
         # the data do not decide whether a partial-slip state exists, and the refusal says so.
         assert "the data cannot resolve this load step" in str(refusal), refusal
         return
-    for side, b_ref, b in (("right", reference.b_paper, core.b),
-                           ("left", reference.left.b_paper, core.left.b)):
+    for side, b_ref, b in (
+        ("right", reference.b_paper, core.b),
+        ("left", reference.left.b_paper, core.left.b),
+    ):
         error = calibrated.error_of(lambda law, side=side: slip_zone(law, cycle, MU, edge=side).b)
         assert abs(b - b_ref) <= error, side
 
@@ -210,12 +212,15 @@ def test_a_receding_edge_is_refused_as_outside_the_model():
         CalibratedLaw(calibration)
 
 
-@pytest.mark.parametrize(("call", "words"), [
-    (lambda edge: edge.half_width(-1.0), "P: must be > 0"),
-    (lambda edge: edge.normal_multiplier(np.nan), "P: must be finite"),
-    (lambda edge: edge.shear_multiplier(0.0, 0.2, 0.0), "P: must be > 0"),
-    (lambda edge: edge.half_width_growth(100.0, -1.0), "dP: must be >= 0"),
-])  # fmt: skip
+@pytest.mark.parametrize(
+    ("call", "words"),
+    [
+        (lambda edge: edge.half_width(-1.0), "P: must be > 0"),
+        (lambda edge: edge.normal_multiplier(np.nan), "P: must be finite"),
+        (lambda edge: edge.shear_multiplier(0.0, 0.2, 0.0), "P: must be > 0"),
+        (lambda edge: edge.half_width_growth(100.0, -1.0), "dP: must be >= 0"),
+    ],
+)
 def test_loads_a_law_cannot_take_are_refused_by_name(call, words):
     edge = _law("hertz", "uniform", 50, 0.0, seed=3).for_edge("right")
     with pytest.raises(InputError, match=words):

@@ -38,8 +38,10 @@ def points():
 
 @pytest.fixture(scope="session")
 def numpy_values(points):
-    return {name: np.asarray(getattr(asymslip_gen, name)(*args.values()), dtype=np.float64)
-            for name, args in points.items()}  # fmt: skip
+    return {
+        name: np.asarray(getattr(asymslip_gen, name)(*args.values()), dtype=np.float64)
+        for name, args in points.items()
+    }
 
 
 def _in(language):

@@ -60,10 +60,24 @@ class Draw:
             mu * (L_I1 + L_I2) + L_II1 - L_II2
         )
         return {
-            "R": R, "E_star": E_star, "P1": P1, "dP": dP, "mu": mu, "lam": lam, "eta": eta,
-            "a1": a1, "a2": a2, "da": da, "L_I1": L_I1, "L_I2": L_I2, "L_II1": L_II1,
-            "L_II2": L_II2, "b": b, "da_dP": a1 / (2 * P1), "P_K": P1 + dP * (mu - lam) / (2 * mu),
-        }  # fmt: skip
+            "R": R,
+            "E_star": E_star,
+            "P1": P1,
+            "dP": dP,
+            "mu": mu,
+            "lam": lam,
+            "eta": eta,
+            "a1": a1,
+            "a2": a2,
+            "da": da,
+            "L_I1": L_I1,
+            "L_I2": L_I2,
+            "L_II1": L_II1,
+            "L_II2": L_II2,
+            "b": b,
+            "da_dP": a1 / (2 * P1),
+            "P_K": P1 + dP * (mu - lam) / (2 * mu),
+        }
 
     def no_tension_cycle(self) -> Points:
         points = self.cycle()
@@ -93,10 +107,16 @@ class Draw:
         a = self.log_uniform(0.01, 100.0)
         x = a * self.uniform(-1.2, 1.2)
         return {
-            "n": n, "K": K, "A": self.log_uniform(0.01, 10.0), "E_star": self.log_uniform(1.0, 1e3),
-            "a": a, "x": x, "P": self.log_uniform(0.01, 1e4), "P1": self.log_uniform(1.0, 1e3),
+            "n": n,
+            "K": K,
+            "A": self.log_uniform(0.01, 10.0),
+            "E_star": self.log_uniform(1.0, 1e3),
+            "a": a,
+            "x": x,
+            "P": self.log_uniform(0.01, 1e4),
+            "P1": self.log_uniform(1.0, 1e3),
             "hypergeometric": self.uniform(0.5, 2.0),
-        }  # fmt: skip
+        }
 
     def flat_rounded(self) -> Points:
         """A flat punch with rounded corners: a > c >= 0 (c/a up to 0.95, see its doc)."""
@@ -104,10 +124,14 @@ class Draw:
         c = a * self.uniform(0.0, 0.95)
         chord = np.sqrt((a - c) * (a + c))  # D = sqrt(a^2 - c^2)
         return {
-            "a": a, "c": c, "R": self.log_uniform(0.1, 10.0),
-            "E_star": self.log_uniform(1.0, 1e3), "x": a * self.uniform(-1.2, 1.2),
-            "D": chord, "psi": np.arctan2(chord, c),  # psi = arccos(c/a)
-        }  # fmt: skip
+            "a": a,
+            "c": c,
+            "R": self.log_uniform(0.1, 10.0),
+            "E_star": self.log_uniform(1.0, 1e3),
+            "x": a * self.uniform(-1.2, 1.2),
+            "D": chord,
+            "psi": np.arctan2(chord, c),  # psi = arccos(c/a)
+        }
 
     def away_from(self, points: np.ndarray, scale: np.ndarray, gap: float) -> np.ndarray:
         """``points`` with those closer than ``gap * scale`` to 0 moved out to that distance."""
@@ -180,8 +204,11 @@ def _pressures(draw: Draw) -> Points:
     points = draw.no_tension_cycle()
     x = points["a2"] * draw.uniform(-1.2, 1.2)
     R, E_star = points["R"], points["E_star"]
-    for key, load in (("p2", points["P1"] + points["dP"]), ("p1", points["P1"]),
-                      ("p_K", points["P_K"])):  # fmt: skip
+    for key, load in (
+        ("p2", points["P1"] + points["dP"]),
+        ("p1", points["P1"]),
+        ("p_K", points["P_K"]),
+    ):
         a = np.sqrt(4 * R * load / (np.pi * E_star))  # (29)
         points[key] = E_star / (2 * R) * np.sqrt(np.maximum(0.0, a**2 - x**2))  # (48)
     return points
@@ -220,14 +247,19 @@ def _influence(draw: Draw) -> Points:
     """Solver kernels: integer offsets k of a grid of up to 8000 elements, ell >= its length/4."""
     h = draw.log_uniform(1e-4, 1.0)
     return {
-        "k": np.round(draw.uniform(-8000.0, 8000.0)), "h": h, "ell": h * draw.uniform(100, 20000),
+        "k": np.round(draw.uniform(-8000.0, 8000.0)),
+        "h": h,
+        "ell": h * draw.uniform(100, 20000),
         "E_star": draw.log_uniform(1.0, 1e3),
-    }  # fmt: skip
+    }
 
 
 def _tension(draw: Draw) -> Points:
-    return {"x": draw.uniform(-100.0, 100.0), "sigma": draw.uniform(-1e3, 1e3),
-            "E_star": draw.log_uniform(1.0, 1e3)}  # fmt: skip
+    return {
+        "x": draw.uniform(-100.0, 100.0),
+        "sigma": draw.uniform(-1e3, 1e3),
+        "E_star": draw.log_uniform(1.0, 1e3),
+    }
 
 
 def _asymmetric_edges(draw: Draw) -> Points:

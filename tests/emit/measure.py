@@ -29,8 +29,10 @@ def main() -> None:
     points = {
         name: sample(name, args, POINTS_PER_FUNCTION) for name, (args, _) in FUNCTIONS.items()
     }
-    reference = {name: np.asarray(getattr(asymslip_gen, name)(*p.values()), dtype=np.float64)
-                 for name, p in points.items()}  # fmt: skip
+    reference = {
+        name: np.asarray(getattr(asymslip_gen, name)(*p.values()), dtype=np.float64)
+        for name, p in points.items()
+    }
     with tempfile.TemporaryDirectory() as scratch:
         folder = Path(scratch)
         start = time.perf_counter()
@@ -45,15 +47,21 @@ def main() -> None:
         called = time.perf_counter()
         values["MATLAB/Octave"] = octave_evaluate(points, folder)
         octave = time.perf_counter()
-    print(f"build C {built_c - start:.2f} s, build Fortran {built_f - built_c:.2f} s, "
-          f"ctypes calls {called - built_f:.2f} s, Octave {octave - called:.2f} s")  # fmt: skip
+    print(
+        f"build C {built_c - start:.2f} s, build Fortran {built_f - built_c:.2f} s, "
+        f"ctypes calls {called - built_f:.2f} s, Octave {octave - called:.2f} s"
+    )
     for language, results in values.items():
-        worst = {name: float(relative_difference(results[name], reference[name]).max())
-                 for name in results}  # fmt: skip
+        worst = {
+            name: float(relative_difference(results[name], reference[name]).max())
+            for name in results
+        }
         name = max(worst, key=worst.get)
         exact = sum(value == 0 for value in worst.values())
-        print(f"{language}: largest relative difference {worst[name]:.2e} ({name}); "
-              f"{exact} of {len(worst)} functions bit-identical at every point")
+        print(
+            f"{language}: largest relative difference {worst[name]:.2e} ({name}); "
+            f"{exact} of {len(worst)} functions bit-identical at every point"
+        )
         for item in sorted(worst, key=worst.get, reverse=True)[:5]:
             print(f"    {item}: {worst[item]:.2e}")
 

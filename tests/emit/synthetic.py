@@ -29,13 +29,21 @@ SOURCE = "derivations/synthetic.py"
 
 
 def _formula(name: str, expr: sympy.Expr, args=ARGS, module: str = "synthetic") -> Formula:
-    return Formula(name=name, args=args, expr=expr, equations=("15",), summary=f"{name}.",
-                   doc="For the printer tests.", module=module, source=SOURCE)  # fmt: skip
+    return Formula(
+        name=name,
+        args=args,
+        expr=expr,
+        equations=("15",),
+        summary=f"{name}.",
+        doc="For the printer tests.",
+        module=module,
+        source=SOURCE,
+    )
 
 
 FORMULAS = (
     _formula("clamped_root", sympy.sqrt(sympy.Max(0, a - x)) + sympy.Min(0, x, a - 2 * A)),
-    _formula("powers", x**2 / a + a**-3 * A**sympy.Rational(3, 4) + 1 / (a + A) + a ** (1 / n)),
+    _formula("powers", x**2 / a + a**-3 * A ** sympy.Rational(3, 4) + 1 / (a + A) + a ** (1 / n)),
     _formula("constants", sympy.pi * x / 4 + sympy.Rational(2, 3) * a - sympy.sqrt(2) * A),
     _formula("signs", sympy.sign(x) * sympy.Abs(x) ** sympy.Rational(3, 2) + sympy.atan2(x, a)),
     _formula("accurate_logs", log1p(sympy.Abs(x) / a) + expm1(-A / (a + A)) * n),

@@ -55,10 +55,13 @@ def reference():
 @pytest.mark.parametrize("language", [language.name for language in LANGUAGES])
 def test_a_special_function_no_target_has_is_left_out_with_a_note(language, rendered):
     folder, result = rendered[language]
-    assert result.left_out == {"needs_zeta": "needs zeta (the Riemann zeta function), which "
-                               + {"C": "C99's <math.h>", "Fortran": "Fortran 2008",
-                                  "MATLAB/Octave": "MATLAB/Octave"}[language]
-                               + " does not provide"}  # fmt: skip
+    assert result.left_out == {
+        "needs_zeta": "needs zeta (the Riemann zeta function), which "
+        + {"C": "C99's <math.h>", "Fortran": "Fortran 2008", "MATLAB/Octave": "MATLAB/Octave"}[
+            language
+        ]
+        + " does not provide"
+    }
     assert "needs_zeta" not in result.functions
     text = "\n".join(path.read_text() for path in sorted(folder.iterdir()))
     flat = " ".join(text.replace("`", "").split())

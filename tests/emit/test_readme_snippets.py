@@ -22,7 +22,7 @@ SECTION = "## The formulas in C, Fortran and MATLAB/Octave"
 
 def _blocks(language):
     text = (ROOT / "README.md").read_text()
-    section = text[text.index(SECTION):]
+    section = text[text.index(SECTION) :]
     section = section[: section.find("\n## ", 1) if "\n## " in section[1:] else len(section)]
     return re.findall(rf"```{language}\n(.*?)```", section, re.DOTALL)
 
@@ -41,8 +41,9 @@ def _build_and_run(tmp_path, source_name, language, command_index):
     (code,) = _blocks(language)
     (tmp_path / source_name).write_text(code)
     command = _blocks("sh")[command_index].strip()
-    completed = subprocess.run(["bash", "-c", command], cwd=tmp_path, capture_output=True,
-                               text=True, timeout=300)  # fmt: skip
+    completed = subprocess.run(
+        ["bash", "-c", command], cwd=tmp_path, capture_output=True, text=True, timeout=300
+    )
     assert completed.returncode == 0, completed.stderr
     return completed.stdout
 
@@ -66,9 +67,13 @@ def test_the_readme_matlab_example_runs_in_octave_and_gives_numpys_stick_boundar
     (tmp_path / "generated").symlink_to(GENERATED)
     (code,) = _blocks("matlab")
     script = code + "fprintf('%.17g\\n', b);\n"
-    completed = subprocess.run([octave, "--no-gui", "--norc", "--quiet", "--eval", script],
-                               cwd=tmp_path, capture_output=True, text=True,
-                               timeout=300)  # fmt: skip
+    completed = subprocess.run(
+        [octave, "--no-gui", "--norc", "--quiet", "--eval", script],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert completed.returncode == 0, completed.stderr
     values = np.array([float(line) for line in completed.stdout.splitlines()[-3:]])
     np.testing.assert_allclose(values, _fig5([0.1, 0.05, 0.02]), rtol=1e-15)

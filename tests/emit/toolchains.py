@@ -30,8 +30,16 @@ C_FLAGS = ["-std=c99", "-pedantic", "-Wall", "-Wextra", "-Werror", "-O2", "-ffp-
 #: The two warnings switched off are by design: a formula may ignore an argument (the
 #: functions keep the NumPy argument list, and Fortran has no "(void)x" idiom), and NumPy's
 #: sign(x) is 0 exactly at x == 0, which gfortran flags as a real equality test.
-FORTRAN_FLAGS = ["-std=f2008", "-Wall", "-Wextra", "-Werror", "-Wno-unused-dummy-argument",
-                 "-Wno-compare-reals", "-O2", "-ffp-contract=off"]  # fmt: skip
+FORTRAN_FLAGS = [
+    "-std=f2008",
+    "-Wall",
+    "-Wextra",
+    "-Werror",
+    "-Wno-unused-dummy-argument",
+    "-Wno-compare-reals",
+    "-O2",
+    "-ffp-contract=off",
+]
 
 
 def require(tool: str) -> str:
@@ -46,8 +54,9 @@ def require(tool: str) -> str:
 
 
 def run(command: Sequence[str], cwd: Path | None = None, timeout: float = 300) -> str:
-    completed = subprocess.run(list(command), cwd=cwd, capture_output=True, text=True,
-                               timeout=timeout)  # fmt: skip
+    completed = subprocess.run(
+        list(command), cwd=cwd, capture_output=True, text=True, timeout=timeout
+    )
     assert completed.returncode == 0, (
         f"{' '.join(map(str, command))} failed:\n{completed.stdout}\n{completed.stderr}"
     )
@@ -65,8 +74,19 @@ def build_fortran_library(folder: Path, source: Path = FORTRAN_SOURCE) -> ctypes
     compiler = require("gfortran")
     library = folder / "libasymslip_gen_f.so"
     # -J: the .mod file goes to the scratch folder, not the working directory.
-    run([compiler, *FORTRAN_FLAGS, "-fPIC", "-shared", "-J", str(folder), str(source),
-         "-o", str(library)])  # fmt: skip
+    run(
+        [
+            compiler,
+            *FORTRAN_FLAGS,
+            "-fPIC",
+            "-shared",
+            "-J",
+            str(folder),
+            str(source),
+            "-o",
+            str(library),
+        ]
+    )
     return ctypes.CDLL(str(library))
 
 
@@ -113,8 +133,10 @@ def octave_evaluate(
         "  fclose(fid);\n"
         "end\n"
     )
-    run([octave, "--no-gui", "--norc", "--quiet", "--no-window-system", str(script.name)],
-        cwd=folder)  # fmt: skip
+    run(
+        [octave, "--no-gui", "--norc", "--quiet", "--no-window-system", str(script.name)],
+        cwd=folder,
+    )
     return {name: np.fromfile(folder / f"{name}.out", dtype="<f8") for name in names}
 
 

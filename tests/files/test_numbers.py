@@ -11,12 +11,51 @@ import pytest
 from asymslip.files.numbers import WIDTH, format_doubles
 
 ADVERSARIAL = [
-    0.0, -0.0, 5e-324, -5e-324, 1e-323, 2.2250738585072014e-308, 2.225073858507201e-308,
-    1.7976931348623157e308, -1.7976931348623157e308, 1e308, 1e-308, 0.1, 0.2, 0.3, 1 / 3, 2 / 3,
-    1e16, 1e15, 1e21, 1e22, 1e23, 9.999999999999999e22, 1e-7, 1e-6, 1e-5, 1e9, 1e10, 100.0,
-    123456789.5, 1234567890.5, 9007199254740993.0, 9007199254740992.0, 2.0**-25, 2.0**60,
-    2.0**-1022, 2.0**-1074, 5e-310, 4.35, 0.000123456789, 1.5, 2.5, 1e-300, 123e300, np.pi,
-]  # fmt: skip
+    0.0,
+    -0.0,
+    5e-324,
+    -5e-324,
+    1e-323,
+    2.2250738585072014e-308,
+    2.225073858507201e-308,
+    1.7976931348623157e308,
+    -1.7976931348623157e308,
+    1e308,
+    1e-308,
+    0.1,
+    0.2,
+    0.3,
+    1 / 3,
+    2 / 3,
+    1e16,
+    1e15,
+    1e21,
+    1e22,
+    1e23,
+    9.999999999999999e22,
+    1e-7,
+    1e-6,
+    1e-5,
+    1e9,
+    1e10,
+    100.0,
+    123456789.5,
+    1234567890.5,
+    9007199254740993.0,
+    9007199254740992.0,
+    2.0**-25,
+    2.0**60,
+    2.0**-1022,
+    2.0**-1074,
+    5e-310,
+    4.35,
+    0.000123456789,
+    1.5,
+    2.5,
+    1e-300,
+    123e300,
+    np.pi,
+]
 
 
 def texts(values) -> list[str]:
@@ -40,8 +79,11 @@ def shortest_in_arrow_layout(value: float) -> str:
     mantissa, _, power = repr(abs(value)).partition("e")
     whole, _, part = mantissa.partition(".")
     digits = (whole + part).lstrip("0")
-    exponent = int(power or 0) + len(whole.lstrip("0")) - 1 if whole.strip("0") else \
-        int(power or 0) - (len(part) - len(part.lstrip("0"))) - 1  # fmt: skip
+    exponent = (
+        int(power or 0) + len(whole.lstrip("0")) - 1
+        if whole.strip("0")
+        else int(power or 0) - (len(part) - len(part.lstrip("0"))) - 1
+    )
     digits = digits.rstrip("0")
     if -6 <= exponent < 10:
         if exponent < 0:
@@ -66,9 +108,15 @@ def test_random_doubles_of_every_exponent_read_back_identically():
 
 
 def test_text_is_the_shortest_round_trip_digits_in_arrows_layout():
-    values = np.concatenate([ADVERSARIAL, random_doubles(20_000, seed=2),
-                             np.ldexp(1.0, np.arange(-1074, 1024)),  # every power of two
-                             np.arange(1.0, 5_001.0), np.round(np.linspace(0, 1, 5001), 4)])
+    values = np.concatenate(
+        [
+            ADVERSARIAL,
+            random_doubles(20_000, seed=2),
+            np.ldexp(1.0, np.arange(-1074, 1024)),  # every power of two
+            np.arange(1.0, 5_001.0),
+            np.round(np.linspace(0, 1, 5001), 4),
+        ]
+    )
     expected = [shortest_in_arrow_layout(value) for value in values.tolist()]
     assert texts(values) == expected
 
@@ -98,8 +146,14 @@ def test_pyarrow_csv_writer_round_trips_every_double():
 def test_numpy_formatter_gives_pyarrows_bytes():
     pa = pytest.importorskip("pyarrow")
     pcsv = pytest.importorskip("pyarrow.csv")
-    values = np.concatenate([ADVERSARIAL, random_doubles(60_000, seed=4),
-                             np.ldexp(1.0, np.arange(-1074, 1024)), [np.inf, -np.inf]])
+    values = np.concatenate(
+        [
+            ADVERSARIAL,
+            random_doubles(60_000, seed=4),
+            np.ldexp(1.0, np.arange(-1074, 1024)),
+            [np.inf, -np.inf],
+        ]
+    )
     sink = io.BytesIO()
     pcsv.write_csv(pa.table({"x": values}), sink, pcsv.WriteOptions(include_header=False))
     assert sink.getvalue().decode().split("\n")[:-1] == texts(values)

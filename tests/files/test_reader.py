@@ -8,8 +8,12 @@ import pytest
 from asymslip.errors import InputError
 from asymslip.files import arrow, read_table
 
-ENGINES = ["numpy", pytest.param("pyarrow", marks=pytest.mark.skipif(
-    not arrow.available(), reason="pyarrow not installed"))]  # fmt: skip
+ENGINES = [
+    "numpy",
+    pytest.param(
+        "pyarrow", marks=pytest.mark.skipif(not arrow.available(), reason="pyarrow not installed")
+    ),
+]
 REQUIRED = ["P1", "Q1", "P2", "Q2"]
 NUMERIC = ["sigma1", "sigma2", "mu"]
 
@@ -32,9 +36,12 @@ nan-load,nan,-inf,105,1e400,0,0,0.1
 
 """
 LINES = [4, 5, 7, 8, 9, 11, 12, 13, 14]
-ERRORS = {1: "Q1: 'abc' is not a number",
-          5: "line has 4 fields, the header has 8: 'short,100,0,105'",
-          6: "P1: missing value", 7: "mu: 'nan(1)' is not a number"}  # fmt: skip
+ERRORS = {
+    1: "Q1: 'abc' is not a number",
+    5: "line has 4 fields, the header has 8: 'short,100,0,105'",
+    6: "P1: missing value",
+    7: "mu: 'nan(1)' is not a number",
+}
 
 
 def read(tmp_path, text: str | bytes, engine: str, **options):
@@ -89,9 +96,27 @@ def test_both_engines_read_the_same_table(tmp_path):
     if not arrow.available():
         pytest.skip("pyarrow not installed")
     rng = np.random.default_rng(5)
-    good = ["1", "-2.5", "+3", ".5", "5.", "1e5", "1E-5", "1e+05", "-0", " 7 ", "\t8", "inf",
-            "-Infinity", "NaN", "+nan", "0001.2500", "1e400", "1e-400",
-            repr(float(rng.standard_normal()))]  # fmt: skip
+    good = [
+        "1",
+        "-2.5",
+        "+3",
+        ".5",
+        "5.",
+        "1e5",
+        "1E-5",
+        "1e+05",
+        "-0",
+        " 7 ",
+        "\t8",
+        "inf",
+        "-Infinity",
+        "NaN",
+        "+nan",
+        "0001.2500",
+        "1e400",
+        "1e-400",
+        repr(float(rng.standard_normal())),
+    ]
     bad = ["abc", "1_000", "0x10", "1d5", "nan(2)", "1e", "e5", "--1", "1.2.3", "١", "1 2", "."]
     tokens = good + bad + [""]
     rows = ["P1,Q1,P2,Q2,mu,label"]
@@ -102,15 +127,18 @@ def test_both_engines_read_the_same_table(tmp_path):
             rows.append("")
     path = tmp_path / "fuzz.csv"
     path.write_text("\n".join(rows) + "\n")
-    tables = [read_table(path, required=REQUIRED, numeric=["mu"], engine=engine)
-              for engine in ("numpy", "pyarrow")]  # fmt: skip
+    tables = [
+        read_table(path, required=REQUIRED, numeric=["mu"], engine=engine)
+        for engine in ("numpy", "pyarrow")
+    ]
     numpy, pyarrow = tables
     assert numpy.errors == pyarrow.errors and len(numpy.errors) > 2000
     assert numpy.line.tolist() == pyarrow.line.tolist()
     for name in [*REQUIRED, "mu"]:
-        assert np.array_equal(numpy.values[name].view(np.uint64) * ~np.isnan(numpy.values[name]),
-                              pyarrow.values[name].view(np.uint64)
-                              * ~np.isnan(pyarrow.values[name]))  # fmt: skip
+        assert np.array_equal(
+            numpy.values[name].view(np.uint64) * ~np.isnan(numpy.values[name]),
+            pyarrow.values[name].view(np.uint64) * ~np.isnan(pyarrow.values[name]),
+        )
         assert np.array_equal(np.isnan(numpy.values[name]), np.isnan(pyarrow.values[name]))
         assert numpy.empty[name].tolist() == pyarrow.empty[name].tolist()
         assert numpy.text[name].to_list() == pyarrow.text[name].to_list()
@@ -129,16 +157,22 @@ def test_numbers_are_read_correctly_rounded(tmp_path, engine):
 
 
 @pytest.mark.parametrize("engine", ENGINES)
-@pytest.mark.parametrize(("text", "message"), [
-    (b"", r"^cases: .*cases\.csv: has no header: it needs a header row naming P1, Q1, P2, Q2$"),
-    (b"\n# only a comment\n\n", r"has no header"),
-    (b"P1,Q1,P2\n1,2,3\n", r"cases\.csv: line 1: the header has no column Q2 \(found P1, Q1, P2\)"),
-    (b"\n\nP1,Q1,P2,Q2,P1\n", r"cases\.csv: line 3: column P1 appears twice in the header"),
-    (b"P1,,Q1,P2,Q2\n", r"line 1: column 2 of the header has no name"),
-    (b"P1,Q1,P2,Q2\n1,2,3,4\n5,\"6,7,8\n", r"line 3: a quoted field is never closed"),
-    (b"P1,Q1,P2,Q2\n1,2,3,4\n1,2\x00,3,4\n", r"line 3: holds a NUL byte"),
-    (b"P1,Q1,P2,Q2\n1,2,3,4\n\xff,2,3,4\n", r"line 3: is not UTF-8 text"),
-])  # fmt: skip
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        (b"", r"^cases: .*cases\.csv: has no header: it needs a header row naming P1, Q1, P2, Q2$"),
+        (b"\n# only a comment\n\n", r"has no header"),
+        (
+            b"P1,Q1,P2\n1,2,3\n",
+            r"cases\.csv: line 1: the header has no column Q2 \(found P1, Q1, P2\)",
+        ),
+        (b"\n\nP1,Q1,P2,Q2,P1\n", r"cases\.csv: line 3: column P1 appears twice in the header"),
+        (b"P1,,Q1,P2,Q2\n", r"line 1: column 2 of the header has no name"),
+        (b'P1,Q1,P2,Q2\n1,2,3,4\n5,"6,7,8\n', r"line 3: a quoted field is never closed"),
+        (b"P1,Q1,P2,Q2\n1,2,3,4\n1,2\x00,3,4\n", r"line 3: holds a NUL byte"),
+        (b"P1,Q1,P2,Q2\n1,2,3,4\n\xff,2,3,4\n", r"line 3: is not UTF-8 text"),
+    ],
+)
 def test_file_level_problems_raise_naming_the_file_and_line(tmp_path, engine, text, message):
     with pytest.raises(InputError, match=message) as raised:
         read(tmp_path, text, engine)

@@ -12,10 +12,19 @@ from asymslip.errors import InputError
 from asymslip.files import Categorical, TextColumn, arrow, open_table, refuse_same_file
 from asymslip.files.writer import table_format
 
-ENGINES = ["numpy", pytest.param("pyarrow", marks=pytest.mark.skipif(
-    not arrow.available(), reason="pyarrow not installed"))]  # fmt: skip
-SCHEMA = [("case", "text"), ("b", "float"), ("width", "float"), ("warnings", "category"),
-          ("error", "text")]  # fmt: skip
+ENGINES = [
+    "numpy",
+    pytest.param(
+        "pyarrow", marks=pytest.mark.skipif(not arrow.available(), reason="pyarrow not installed")
+    ),
+]
+SCHEMA = [
+    ("case", "text"),
+    ("b", "float"),
+    ("width", "float"),
+    ("warnings", "category"),
+    ("error", "text"),
+]
 AWKWARD = ["plain", "a,b", 'say "hi"', "two\nlines", "cr\r", "", " spaced ", "ünïcode"]
 
 
@@ -26,9 +35,10 @@ def chunk(rows: int = len(AWKWARD)) -> dict:
         "b": np.linspace(-1, 1, rows) / 3,
         "width": np.where(np.arange(rows) % 3 == 0, np.nan, 1e-7 * np.arange(rows)),
         "warnings": Categorical(np.arange(rows) % 3 - 1, ["eq24 = 0.2 > 0.1", "a, with comma"]),
-        "error": TextColumn.from_strings(["P2: must exceed P1" if i % 4 == 0 else ""
-                                          for i in range(rows)]),
-    }  # fmt: skip
+        "error": TextColumn.from_strings(
+            ["P2: must exceed P1" if i % 4 == 0 else "" for i in range(rows)]
+        ),
+    }
 
 
 def read_csv(path) -> list[list[str]]:

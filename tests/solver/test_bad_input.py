@@ -43,13 +43,16 @@ def test_gross_sliding_anywhere_on_the_path_is_refused_naming_the_point():
         solve(LAW, path, 0.3)
 
 
-@pytest.mark.parametrize("points, match", [
-    ([[100.0, 0.0]], "path: needs at least 2 points"),
-    ([[100.0, 0.0], [-5.0, 0.0]], r"path: P must be > 0 at every point \(point 2\)"),
-    ([[100.0, 0.0], [100.0, 0.0]], "path: all points are the same"),
-    ([[100.0], [105.0]], r"path: must be rows of \(P, Q"),
-    ([[100.0, 0.0], [105.0, float("nan")]], "path: must be finite"),
-])  # fmt: skip
+@pytest.mark.parametrize(
+    "points, match",
+    [
+        ([[100.0, 0.0]], "path: needs at least 2 points"),
+        ([[100.0, 0.0], [-5.0, 0.0]], r"path: P must be > 0 at every point \(point 2\)"),
+        ([[100.0, 0.0], [100.0, 0.0]], "path: all points are the same"),
+        ([[100.0], [105.0]], r"path: must be rows of \(P, Q"),
+        ([[100.0, 0.0], [105.0, float("nan")]], "path: must be finite"),
+    ],
+)
 def test_bad_paths_are_refused(points, match):
     with pytest.raises(InputError, match=match):
         LoadPath(np.array(points, dtype=float))
@@ -66,11 +69,14 @@ def test_a_law_without_a_profile_is_refused_with_the_way_out():
         solve(table, LoadCycle(2.0, 0.0, 2.1, 0.01), 0.3)
 
 
-@pytest.mark.parametrize("text, match", [
-    ("x**2/(2*R)", "profile: has names without values|profile: unknown name"),
-    ("__import__('os')", "profile"),
-    ("", "profile: is empty"),
-])  # fmt: skip
+@pytest.mark.parametrize(
+    "text, match",
+    [
+        ("x**2/(2*R)", "profile: has names without values|profile: unknown name"),
+        ("__import__('os')", "profile"),
+        ("", "profile: is empty"),
+    ],
+)
 def test_bad_profile_formulas_are_refused(text, match):
     with pytest.raises(InputError, match=match):
         ExpressionProfile(text)
@@ -89,11 +95,14 @@ def test_a_contact_beyond_the_table_is_refused():
         solve(table, CYCLE, 0.1, E_star=1.0, elements=200)
 
 
-@pytest.mark.parametrize("x, h, match", [
-    ([0.0, 1.0], [0.0, 1.0], "profile: a table needs at least 3 points"),
-    ([0.0, 2.0, 1.0], [1.0, 0.0, 1.0], "profile: the table's x must be strictly increasing"),
-    ([0.0, 1.0, 2.0], [1.0, 0.0], "profile: the x and h columns must have the same length"),
-])  # fmt: skip
+@pytest.mark.parametrize(
+    "x, h, match",
+    [
+        ([0.0, 1.0], [0.0, 1.0], "profile: a table needs at least 3 points"),
+        ([0.0, 2.0, 1.0], [1.0, 0.0, 1.0], "profile: the table's x must be strictly increasing"),
+        ([0.0, 1.0, 2.0], [1.0, 0.0], "profile: the x and h columns must have the same length"),
+    ],
+)
 def test_bad_tables_are_refused(x, h, match):
     with pytest.raises(InputError, match=match):
         TableProfile(x, h)

@@ -56,8 +56,10 @@ def test_slope_of_the_element_kernel_is_the_flamant_point_force_slope():
     # ds/dx between elements: central difference of S(k) over 2h against the point-force
     # slope (2/(pi E*)) / u integrated over the element, (2/(pi E*)) ln((k + 1/2)/(k - 1/2)).
     k = np.arange(5, 40)
-    slope = (relative_slip_influence(k + 1, WIDTH, ELL, E_STAR)
-             - relative_slip_influence(k - 1, WIDTH, ELL, E_STAR)) / (2 * WIDTH)  # fmt: skip
+    slope = (
+        relative_slip_influence(k + 1, WIDTH, ELL, E_STAR)
+        - relative_slip_influence(k - 1, WIDTH, ELL, E_STAR)
+    ) / (2 * WIDTH)
     point = 2 / (np.pi * E_STAR) * np.log((k + 0.5) / (k - 0.5))
     # The central difference is second order: error ~ h^2 S'''/6 relative to the slope.
     assert np.allclose(slope, point, rtol=0.5 / k**2)
@@ -88,5 +90,6 @@ def test_tension_strain_is_plane_strain_bulk_strain_difference():
     sigma1, sigma2 = 40.0, 90.0
     strain = (1 - nu**2) * (sigma2 - sigma1) / E
     x = np.array([-2.0, 0.5, 3.0])
-    assert np.allclose(tension_relative_displacement(x, sigma2 - sigma1, E_star), strain * x,
-                       rtol=1e-15)  # fmt: skip
+    assert np.allclose(
+        tension_relative_displacement(x, sigma2 - sigma1, E_star), strain * x, rtol=1e-15
+    )

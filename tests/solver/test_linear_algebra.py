@@ -57,9 +57,12 @@ def test_circulant_preconditioner_keeps_the_iterations_flat_in_n():
         operators = InfluenceOperators(grid, 1.0)
         free = np.abs(grid.centres) < 0.9
         _, _, iterations = solve_constrained(
-            operators.gap, Runs.of(free), grid.centres[free] ** 2, np.ones((1, free.sum())),
+            operators.gap,
+            Runs.of(free),
+            grid.centres[free] ** 2,
+            np.ones((1, free.sum())),
             np.array([1.0]),
-        )  # fmt: skip
+        )
         counts.append(iterations)
     # Unpreconditioned CG needs ~80 and ~180 iterations here (log kernel, condition ~ N).
     assert max(counts) <= 20 and counts[1] <= counts[0] + 4
@@ -74,8 +77,15 @@ def _tangential_problem(seed: int) -> BoxQP:
     stiffness = OPERATORS.slip_stiffness
     old = np.where(contact, rng.uniform(-1, 1, GRID.count) * capacity, 0.0)
     linear = stiffness.apply(old) + rng.standard_normal() * 0.05 * x
-    return BoxQP(stiffness, contact, -capacity, capacity, linear,
-                 np.full((1, GRID.count), GRID.width), np.array([0.1]))  # fmt: skip
+    return BoxQP(
+        stiffness,
+        contact,
+        -capacity,
+        capacity,
+        linear,
+        np.full((1, GRID.count), GRID.width),
+        np.array([0.1]),
+    )
 
 
 def _check_kkt(problem: BoxQP, solution) -> None:
@@ -126,10 +136,26 @@ def test_an_element_whose_gap_closes_halfway_through_a_step_is_in_contact_for_ha
     from asymslip.solver.tangential import contact_fractions
 
     compliance = 0.5
-    before = NormalState(1.0, 0.0, np.array([1.0, 0.0, 2.0]), np.array([True, False, True]),
-                         0.0, 0.0, 1, np.array([0.0, 0.25, 0.0]))  # fmt: skip
-    after = NormalState(1.0, 0.0, np.array([1.0, 0.5, 0.0]), np.array([True, True, False]),
-                        0.0, 0.0, 1, np.array([0.0, 0.0, 3.0]))  # fmt: skip
+    before = NormalState(
+        1.0,
+        0.0,
+        np.array([1.0, 0.0, 2.0]),
+        np.array([True, False, True]),
+        0.0,
+        0.0,
+        1,
+        np.array([0.0, 0.25, 0.0]),
+    )
+    after = NormalState(
+        1.0,
+        0.0,
+        np.array([1.0, 0.5, 0.0]),
+        np.array([True, True, False]),
+        0.0,
+        0.0,
+        1,
+        np.array([0.0, 0.0, 3.0]),
+    )
     entering, leaving = contact_fractions(before, after, compliance)
     # gap 0.25 closing to an overlap 0.5 x 0.5 = 0.25: contact from t = 1/2
     assert entering.tolist() == [0.0, 0.5, 0.0]

@@ -28,8 +28,13 @@ LAWS = {
 }
 #: Largest |p - p_law| / max p over |x| < 0.95 a (measured at N = 1000: 8e-6, 2e-4, 2e-3 at
 #: the cusp of |x|^1.5, 1e-5; the wedge is checked away from its logarithmic apex).
-PRESSURE_TOLERANCE = {"hertz": 5e-5, "flat-rounded": 5e-4, "power n=1.5": 5e-3,
-                      "power n=3": 5e-5, "wedge n=1": 2e-3}  # fmt: skip
+PRESSURE_TOLERANCE = {
+    "hertz": 5e-5,
+    "flat-rounded": 5e-4,
+    "power n=1.5": 5e-3,
+    "power n=3": 5e-5,
+    "wedge n=1": 2e-3,
+}
 
 
 def normal_state(law, P: float, count: int = 1000, M: float = 0.0):
@@ -86,8 +91,9 @@ def test_tilted_punch_satisfies_the_continuum_contact_conditions():
     law = LAWS["power n=3"]
     P = float(law.load(2.0))
     M = 0.15 * P * 2.0  # the pressure's centre 0.3 off the axis, on a contact about 4 wide
-    result = solve(law, LoadPath([[P, 0.0, 0.0, M], [1.02 * P, 0.0, 0.0, M]]), 0.3,
-                   elements=1000, steps=2)  # fmt: skip
+    result = solve(
+        law, LoadPath([[P, 0.0, 0.0, M], [1.02 * P, 0.0, 0.0, M]]), 0.3, elements=1000, steps=2
+    )
     state = result.states[0]
     assert np.sum(result.x * state.pressure) * result.element_size == pytest.approx(M, rel=1e-10)
     assert state.tilt > 0 and state.right.a > 2.0 > state.left.a  # the contact moves to +x
@@ -98,10 +104,13 @@ def test_tilted_punch_satisfies_the_continuum_contact_conditions():
     for _ in range(30):
         residual = _continuum_conditions(law, *edges, state.tilt) - target
         step = 1e-7 * (edges[1] - edges[0])
-        jacobian = np.column_stack([
-            (_continuum_conditions(law, *(edges + step * e), state.tilt) - target - residual) / step
-            for e in np.eye(2)
-        ])  # fmt: skip
+        jacobian = np.column_stack(
+            [
+                (_continuum_conditions(law, *(edges + step * e), state.tilt) - target - residual)
+                / step
+                for e in np.eye(2)
+            ]
+        )
         change = np.linalg.solve(jacobian, -residual)
         edges += change
         if np.max(np.abs(change)) < 1e-12:
@@ -114,21 +123,27 @@ def test_mirrored_profile_and_moment_give_the_mirrored_contact():
     profile = ExpressionProfile("x**2/2 + x**3/20")
     mirrored = ExpressionProfile("x**2/2 - x**3/20")
     loads = [[3.0, 0.0, 0.0, 0.4], [3.2, 0.0, 0.0, 0.4]]
-    one = solve(profile, LoadPath(loads), 0.3, E_star=1.0, elements=400, steps=2,
-                domain=(-3, 3))  # fmt: skip
-    two = solve(mirrored, LoadPath(np.array(loads) * [1, 1, 1, -1]), 0.3, E_star=1.0,
-                elements=400, steps=2, domain=(-3, 3))  # fmt: skip
+    one = solve(profile, LoadPath(loads), 0.3, E_star=1.0, elements=400, steps=2, domain=(-3, 3))
+    two = solve(
+        mirrored,
+        LoadPath(np.array(loads) * [1, 1, 1, -1]),
+        0.3,
+        E_star=1.0,
+        elements=400,
+        steps=2,
+        domain=(-3, 3),
+    )
     assert np.allclose(one.states[0].pressure, two.states[0].pressure[::-1], atol=1e-12)
     assert one.states[0].tilt == pytest.approx(-two.states[0].tilt, rel=1e-9)
     assert one.states[0].right.a == pytest.approx(two.states[0].left.a, rel=1e-9)
 
 
-@pytest.mark.parametrize("law", [HertzLaw(1.0, 1.0), PowerLaw(0.5, 2.0, 1.0),
-                                 FlatRoundedLaw(0.0, 1.0, 1.0)])  # fmt: skip
+@pytest.mark.parametrize(
+    "law", [HertzLaw(1.0, 1.0), PowerLaw(0.5, 2.0, 1.0), FlatRoundedLaw(0.0, 1.0, 1.0)]
+)
 def test_a_cylinder_refuses_a_moment(law):
     with pytest.raises(InputError, match="M: a moment cannot be resisted.*cylinder"):
-        solve(law, LoadPath([[100.0, 0.0, 0.0, 5.0], [105.0, 1.0, 0.0, 5.0]]), 0.3,
-              elements=200)  # fmt: skip
+        solve(law, LoadPath([[100.0, 0.0, 0.0, 5.0], [105.0, 1.0, 0.0, 5.0]]), 0.3, elements=200)
 
 
 def test_a_profile_whose_contact_splits_is_refused():

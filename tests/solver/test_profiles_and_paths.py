@@ -24,8 +24,15 @@ CYCLE = LoadCycle(100.0, 0.0, 105.0, 1.0)
 
 def test_typed_profile_reproduces_the_hertz_law():
     law = solve(HERTZ, CYCLE, 0.1, elements=500, steps=5)
-    typed = solve(ExpressionProfile("x**2/(2*R)", {"R": 1.0}), CYCLE, 0.1, E_star=1.0,
-                  elements=500, steps=5, domain=(law.grid.start, law.grid.end))  # fmt: skip
+    typed = solve(
+        ExpressionProfile("x**2/(2*R)", {"R": 1.0}),
+        CYCLE,
+        0.1,
+        E_star=1.0,
+        elements=500,
+        steps=5,
+        domain=(law.grid.start, law.grid.end),
+    )
     assert np.allclose(typed.q_diff, law.q_diff, rtol=0, atol=1e-12)
     assert typed.right.b == pytest.approx(law.right.b, rel=1e-12)
 
@@ -108,8 +115,11 @@ def test_constant_load_fretting_cycle_has_the_classical_eccentric_stick_zone(Q0,
 def test_general_path_with_tension_and_moment_reaches_a_steady_state():
     law = PowerLaw(A=0.05, n=3.0, E_star=1.0)
     P = float(law.load(2.0))
-    points = [[P, 0.0, 0.0, 0.0], [1.08 * P, 0.05 * P, 0.02, 0.05 * P],
-              [1.04 * P, -0.03 * P, 0.05, -0.02 * P]]  # fmt: skip
+    points = [
+        [P, 0.0, 0.0, 0.0],
+        [1.08 * P, 0.05 * P, 0.02, 0.05 * P],
+        [1.04 * P, -0.03 * P, 0.05, -0.02 * P],
+    ]
     result = solve(law, LoadPath(points), 0.3, elements=600, steps=6)
     assert result.steady
     assert [s.label for s in result.states] == ["1", "2", "3"]

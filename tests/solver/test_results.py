@@ -27,8 +27,17 @@ def result():
 def test_dictionary_has_the_right_edge_on_top_and_the_left_under_left(result):
     data = json.loads(json.dumps(result.to_dict()))  # plain JSON types only
     for edge in (data, data["left"]):
-        for key in ("b", "b_error", "slip_direction", "a1", "a1_error", "a2", "a2_error",
-                    "b1", "b2"):  # fmt: skip
+        for key in (
+            "b",
+            "b_error",
+            "slip_direction",
+            "a1",
+            "a1_error",
+            "a2",
+            "a2_error",
+            "b1",
+            "b2",
+        ):
             assert key in edge
         assert edge["b_error"] >= data["solver"]["element_size"]
     assert data["b"] == result.right.b and data["left"]["b"] == result.left.b
@@ -46,8 +55,12 @@ def test_asymptotes_are_reported_with_their_difference_in_elements(result):
     assert entry["within_error"] is True
     data = compared.to_dict()
     assert set(data["asymptotes"]) == {
-        "b", "b_paper", "b_first_order", "b_corrective_stick", "b_exact"
-    }  # fmt: skip
+        "b",
+        "b_paper",
+        "b_first_order",
+        "b_corrective_stick",
+        "b_exact",
+    }
     assert set(data["left"]["asymptotes"]) == set(data["asymptotes"])
 
 
@@ -78,8 +91,9 @@ def test_outputs_are_written_and_read_back(result, tmp_path):
     assert not list((tmp_path / "out").glob(".*partial"))
 
 
-def test_missing_matplotlib_is_one_input_error_and_nothing_is_written(result, tmp_path,
-                                                                      monkeypatch):  # fmt: skip
+def test_missing_matplotlib_is_one_input_error_and_nothing_is_written(
+    result, tmp_path, monkeypatch
+):
     real_import = builtins.__import__
 
     def no_matplotlib(name, *args, **kwargs):
@@ -123,8 +137,11 @@ def test_refinement_brackets_the_exact_boundaries():
     refined = refine(LAW, cycle, 0.2, elements=250, levels=3, steps=4)
     assert [r.elements for r in refined.results] == [250, 500, 1000]
     assert len({(r.grid.start, r.grid.end) for r in refined.results}) == 1  # nested grids
-    exact = {"b": float(LAW.half_width((P1 + P2) / 2 - 2.5 / (2 * 0.2))),
-             "a1": float(LAW.half_width(P1)), "a2": float(LAW.half_width(P2))}  # fmt: skip
+    exact = {
+        "b": float(LAW.half_width((P1 + P2) / 2 - 2.5 / (2 * 0.2))),
+        "a1": float(LAW.half_width(P1)),
+        "a2": float(LAW.half_width(P2)),
+    }
     for key, value in exact.items():
         extrapolation = refined.right[key]
         assert abs(extrapolation.value - value) <= extrapolation.error
@@ -152,6 +169,7 @@ def test_the_solver_imports_neither_the_asymptotes_nor_an_optional_extra():
         "print(sorted(m for m in ('asymslip.slip_zones', 'matplotlib', 'sympy', 'scipy') "
         "if m in sys.modules))"
     )
-    completed = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                               check=True)  # fmt: skip
+    completed = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    )
     assert completed.stdout.strip() == "[]"

@@ -301,8 +301,9 @@ def calibrate(
         when an edge has data at one load only, or when the origin is outside the contact.
     """
     if noise is not None and not (math.isfinite(noise) and noise >= 0):
-        raise InputError("noise", "must be a finite number >= 0",
-                         noise if math.isfinite(noise) else None)  # never print inf or nan
+        raise InputError(
+            "noise", "must be a finite number >= 0", noise if math.isfinite(noise) else None
+        )  # never print inf or nan
     if origin is not None and not math.isfinite(origin):  # before the fits, not after them
         raise InputError("origin", "must be a finite number (not inf or nan)")
     fits: dict[Side, list[EdgeFit]] = {"right": [], "left": []}

@@ -171,8 +171,11 @@ def read_traces(path: str | Path, *, loads: Sequence[float] | None = None) -> Tr
     )
     if "," in first:
         if loads is not None:  # given for nothing would let a wrong guess pass unnoticed
-            raise InputError("loads", f"{path} is a CSV whose column P gives the loads: "
-                             "--loads is for an FE report without them")  # fmt: skip
+            raise InputError(
+                "loads",
+                f"{path} is a CSV whose column P gives the loads: "
+                "--loads is for an FE report without them",
+            )
         return _read_csv(path, text)
     return _read_report(path, text, loads)
 
@@ -365,7 +368,8 @@ def _assemble(
         if bad.any():
             row = int(np.flatnonzero(bad)[0])
             raise InputError(
-                "traces", f"{at(row)}: column {name}: is not a finite number"  # none printed
+                "traces",
+                f"{at(row)}: column {name}: is not a finite number",  # none printed
             )
     if (P <= 0).any():
         row = int(np.flatnonzero(P <= 0)[0])

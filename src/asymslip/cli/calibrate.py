@@ -22,16 +22,33 @@ def register(commands: argparse._SubParsersAction) -> None:
         "--calibration FILE.json in slip-zone, traction and sweep.",
     )
     calibrate.add_argument("traces", type=Path, metavar="TRACES", help="the pressure traces")
-    calibrate.add_argument("--loads", type=number, nargs="+", metavar="P",
-                           help="the load of each trace of an FE report (in file order)")
-    calibrate.add_argument("--origin", type=number, metavar="X",
-                           help="the point b and a are measured from (default: the contact "
-                           "centre at the smallest load)")  # fmt: skip
-    calibrate.add_argument("--noise", type=number, metavar="S",
-                           help="the pressure noise, if known (default: estimated from the data)")
+    calibrate.add_argument(
+        "--loads",
+        type=number,
+        nargs="+",
+        metavar="P",
+        help="the load of each trace of an FE report (in file order)",
+    )
+    calibrate.add_argument(
+        "--origin",
+        type=number,
+        metavar="X",
+        help="the point b and a are measured from (default: the contact "
+        "centre at the smallest load)",
+    )
+    calibrate.add_argument(
+        "--noise",
+        type=number,
+        metavar="S",
+        help="the pressure noise, if known (default: estimated from the data)",
+    )
     calibrate.add_argument("--json", action="store_true", help="print one JSON object")
-    calibrate.add_argument("--out", type=Path, metavar="FILE.json",
-                           help="save the calibration (for --law calibrated --calibration)")
+    calibrate.add_argument(
+        "--out",
+        type=Path,
+        metavar="FILE.json",
+        help="save the calibration (for --law calibrated --calibration)",
+    )
     calibrate.set_defaults(run=run)
 
 

@@ -52,33 +52,74 @@ def _module(args: argparse.Namespace) -> ContactLaw:
 
 
 LAWS: dict[str, LawEntry] = {
-    "hertz": LawEntry(("R", "E_star"), lambda a: HertzLaw(R=a.R, E_star=a.E_star),
-                      "cylinder of radius R, (29)"),
-    "flat-rounded": LawEntry(("c", "R", "E_star"),
-                             lambda a: FlatRoundedLaw(c=a.c, R=a.R, E_star=a.E_star),
-                             "flat punch of half-width c with corners of radius R"),
-    "power": LawEntry(("A", "n", "E_star"), lambda a: PowerLaw(A=a.A, n=a.n, E_star=a.E_star),
-                      "punch h = A |x|^n, n >= 1"),
+    "hertz": LawEntry(
+        ("R", "E_star"), lambda a: HertzLaw(R=a.R, E_star=a.E_star), "cylinder of radius R, (29)"
+    ),
+    "flat-rounded": LawEntry(
+        ("c", "R", "E_star"),
+        lambda a: FlatRoundedLaw(c=a.c, R=a.R, E_star=a.E_star),
+        "flat punch of half-width c with corners of radius R",
+    ),
+    "power": LawEntry(
+        ("A", "n", "E_star"),
+        lambda a: PowerLaw(A=a.A, n=a.n, E_star=a.E_star),
+        "punch h = A |x|^n, n >= 1",
+    ),
     "table": LawEntry(("table",), _table, "a(P) fitted to a CSV of (P, a) points"),
     "module": LawEntry(("module",), _module, "a law module written by `asymslip derive`"),
-    "calibrated": LawEntry(("calibration",), _calibrated,
-                           "each edge's own law from `asymslip calibrate --out FILE.json`"),
-}  # fmt: skip
+    "calibrated": LawEntry(
+        ("calibration",),
+        _calibrated,
+        "each edge's own law from `asymslip calibrate --out FILE.json`",
+    ),
+}
 
 #: API parameter name -> the option that sets it, for error messages.
 OPTION_OF = {
-    "P1": "--P1", "Q1": "--Q1", "P2": "--P2", "Q2": "--Q2", "sigma1": "--sigma1",
-    "sigma2": "--sigma2", "mu": "--mu", "R": "--R", "E_star": "--E-star", "law": "--law",
-    "edge": "--edge", "x": "--x", "b": "--b", "c": "--flat-half-width", "A": "--A", "n": "--n",
-    "table": "--table", "module": "--module", "param": "--param", "P_of_a": "--P-of-a",
-    "params": "--params", "name": "--name", "out": "--out", "check": "--check",
-    "check_a": "--check-a", "cases": "CASES", "chunk_rows": "--chunk-rows", "workers": "--workers",
+    "P1": "--P1",
+    "Q1": "--Q1",
+    "P2": "--P2",
+    "Q2": "--Q2",
+    "sigma1": "--sigma1",
+    "sigma2": "--sigma2",
+    "mu": "--mu",
+    "R": "--R",
+    "E_star": "--E-star",
+    "law": "--law",
+    "edge": "--edge",
+    "x": "--x",
+    "b": "--b",
+    "c": "--flat-half-width",
+    "A": "--A",
+    "n": "--n",
+    "table": "--table",
+    "module": "--module",
+    "param": "--param",
+    "P_of_a": "--P-of-a",
+    "params": "--params",
+    "name": "--name",
+    "out": "--out",
+    "check": "--check",
+    "check_a": "--check-a",
+    "cases": "CASES",
+    "chunk_rows": "--chunk-rows",
+    "workers": "--workers",
     "cycle": "the load cycle (--P1 --Q1 --P2 --Q2 --sigma1 --sigma2 --mu)",
-    "figure": "figure", "derive": "derive", "P": "--P1/--P2",
-    "calibration": "--calibration", "traces": "TRACES", "origin": "--origin", "noise": "--noise",
-    "loads": "--loads", "path": "--path", "profile": "--profile", "elements": "--elements",
-    "steps": "--steps", "profile_table": "--profile-table", "data": "--data",
-}  # fmt: skip
+    "figure": "figure",
+    "derive": "derive",
+    "P": "--P1/--P2",
+    "calibration": "--calibration",
+    "traces": "TRACES",
+    "origin": "--origin",
+    "noise": "--noise",
+    "loads": "--loads",
+    "path": "--path",
+    "profile": "--profile",
+    "elements": "--elements",
+    "steps": "--steps",
+    "profile_table": "--profile-table",
+    "data": "--data",
+}
 
 
 def add_law_options(parser: argparse.ArgumentParser) -> None:
@@ -86,30 +127,54 @@ def add_law_options(parser: argparse.ArgumentParser) -> None:
     group = parser.add_argument_group("contact law")
     listed = "; ".join(f"{name}: {entry.summary}" for name, entry in LAWS.items())
     group.add_argument("--law", default="hertz", help=f"contact law (default: hertz) -- {listed}")
-    group.add_argument("--R", type=number,
-                       help="cylinder radius (hertz) or corner radius (flat-rounded) [length]")
-    group.add_argument("--E-star", dest="E_star", type=number,
-                       help="plane-strain contact modulus E* [force/length^2]")
-    group.add_argument("--flat-half-width", dest="c", type=number,
-                       help="half-width c of the flat (flat-rounded) [length]")
+    group.add_argument(
+        "--R", type=number, help="cylinder radius (hertz) or corner radius (flat-rounded) [length]"
+    )
+    group.add_argument(
+        "--E-star",
+        dest="E_star",
+        type=number,
+        help="plane-strain contact modulus E* [force/length^2]",
+    )
+    group.add_argument(
+        "--flat-half-width",
+        dest="c",
+        type=number,
+        help="half-width c of the flat (flat-rounded) [length]",
+    )
     group.add_argument("--A", type=number, help="profile coefficient A of h = A |x|^n (power)")
     group.add_argument("--n", type=number, help="profile exponent n >= 1 of h = A |x|^n (power)")
-    group.add_argument("--table", type=Path, metavar="FILE.csv",
-                       help="table law: CSV with a header naming the columns P and a")
-    group.add_argument("--module", type=Path, metavar="FILE.py",
-                       help="module law: a file written by `asymslip derive`")
-    group.add_argument("--param", action="append", metavar="NAME=VALUE",
-                       help="module law (or solve --profile): a parameter value (repeat)")
-    group.add_argument("--calibration", type=Path, metavar="FILE.json",
-                       help="calibrated law: a file written by `asymslip calibrate --out`")
+    group.add_argument(
+        "--table",
+        type=Path,
+        metavar="FILE.csv",
+        help="table law: CSV with a header naming the columns P and a",
+    )
+    group.add_argument(
+        "--module",
+        type=Path,
+        metavar="FILE.py",
+        help="module law: a file written by `asymslip derive`",
+    )
+    group.add_argument(
+        "--param",
+        action="append",
+        metavar="NAME=VALUE",
+        help="module law (or solve --profile): a parameter value (repeat)",
+    )
+    group.add_argument(
+        "--calibration",
+        type=Path,
+        metavar="FILE.json",
+        help="calibrated law: a file written by `asymslip calibrate --out`",
+    )
 
 
 def build_law(args: argparse.Namespace) -> ContactLaw:
     """The law named by ``--law``, refusing a missing parameter by its option."""
     entry = LAWS.get(args.law)
     if entry is None:
-        raise InputError("law", f"unknown contact law; choose one of {', '.join(LAWS)}",
-                         args.law)  # fmt: skip
+        raise InputError("law", f"unknown contact law; choose one of {', '.join(LAWS)}", args.law)
     for name in entry.required:
         if getattr(args, name) is None:
             raise InputError(name, f"is required with --law {args.law}")

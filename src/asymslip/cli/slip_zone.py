@@ -22,9 +22,13 @@ def register(commands: argparse._SubParsersAction) -> None:
     )
     add_law_options(parser)
     add_cycle_options(parser)
-    parser.add_argument("--edge", choices=["right", "left", "both"], default="both",
-                        help="which edge (default both: the right edge's keys at the top level "
-                        "and the left edge's under 'left')")  # fmt: skip
+    parser.add_argument(
+        "--edge",
+        choices=["right", "left", "both"],
+        default="both",
+        help="which edge (default both: the right edge's keys at the top level "
+        "and the left edge's under 'left')",
+    )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.set_defaults(run=run)
 

@@ -37,33 +37,64 @@ def register(commands: argparse._SubParsersAction) -> None:
     )
     add_law_options(solve)
     profile = solve.add_argument_group("a profile instead of a law")
-    profile.add_argument("--profile", metavar="EXPR",
-                         help='the gap h(x) as a formula in x, e.g. "x**2/(2*R) + k*x**3"; '
-                         "parameter values with --param NAME=VALUE")  # fmt: skip
-    profile.add_argument("--profile-table", dest="profile_table", type=Path, metavar="FILE.csv",
-                         help="the gap h(x) tabulated: a CSV with a header naming x and h")
+    profile.add_argument(
+        "--profile",
+        metavar="EXPR",
+        help='the gap h(x) as a formula in x, e.g. "x**2/(2*R) + k*x**3"; '
+        "parameter values with --param NAME=VALUE",
+    )
+    profile.add_argument(
+        "--profile-table",
+        dest="profile_table",
+        type=Path,
+        metavar="FILE.csv",
+        help="the gap h(x) tabulated: a CSV with a header naming x and h",
+    )
     cycle = solve.add_argument_group(
-        "load cycle (the paper's, as slip-zone; or --path for any path)")
-    for name, text in (("P1", "normal load at state 1"), ("Q1", "shear force at state 1"),
-                       ("P2", "normal load at state 2 (> P1)"),
-                       ("Q2", "shear force at state 2"),
-                       ("sigma1", "bulk tension at state 1 (default 0)"),
-                       ("sigma2", "bulk tension at state 2 (default 0)")):  # fmt: skip
+        "load cycle (the paper's, as slip-zone; or --path for any path)"
+    )
+    for name, text in (
+        ("P1", "normal load at state 1"),
+        ("Q1", "shear force at state 1"),
+        ("P2", "normal load at state 2 (> P1)"),
+        ("Q2", "shear force at state 2"),
+        ("sigma1", "bulk tension at state 1 (default 0)"),
+        ("sigma2", "bulk tension at state 2 (default 0)"),
+    ):
         cycle.add_argument(f"--{name}", type=number, help=text)
-    cycle.add_argument("--path", type=Path, metavar="PATH.csv",
-                       help="a closed load path instead: points P,Q[,sigma,M] repeated until "
-                       "the steady state (after P and M are applied with Q = sigma = 0)")
+    cycle.add_argument(
+        "--path",
+        type=Path,
+        metavar="PATH.csv",
+        help="a closed load path instead: points P,Q[,sigma,M] repeated until "
+        "the steady state (after P and M are applied with Q = sigma = 0)",
+    )
     solve.add_argument("--mu", type=number, required=True, help="coefficient of friction (> 0)")
     grid = solve.add_argument_group("the solver")
-    grid.add_argument("--elements", type=whole_number, default=DEFAULT_ELEMENTS,
-                      help=f"elements of the grid (default {DEFAULT_ELEMENTS})")
-    grid.add_argument("--steps", type=whole_number, default=DEFAULT_STEPS,
-                      help=f"load steps per segment of the path (default {DEFAULT_STEPS})")
-    grid.add_argument("--refine", action="store_true",
-                      help="solve on N, 2N and 4N elements and extrapolate each boundary")
+    grid.add_argument(
+        "--elements",
+        type=whole_number,
+        default=DEFAULT_ELEMENTS,
+        help=f"elements of the grid (default {DEFAULT_ELEMENTS})",
+    )
+    grid.add_argument(
+        "--steps",
+        type=whole_number,
+        default=DEFAULT_STEPS,
+        help=f"load steps per segment of the path (default {DEFAULT_STEPS})",
+    )
+    grid.add_argument(
+        "--refine",
+        action="store_true",
+        help="solve on N, 2N and 4N elements and extrapolate each boundary",
+    )
     solve.add_argument("--json", action="store_true", help="print one JSON object")
-    solve.add_argument("--out", type=Path, metavar="DIR",
-                       help="write tractions.csv, slip.csv, energy.csv and solver.png there")
+    solve.add_argument(
+        "--out",
+        type=Path,
+        metavar="DIR",
+        help="write tractions.csv, slip.csv, energy.csv and solver.png there",
+    )
     solve.set_defaults(run=run)
 
 
@@ -84,8 +115,11 @@ def _contact(args: argparse.Namespace):  # noqa: ANN202 - a law or a profile
             raise InputError("profile_table", error.rule, error.value, error.where) from None
     law = build_law(args)
     if not hasattr(law, "profile"):
-        raise InputError("law", f"the {law.name} law has no profile for the solver: use "
-                         "hertz, flat-rounded or power, or give --profile or --profile-table")
+        raise InputError(
+            "law",
+            f"the {law.name} law has no profile for the solver: use "
+            "hertz, flat-rounded or power, or give --profile or --profile-table",
+        )
     return law, law
 
 
@@ -101,8 +135,7 @@ def _loading(args: argparse.Namespace) -> tuple[object, LoadCycle | None]:
     missing = [f"--{name}" for name in ("P1", "Q1", "P2", "Q2") if getattr(args, name) is None]
     if missing:
         raise InputError("cycle", f"needs {' '.join(missing)} (or --path PATH.csv)")
-    cycle = LoadCycle(args.P1, args.Q1, args.P2, args.Q2, args.sigma1 or 0.0,
-                      args.sigma2 or 0.0)  # fmt: skip
+    cycle = LoadCycle(args.P1, args.Q1, args.P2, args.Q2, args.sigma1 or 0.0, args.sigma2 or 0.0)
     # Gross sliding by the rules slip-zone applies, naming --Q1/--Q2 as typed (the solver's
     # own check names the points of a --path).
     verdict = Verdict(())
@@ -123,11 +156,13 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("E_star", "is required with --profile or --profile-table")
     options = {"elements": args.elements, "steps": args.steps, "E_star": E_star}
     try:
-        result = refine(contact, loading, args.mu, **options) if args.refine \
-            else solve(contact, loading, args.mu, **options)  # fmt: skip
+        result = (
+            refine(contact, loading, args.mu, **options)
+            if args.refine
+            else solve(contact, loading, args.mu, **options)
+        )
     except SolverError as error:  # not the input's fault: one line, and the failure status
-        print(f"asymslip: error: the reference solver did not converge: {error}",
-              file=sys.stderr)  # fmt: skip
+        print(f"asymslip: error: the reference solver did not converge: {error}", file=sys.stderr)
         return 1
     if law is not None and cycle is not None:
         result = with_asymptotes(result, law, cycle, args.mu)
@@ -151,14 +186,18 @@ def _summary(data: dict) -> str:
             continue
         b = "null" if edge["b"] is None else f"{edge['b']:.9g}"
         bound = "null" if edge.get("b_error") is None else f"{edge['b_error']:.3g}"
-        lines.append(f"{name}-hand edge: stick boundary b = {b} +- {bound} "
-                     f"(slip direction {edge.get('slip_direction')})")  # fmt: skip
+        lines.append(
+            f"{name}-hand edge: stick boundary b = {b} +- {bound} "
+            f"(slip direction {edge.get('slip_direction')})"
+        )
         for key, entry in (edge.get("asymptotes") or {}).items():
             if entry is None:
                 lines.append(f"  {key:<20} does not exist for this cycle")
                 continue
-            lines.append(f"  {key:<20} {entry['value']:.9g}  ({entry['elements']:+.2f} elements "
-                         "from the solver)")  # fmt: skip
+            lines.append(
+                f"  {key:<20} {entry['value']:.9g}  ({entry['elements']:+.2f} elements "
+                "from the solver)"
+            )
     for warning in data.get("warnings", []):
         lines.append(f"warning: {warning}")
     return "\n".join(lines)

@@ -23,14 +23,28 @@ def register(commands: argparse._SubParsersAction) -> None:
     sweep.add_argument("cases", type=Path, metavar="CASES.csv", help="the load cycles")
     add_law_options(sweep)
     sweep.add_argument("--mu", type=number, help="coefficient of friction for rows without mu")
-    sweep.add_argument("--edge", choices=["right", "left", "both"], default="both",
-                       help="which edge (default both; left-edge columns are prefixed left_)")
-    sweep.add_argument("--out", required=True, type=Path, metavar="RESULTS.csv|.parquet",
-                       help="the results: CSV, or Parquet for a .parquet name (needs the "
-                       "parquet extra); written beside the target and renamed when complete")
-    sweep.add_argument("--chunk-rows", dest="chunk_rows", type=whole_number, default=100_000,
-                       help="rows evaluated at once (default 100000)")
-    sweep.set_defaults(run=run)  # fmt: skip
+    sweep.add_argument(
+        "--edge",
+        choices=["right", "left", "both"],
+        default="both",
+        help="which edge (default both; left-edge columns are prefixed left_)",
+    )
+    sweep.add_argument(
+        "--out",
+        required=True,
+        type=Path,
+        metavar="RESULTS.csv|.parquet",
+        help="the results: CSV, or Parquet for a .parquet name (needs the "
+        "parquet extra); written beside the target and renamed when complete",
+    )
+    sweep.add_argument(
+        "--chunk-rows",
+        dest="chunk_rows",
+        type=whole_number,
+        default=100_000,
+        help="rows evaluated at once (default 100000)",
+    )
+    sweep.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -41,7 +55,8 @@ def run(args: argparse.Namespace) -> int:
     if args.mu is not None:
         positive("mu", args.mu)  # a bad default is one error, not one per row
     law = build_law(args)
-    summary = sweep_file(args.cases, law, args.out, mu=args.mu, edge=args.edge,
-                         chunk_rows=args.chunk_rows)  # fmt: skip
+    summary = sweep_file(
+        args.cases, law, args.out, mu=args.mu, edge=args.edge, chunk_rows=args.chunk_rows
+    )
     print(summary.report(), file=sys.stderr)
     return 1 if summary.invalid else 0

@@ -14,10 +14,20 @@ from .parser import number
 def _common(parser: argparse.ArgumentParser) -> None:
     add_law_options(parser)
     add_cycle_options(parser)
-    parser.add_argument("--x", type=number, nargs="+", required=True, metavar="X",
-                        help="positions measured from the contact centre, inside the contact")
-    parser.add_argument("--edge", choices=["right", "left"], default="right",
-                        help="which edge (default right, the paper's)")
+    parser.add_argument(
+        "--x",
+        type=number,
+        nargs="+",
+        required=True,
+        metavar="X",
+        help="positions measured from the contact centre, inside the contact",
+    )
+    parser.add_argument(
+        "--edge",
+        choices=["right", "left"],
+        default="right",
+        help="which edge (default right, the paper's)",
+    )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
 
 
@@ -32,9 +42,13 @@ def register(commands: argparse._SubParsersAction) -> None:
         "asymptote (49) is meant to hold; the cycle's warnings follow.",
     )
     _common(traction)
-    traction.add_argument("--b", choices=["consistent", "exact"], default="consistent",
-                          help="stick boundary in (15): consistent = (17)/(22) (default), "
-                          "exact = a(P_K), the paper's choice for Fig. 5")  # fmt: skip
+    traction.add_argument(
+        "--b",
+        choices=["consistent", "exact"],
+        default="consistent",
+        help="stick boundary in (15): consistent = (17)/(22) (default), "
+        "exact = a(P_K), the paper's choice for Fig. 5",
+    )
     traction.set_defaults(run=run_traction)
     slip = commands.add_parser(
         "slip",
@@ -58,25 +72,32 @@ def _rows(header: list[str], rows: list[list[str]]) -> str:
 
 
 def _warnings(warnings: list[str]) -> str:
-    return "warnings: " + ("none" if not warnings else "\n" + "\n".join(
-        f"  - {warning}" for warning in warnings))  # fmt: skip
+    return "warnings: " + (
+        "none" if not warnings else "\n" + "\n".join(f"  - {warning}" for warning in warnings)
+    )
 
 
 def run_traction(args: argparse.Namespace) -> int:
-    result = traction_difference(build_law(args), build_cycle(args), args.mu, args.x,
-                                 stick_boundary=args.b, edge=args.edge)  # fmt: skip
+    result = traction_difference(
+        build_law(args), build_cycle(args), args.mu, args.x, stick_boundary=args.b, edge=args.edge
+    )
     if args.json:
         print(json.dumps(result.to_dict(), indent=2))
         return 0
-    region = f"x >= {result.near_edge_from:.12g}" if args.edge == "right" \
-        else f"x <= {-result.near_edge_from:.12g}"  # fmt: skip
-    print(f"q_diff = q2 - q1 near the {args.edge}-hand edge (b = {result.b:.12g}, {args.b} "
-          f"choice); near the edge: {region}")  # fmt: skip
+    region = (
+        f"x >= {result.near_edge_from:.12g}"
+        if args.edge == "right"
+        else f"x <= {-result.near_edge_from:.12g}"
+    )
+    print(
+        f"q_diff = q2 - q1 near the {args.edge}-hand edge (b = {result.b:.12g}, {args.b} "
+        f"choice); near the edge: {region}"
+    )
     exact = result.q_diff_exact or [None] * len(result.x)
-    rows = [[f"{x:.12g}", f"{q:.12g}", "null" if e is None else f"{e:.12g}",
-             "yes" if near else "no"]
-            for x, q, e, near in zip(result.x, result.q_diff, exact, result.near_edge,
-                                     strict=True)]  # fmt: skip
+    rows = [
+        [f"{x:.12g}", f"{q:.12g}", "null" if e is None else f"{e:.12g}", "yes" if near else "no"]
+        for x, q, e, near in zip(result.x, result.q_diff, exact, result.near_edge, strict=True)
+    ]
     print(_rows(["x", "q_diff (49)", "q_diff_exact (47)", "near edge"], rows))
     print(_warnings(result.warnings))
     return 0
@@ -84,8 +105,9 @@ def run_traction(args: argparse.Namespace) -> int:
 
 def run_slip(args: argparse.Namespace) -> int:
     law = build_law(args)
-    result = slip_displacement(law, build_cycle(args), args.mu, args.x, E_star=args.E_star,
-                               edge=args.edge)  # fmt: skip
+    result = slip_displacement(
+        law, build_cycle(args), args.mu, args.x, E_star=args.E_star, edge=args.edge
+    )
     if args.json:
         print(json.dumps(result.to_dict(), indent=2))
         return 0

@@ -37,22 +37,37 @@ def main(argv: list[str] | None = None) -> int:
     for name, help_text in [
         ("generate", "run every derivation and write every generated tree and the report"),
         ("verify", "run every derivation and print one line per paper equation"),
-        ("check", "regenerate under two hash seeds into a temporary folder and diff every "
-         "generated tree and the report against the committed ones"),
+        (
+            "check",
+            "regenerate under two hash seeds into a temporary folder and diff every "
+            "generated tree and the report against the committed ones",
+        ),
         ("report", "run every derivation and write the derivation report only"),
     ]:
         sub = commands.add_parser(name, help=help_text, description=help_text)
-        sub.add_argument("--derivations", type=Path, default=ROOT / "derivations",
-                         help="folder of derivation scripts (default: ./derivations)")
-        sub.add_argument("--root", type=Path, default=ROOT / "generated",
-                         help="the generated root holding asymslip_gen/, c/, fortran/, "
-                         "matlab/ and report/ (default: ./generated)")
+        sub.add_argument(
+            "--derivations",
+            type=Path,
+            default=ROOT / "derivations",
+            help="folder of derivation scripts (default: ./derivations)",
+        )
+        sub.add_argument(
+            "--root",
+            type=Path,
+            default=ROOT / "generated",
+            help="the generated root holding asymslip_gen/, c/, fortran/, "
+            "matlab/ and report/ (default: ./generated)",
+        )
         sub.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
         if name in ("generate", "report"):  # check reads ROOT's committed map itself
-            sub.add_argument("--error-map", type=Path, default=None,
-                             help="the committed error map summarised in the report "
-                             f"(default: {REPORT_FOLDER}/{ERROR_MAP_FILE} under --root; left "
-                             "out if missing)")
+            sub.add_argument(
+                "--error-map",
+                type=Path,
+                default=None,
+                help="the committed error map summarised in the report "
+                f"(default: {REPORT_FOLDER}/{ERROR_MAP_FILE} under --root; left "
+                "out if missing)",
+            )
     args = parser.parse_args(argv)
 
     if args.command == "check":

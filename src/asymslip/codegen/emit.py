@@ -29,8 +29,12 @@ def _equation_refs(equations: Sequence[str]) -> str:
     return ", ".join(f"({number})" for number in equations)
 
 
-def docstring(formula: Formula, kind: str = "array_like", returns_kind: str = "ndarray or "
-              "float64", note: str = "") -> str:  # fmt: skip
+def docstring(
+    formula: Formula,
+    kind: str = "array_like",
+    returns_kind: str = "ndarray or float64",
+    note: str = "",
+) -> str:
     """The NumPy-style docstring of a generated function (``kind``: how arguments are typed)."""
     paragraph = textwrap.fill(formula.doc + (f"  {note}" if note else ""), width=92)
     parameters = "\n".join(
@@ -91,15 +95,12 @@ def render_module(
         header = banner([item.formula.source for item in reduced])
     docstring = "\n".join(wrap(doc, 92))
     return (
-        header
-        + f'"""{docstring}\n\nSee {PAPER}.\n"""\n\n'
+        header + f'"""{docstring}\n\nSee {PAPER}.\n"""\n\n'
         "from __future__ import annotations\n\n"
         "import numpy\n"
         "from numpy.typing import ArrayLike, NDArray\n\n"
         "FloatArray = NDArray[numpy.float64] | numpy.float64\n\n"
-        f"__all__ = [\n{exported}\n]\n\n"
-        + (f"{preamble}\n" if preamble else "")
-        + f"\n{functions}"
+        f"__all__ = [\n{exported}\n]\n\n" + (f"{preamble}\n" if preamble else "") + f"\n{functions}"
     )
 
 
@@ -114,8 +115,7 @@ def render_package_init(modules: Mapping[str, Sequence[Formula]]) -> str:
     sources = [formula.source for formulas in modules.values() for formula in formulas]
     table = "\n".join(f'    "{name}": "{where[name]}",' for name in sorted(where))
     return (
-        banner(sources)
-        + '"""Generated NumPy kernels for asymptotic partial-slip contacts.\n\n'
+        banner(sources) + '"""Generated NumPy kernels for asymptotic partial-slip contacts.\n\n'
         "Runtime needs NumPy only.  The hand-written, validating API is the ``asymslip`` package.\n"
         '"""\n\n'
         "import importlib\n"
@@ -127,7 +127,7 @@ def render_package_init(modules: Mapping[str, Sequence[Formula]]) -> str:
         "def __getattr__(name: str) -> Any:\n"
         "    if name not in _MODULES:\n"
         "        raise AttributeError(f\"module 'asymslip_gen' has no attribute {name!r}\")\n"
-        "    value = getattr(importlib.import_module(f\"{__name__}.{_MODULES[name]}\"), name)\n"
+        '    value = getattr(importlib.import_module(f"{__name__}.{_MODULES[name]}"), name)\n'
         "    globals()[name] = value\n"
         "    return value\n\n\n"
         "def __dir__() -> list[str]:\n"
@@ -143,13 +143,22 @@ def format_sources(sources: Mapping[str, str]) -> dict[str, str]:
             (folder / name).write_text(source, encoding="utf-8")
         completed = subprocess.run(
             [
-                sys.executable, "-m", "ruff", "format", "--isolated", "--quiet",
-                "--line-length", "100", "--target-version", "py311", str(folder),
+                sys.executable,
+                "-m",
+                "ruff",
+                "format",
+                "--isolated",
+                "--quiet",
+                "--line-length",
+                "100",
+                "--target-version",
+                "py311",
+                str(folder),
             ],
             capture_output=True,
             text=True,
             check=False,
-        )  # fmt: skip
+        )
         if completed.returncode != 0:
             raise RuntimeError(f"ruff format failed:\n{completed.stderr}")
         return {name: (folder / name).read_text(encoding="utf-8") for name in sources}
@@ -159,9 +168,18 @@ def format_source(source: str) -> str:
     """Format with the pinned ruff, isolated from any user configuration."""
     completed = subprocess.run(
         [
-            sys.executable, "-m", "ruff", "format", "--isolated",
-            "--line-length", "100", "--target-version", "py311",
-            "--stdin-filename", "generated.py", "-",
+            sys.executable,
+            "-m",
+            "ruff",
+            "format",
+            "--isolated",
+            "--line-length",
+            "100",
+            "--target-version",
+            "py311",
+            "--stdin-filename",
+            "generated.py",
+            "-",
         ],
         input=source,
         capture_output=True,

@@ -58,8 +58,11 @@ def calibration() -> tuple[Any, Any, Any]:
     try:
         record = packaged_formulas()[CALIBRATION]
     except (OSError, KeyError, RecordError) as error:
-        raise InputError("derive", "cannot read the calibration (19) from asymslip_gen's "
-                         f"formulas.json ({error}): reinstall asymslip") from None  # fmt: skip
+        raise InputError(
+            "derive",
+            "cannot read the calibration (19) from asymslip_gen's "
+            f"formulas.json ({error}): reinstall asymslip",
+        ) from None
     symbols = {arg.name: arg.symbol for arg in record.args}
     return record.expr, symbols[HALF_WIDTH], symbols["dP_da"]
 
@@ -88,8 +91,12 @@ def derive_law(text: str, params: Sequence[str]) -> dict[str, Any]:
     multiplier_of_slope, _, dP_da = calibration()
     slope = sympy.diff(load, a)
     if sympy.simplify(slope) == 0:
-        raise InputError("P_of_a", "does not depend on a (dP/da is identically zero); a "
-                         "contact law P(a) must increase with the half-width a", text)  # fmt: skip
+        raise InputError(
+            "P_of_a",
+            "does not depend on a (dP/da is identically zero); a "
+            "contact law P(a) must increase with the half-width a",
+            text,
+        )
     multiplier = multiplier_of_slope.subs(dP_da, slope)
     # d/da of |x| is sign(x), whose derivative is a Dirac delta: zero wherever it is defined.
     multiplier_slope = (sympy.diff(multiplier, a) / slope).replace(sympy.DiracDelta, lambda *_: 0)
@@ -103,13 +110,16 @@ def derive_law(text: str, params: Sequence[str]) -> dict[str, Any]:
     }
 
 
-def _check_values(names: Sequence[str], values: Mapping[str, float],
-                  half_widths: Sequence[float]) -> None:  # fmt: skip
+def _check_values(
+    names: Sequence[str], values: Mapping[str, float], half_widths: Sequence[float]
+) -> None:
     """The values of --check and --check-a, refused before anything is derived."""
     missing = [name for name in names if name not in values]
     if missing:
-        raise InputError("check", f"needs a value for every parameter to check dP/da > 0; "
-                         f"missing {', '.join(missing)}")  # fmt: skip
+        raise InputError(
+            "check",
+            f"needs a value for every parameter to check dP/da > 0; missing {', '.join(missing)}",
+        )
     unknown = sorted(set(values) - set(names))
     if unknown:
         raise InputError("check", f"{', '.join(unknown)} is not a parameter of the law")
@@ -119,8 +129,9 @@ def _check_values(names: Sequence[str], values: Mapping[str, float],
         if not math.isfinite(value):
             raise InputError("check", f"{name} must be finite (not inf or nan)")
         if not value > 0:
-            raise InputError("check", f"{name} must be > 0 (parameters are {PARAMETER_RULE})",
-                             value)  # fmt: skip
+            raise InputError(
+                "check", f"{name} must be > 0 (parameters are {PARAMETER_RULE})", value
+            )
     for half_width in half_widths:
         if not math.isfinite(half_width):
             raise InputError("check_a", "half-widths must be finite (not inf or nan)")
@@ -128,8 +139,9 @@ def _check_values(names: Sequence[str], values: Mapping[str, float],
             raise InputError("check_a", "half-widths must be > 0", half_width)
 
 
-def _check_increasing(derived: Mapping[str, Any], values: Mapping[str, float],
-                      half_widths: Sequence[float], text: str) -> None:  # fmt: skip
+def _check_increasing(
+    derived: Mapping[str, Any], values: Mapping[str, float], half_widths: Sequence[float], text: str
+) -> None:
     sympy = sympy_module()
     substitution = {symbol: sympy.Float(values[symbol.name], 30) for symbol in derived["params"]}
     for half_width in half_widths:
@@ -137,44 +149,72 @@ def _check_increasing(derived: Mapping[str, Any], values: Mapping[str, float],
         slope = sympy.N(derived["load_slope"].subs(at), 20)
         if not (slope.is_real and slope.is_finite and slope > 0):
             shown = f"{float(slope):.6g}" if slope.is_real and slope.is_finite else str(slope)
-            raise InputError("P_of_a", f"dP/da = {shown} is not > 0 at a = {half_width:g} with "
-                             + ", ".join(f"{k} = {v:g}" for k, v in values.items())
-                             + ": the law must increase with a", text)  # fmt: skip
+            raise InputError(
+                "P_of_a",
+                f"dP/da = {shown} is not > 0 at a = {half_width:g} with "
+                + ", ".join(f"{k} = {v:g}" for k, v in values.items())
+                + ": the law must increase with a",
+                text,
+            )
 
 
 _SPECS = {
-    "load": ("Normal load P(a) of the contact of half-width a.", (),
-             "The user's contact law P(a) = {shown}, as given.", "P [force/length]."),
-    "load_slope": ("Slope dP/da of the contact law.", ("19",),
-                   "Derivative of P(a); must be > 0 for an incomplete contact.",
-                   "dP/da [force/length^2]."),
+    "load": (
+        "Normal load P(a) of the contact of half-width a.",
+        (),
+        "The user's contact law P(a) = {shown}, as given.",
+        "P [force/length].",
+    ),
+    "load_slope": (
+        "Slope dP/da of the contact law.",
+        ("19",),
+        "Derivative of P(a); must be > 0 for an incomplete contact.",
+        "dP/da [force/length^2].",
+    ),
     "normal_edge_multiplier": (
-        "Normal edge multiplier L_I of the contact pressure p = L_I sqrt(a - x).", ("19",),
+        "Normal edge multiplier L_I of the contact pressure p = L_I sqrt(a - x).",
+        ("19",),
         "The calibration (19), L_I = (1/pi) sqrt(2/a) dP/da, derived from Mossakovskii's "
         "superposition in derivations/section2_calibrations.py (read from asymslip_gen's "
         "formula records), applied to this law.",
-        "L_I [force/length^(5/2)]."),
+        "L_I [force/length^(5/2)].",
+    ),
     "normal_edge_multiplier_slope": (
-        "Slope dL_I/dP of the normal edge multiplier with load.", ("19", "26"),
-        "(dL_I/da)/(dP/da); enters the validity measure (26).", "dL_I/dP."),
+        "Slope dL_I/dP of the normal edge multiplier with load.",
+        ("19", "26"),
+        "(dL_I/da)/(dP/da); enters the validity measure (26).",
+        "dL_I/dP.",
+    ),
     "half_width_minimum": (
-        "Smallest half-width of the range where the law is a valid incomplete-contact law.", (),
-        "{range}", "Half-width [length] (0 when the law holds from a = 0)."),
+        "Smallest half-width of the range where the law is a valid incomplete-contact law.",
+        (),
+        "{range}",
+        "Half-width [length] (0 when the law holds from a = 0).",
+    ),
     "half_width_maximum": (
-        "Largest half-width of the range where the law is a valid incomplete-contact law.", (),
-        "{range}", "Half-width [length] (inf when unbounded)."),
+        "Largest half-width of the range where the law is a valid incomplete-contact law.",
+        (),
+        "{range}",
+        "Half-width [length] (inf when unbounded).",
+    ),
     "load_minimum": (
-        "Smallest load the law reaches on its valid range.", (),
-        "{range}", "P [force/length]; loads below it have no half-width."),
+        "Smallest load the law reaches on its valid range.",
+        (),
+        "{range}",
+        "P [force/length]; loads below it have no half-width.",
+    ),
     "load_maximum": (
-        "Supremum of the loads the law reaches on its valid range.", (),
-        "{range}", "P [force/length] (inf when unbounded); loads at or above it have no "
-        "half-width."),
-}  # fmt: skip
+        "Supremum of the loads the law reaches on its valid range.",
+        (),
+        "{range}",
+        "P [force/length] (inf when unbounded); loads at or above it have no half-width.",
+    ),
+}
 
 
-def render_law_module(text: str, params: Sequence[str], name: str,
-                      derived: Mapping[str, Any], law_range: Any) -> str:  # fmt: skip
+def render_law_module(
+    text: str, params: Sequence[str], name: str, derived: Mapping[str, Any], law_range: Any
+) -> str:
     """The formatted source of the law module for ``P(a) = text``."""
     sympy = sympy_module()
     from .emit import banner, format_source, render_module
@@ -192,12 +232,19 @@ def render_law_module(text: str, params: Sequence[str], name: str,
     for function in (*LAW_FUNCTIONS, *RANGE_FUNCTIONS):
         summary, equations, doc, returns = _SPECS[function]
         try:
-            formulas.append(Formula(
-                name=function, args=law_args if function in LAW_FUNCTIONS else tuple(parameters),
-                expr=expressions[function], equations=equations, summary=summary,
-                doc=doc.format(shown=shown, range=law_range.describe()), module=name,
-                source=source, returns=returns,
-            ))  # fmt: skip
+            formulas.append(
+                Formula(
+                    name=function,
+                    args=law_args if function in LAW_FUNCTIONS else tuple(parameters),
+                    expr=expressions[function],
+                    equations=equations,
+                    summary=summary,
+                    doc=doc.format(shown=shown, range=law_range.describe()),
+                    module=name,
+                    source=source,
+                    returns=returns,
+                )
+            )
         except ValueError as error:
             raise InputError("P_of_a", f"cannot be emitted as NumPy code: {error}", text) from None
     doc = f"Contact law {name}: P(a) = {shown}, parameters {', '.join(params) or '(none)'}.\n\n"
@@ -294,8 +341,7 @@ def write_law_module(
     law_range = analyse_law(derived["load"], derived["load_slope"], derived["a"], P_of_a)
     if check_half_widths:
         _check_increasing(derived, dict(check or {}), check_half_widths, P_of_a)
-    source = render_law_module(P_of_a, check_params(params, HALF_WIDTH), name, derived,
-                               law_range)  # fmt: skip
+    source = render_law_module(P_of_a, check_params(params, HALF_WIDTH), name, derived, law_range)
     with atomic_write(out, "out", mode="w") as handle:
         handle.write(source)
     return WrittenLaw(out, law_range.summary)
@@ -311,5 +357,6 @@ def derive_law_module(
     check_half_widths: Sequence[float] = (),
 ) -> Path:
     """:func:`write_law_module`, returning the path written."""
-    return write_law_module(P_of_a, params, name, out, check=check,
-                            check_half_widths=check_half_widths).path  # fmt: skip
+    return write_law_module(
+        P_of_a, params, name, out, check=check, check_half_widths=check_half_widths
+    ).path

@@ -122,7 +122,7 @@ class LawRange:
 
 
 def _sign(expr: Any) -> str | None:
-    """"+" if provably > 0, "-" if provably <= 0, else None (tries a few rewritings)."""
+    """ "+" if provably > 0, "-" if provably <= 0, else None (tries a few rewritings)."""
     sympy = sympy_module()
     for candidate in (expr, sympy.factor(expr), sympy.simplify(expr)):
         if candidate.is_positive:
@@ -142,7 +142,7 @@ def _positive_roots(expr: Any, a: Any, low: Any, high: Any) -> list[Any] | None:
     if not all(root.is_positive for root in listed):
         return None
     for i, first in enumerate(listed):
-        for second in listed[i + 1:]:
+        for second in listed[i + 1 :]:
             if _sign(second - first) is None:
                 return None
     return sorted(listed, key=lambda root: sum(_sign(root - other) == "+" for other in listed))
@@ -160,9 +160,12 @@ def _increasing_interval(slope: Any, a: Any, text: str) -> tuple[Any, Any] | str
     if sign == "+":
         return (sympy.Integer(0), sympy.oo)
     if sign == "-":
-        raise _refuse(text, f"decreases with a: dP/da = {shown} is <= 0 for every a > 0 "
-                      "(parameters positive); a contact law must increase with the half-width a "
-                      "(an incomplete contact grows under load)")  # fmt: skip
+        raise _refuse(
+            text,
+            f"decreases with a: dP/da = {shown} is <= 0 for every a > 0 "
+            "(parameters positive); a contact law must increase with the half-width a "
+            "(an incomplete contact grows under load)",
+        )
     roots = _positive_roots(slope, a, 0, sympy.oo)
     if roots is None:
         return f"the sign of dP/da = {shown} depends on a in a way SymPy cannot resolve"
@@ -172,22 +175,30 @@ def _increasing_interval(slope: Any, a: Any, text: str) -> tuple[Any, Any] | str
         probe = high / 2 if low == 0 else 2 * low if high == sympy.oo else (low + high) / 2
         sign = _sign(slope.subs(a, probe))
         if sign is None:
-            return f"the sign of dP/da between a = {sympy.sstr(low)} and {sympy.sstr(high)} " \
-                   "is not decidable"  # fmt: skip
+            return (
+                f"the sign of dP/da between a = {sympy.sstr(low)} and {sympy.sstr(high)} "
+                "is not decidable"
+            )
         if sign == "+":
             if increasing and increasing[-1][1] == low:  # dP/da only touches 0 at low
                 increasing[-1] = (increasing[-1][0], high)
             else:
                 increasing.append((low, high))
     if not increasing:
-        raise _refuse(text, f"decreases with a: dP/da = {shown} is <= 0 for every a > 0 "
-                      "(parameters positive); a contact law must increase with the half-width "
-                      "a")  # fmt: skip
+        raise _refuse(
+            text,
+            f"decreases with a: dP/da = {shown} is <= 0 for every a > 0 "
+            "(parameters positive); a contact law must increase with the half-width "
+            "a",
+        )
     if len(increasing) > 1:
         listed = ", ".join(f"({sympy.sstr(lo)}, {sympy.sstr(hi)})" for lo, hi in increasing)
-        raise _refuse(text, f"is not monotonic: dP/da = {shown} is > 0 on separate intervals "
-                      f"of a {listed}; a contact law must increase with a over the range it is "
-                      "used on (write the formula for one branch)")  # fmt: skip
+        raise _refuse(
+            text,
+            f"is not monotonic: dP/da = {shown} is > 0 on separate intervals "
+            f"of a {listed}; a contact law must increase with a over the range it is "
+            "used on (write the formula for one branch)",
+        )
     return increasing[0]
 
 
@@ -198,13 +209,17 @@ def _analyse(load: Any, slope: Any, a: Any, text: str) -> LawRange:
         return _unknown(interval)
     low, high = interval
     P_low = sympy.limit(load, a, low, "+") if low == 0 else sympy.simplify(load.subs(a, low))
-    P_high = sympy.limit(load, a, sympy.oo) if high == sympy.oo else sympy.simplify(
-        load.subs(a, high))  # fmt: skip
+    P_high = (
+        sympy.limit(load, a, sympy.oo) if high == sympy.oo else sympy.simplify(load.subs(a, high))
+    )
     # Limits may be infinite: the extended predicates include -oo and oo.
     if P_high.is_extended_nonpositive:
-        raise _refuse(text, f"is not positive where it increases: P(a) <= {sympy.sstr(P_high)} "
-                      f"for a in ({sympy.sstr(low)}, {sympy.sstr(high)}) (parameters positive); "
-                      "a contact law needs P > 0")  # fmt: skip
+        raise _refuse(
+            text,
+            f"is not positive where it increases: P(a) <= {sympy.sstr(P_high)} "
+            f"for a in ({sympy.sstr(low)}, {sympy.sstr(high)}) (parameters positive); "
+            "a contact law needs P > 0",
+        )
     if P_low.is_extended_nonnegative:
         return LawRange(low, high, P_low, P_high, True)
     if P_low.is_extended_negative:
@@ -235,6 +250,12 @@ def analyse_law(load: Any, slope: Any, a: Any, text: str) -> LawRange:
         raise
     except _OutOfTime:
         return _unknown(f"SymPy did not settle it within {TIME_LIMIT:g} s")
-    except (ArithmeticError, NotImplementedError, TypeError, ValueError, RecursionError,
-            AttributeError) as error:  # fmt: skip
+    except (
+        ArithmeticError,
+        NotImplementedError,
+        TypeError,
+        ValueError,
+        RecursionError,
+        AttributeError,
+    ) as error:
         return _unknown(f"SymPy could not decide it ({type(error).__name__})")

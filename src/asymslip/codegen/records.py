@@ -40,8 +40,16 @@ def _expression_classes() -> dict[str, type]:
 
 _CLASSES = _expression_classes()
 #: Singletons srepr prints as bare names.
-_NAMES = {"pi": sympy.pi, "E": sympy.E, "oo": sympy.oo, "zoo": sympy.zoo, "nan": sympy.nan,
-          "I": sympy.I, "EulerGamma": sympy.EulerGamma, "Catalan": sympy.Catalan}  # fmt: skip
+_NAMES = {
+    "pi": sympy.pi,
+    "E": sympy.E,
+    "oo": sympy.oo,
+    "zoo": sympy.zoo,
+    "nan": sympy.nan,
+    "I": sympy.I,
+    "EulerGamma": sympy.EulerGamma,
+    "Catalan": sympy.Catalan,
+}
 _KEYWORDS = set(_assume_defined) | {"precision"}
 
 

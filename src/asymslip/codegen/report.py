@@ -179,8 +179,12 @@ ERROR_MAP_ESTIMATES = {
     "b_exact": "a(P\\_K) `b_exact`",
 }
 #: How the map's law names print (cosmetic; an unknown name prints as it is).
-ERROR_MAP_LAWS = {"hertz": "Hertz", "flat-rounded": "rounded flat",
-                  "power-1.5": "power n = 1.5", "power-3": "power n = 3"}  # fmt: skip
+ERROR_MAP_LAWS = {
+    "hertz": "Hertz",
+    "flat-rounded": "rounded flat",
+    "power-1.5": "power n = 1.5",
+    "power-3": "power n = 3",
+}
 
 
 def _rows(text: str) -> list[dict[str, str]]:
@@ -190,8 +194,11 @@ def _rows(text: str) -> list[dict[str, str]]:
 
 def _largest(rows: Sequence[Mapping[str, str]], column: str, scale: str | None = None) -> float:
     """max |row[column]| (over the rows that have it), divided by row[scale] if given."""
-    values = [abs(float(row[column])) / (float(row[scale]) if scale else 1.0)
-              for row in rows if row.get(column)]  # fmt: skip
+    values = [
+        abs(float(row[column])) / (float(row[scale]) if scale else 1.0)
+        for row in rows
+        if row.get(column)
+    ]
     return max(values) if values else float("nan")
 
 
@@ -211,15 +218,20 @@ def _bounds(value: float) -> str:
 def _covered(row: Mapping[str, str]) -> bool:
     """b's error within its stated accuracy plus the solver's bound."""
     return abs(float(row["b_elements"])) <= float(row["b_accuracy_elements"]) + float(
-        row["b_error_elements"])  # fmt: skip
+        row["b_error_elements"]
+    )
 
 
 def error_map_section(text: str) -> list[str]:
     """The report's summary of the committed error map (its CSV text)."""
     rows = _rows(text)
     if not rows:
-        return ["## The error map: every estimate against the reference solver", "",
-                "The committed error map is empty: run `make error-map`.", ""]  # fmt: skip
+        return [
+            "## The error map: every estimate against the reference solver",
+            "",
+            "The committed error map is empty: run `make error-map`.",
+            "",
+        ]
     slipping = [row for row in rows if row["slip_direction"] != "0"]
     sticking = [row for row in rows if row["slip_direction"] == "0"]
     laws = list(dict.fromkeys(row["law"] for row in rows))
@@ -251,16 +263,20 @@ def error_map_section(text: str) -> list[str]:
         "edge):",
         "",
         "| law | bulk tension | slipping edges | "
-        + " | ".join(ERROR_MAP_ESTIMATES.values()) + " |",
+        + " | ".join(ERROR_MAP_ESTIMATES.values())
+        + " |",
         "| --- | --- | ---: | " + " | ".join("---:" for _ in ERROR_MAP_ESTIMATES) + " |",
     ]
     for law in laws:
         for tension in (False, True):
-            chosen = [row for row in slipping if row["law"] == law
-                      and (float(row["tau"]) != 0) == tension]  # fmt: skip
+            chosen = [
+                row for row in slipping if row["law"] == law and (float(row["tau"]) != 0) == tension
+            ]
             cells = " | ".join(_cell(chosen, name) for name in ERROR_MAP_ESTIMATES)
-            lines.append(f"| {ERROR_MAP_LAWS.get(law, law)} | {'yes' if tension else 'no'} | "
-                         f"{len(chosen)} | {cells} |")  # fmt: skip
+            lines.append(
+                f"| {ERROR_MAP_LAWS.get(law, law)} | {'yes' if tension else 'no'} | "
+                f"{len(chosen)} | {cells} |"
+            )
     quiet = [row for row in slipping if row["validity_warning"] == "0"]
     warned = [row for row in slipping if row["validity_warning"] != "0"]
     groups = {
@@ -273,8 +289,9 @@ def error_map_section(text: str) -> list[str]:
         "Largest \\|error\\| in units of the solver's bound, over the slipping edges where "
         "`slip_zone` gives no validity warning (eq24-eq27 all at most 0.1) and where it does:",
         "",
-        "| estimate | " + " | ".join(f"{name} ({len(group)} edges)"
-                                     for name, group in groups.items()) + " |",  # fmt: skip
+        "| estimate | "
+        + " | ".join(f"{name} ({len(group)} edges)" for name, group in groups.items())
+        + " |",
         "| --- | " + " | ".join("---:" for _ in groups) + " |",
     ]
     for name, label in ERROR_MAP_ESTIMATES.items():
@@ -283,10 +300,13 @@ def error_map_section(text: str) -> list[str]:
             value = _largest(group, f"{name}_elements", "b_error_elements")
             cells.append("-" if value != value else f"{value:.2f}")
         lines.append(f"| {label} | " + " | ".join(cells) + " |")
-    no_tension, tension = groups["no tension, no validity warning"], groups[
-        "tension, no validity warning"]  # fmt: skip
-    exact = _largest([r for r in slipping if float(r["tau"]) == 0], "b_exact_elements",
-                     "b_error_elements")  # fmt: skip
+    no_tension, tension = (
+        groups["no tension, no validity warning"],
+        groups["tension, no validity warning"],
+    )
+    exact = _largest(
+        [r for r in slipping if float(r["tau"]) == 0], "b_exact_elements", "b_error_elements"
+    )
     paper = max(tension, key=lambda r: abs(float(r["b_paper_elements"])), default=None)
     uncovered = [row for row in slipping if not _covered(row)]
     uncovered_warned = sum(row["validity_warning"] != "0" for row in uncovered)

@@ -162,9 +162,7 @@ def render_all(run: DerivationRun, error_map: str | None = None) -> Generated:
             languages[name].append(language.name)
         trees[language.folder] = Tree(rendered.files, language.extensions)
     available = {name: tuple(found) for name, found in languages.items()}
-    python_files[RECORDS_FILE] = render_records(
-        [item.formula for item in reduced], dict(available)
-    )
+    python_files[RECORDS_FILE] = render_records([item.formula for item in reduced], dict(available))
     trees[PYTHON_FOLDER] = Tree(python_files, (".py", ".json"))
     report = render_report(run, languages=available, error_map=error_map)
     trees[REPORT_FOLDER] = Tree({REPORT_FILE: report}, (), owned=(REPORT_FILE,))
@@ -224,6 +222,7 @@ def _lines(path: Path) -> list[str]:
 
 def diff_tree(tree: Tree, fresh: Path, committed: Path, label: str) -> list[str]:
     """Unified diff of the files ``tree`` owns, freshly generated vs committed."""
+
     def owned(folder: Path) -> set[str]:
         if not folder.is_dir():
             return set()
@@ -258,10 +257,18 @@ def check_fresh(
             out = Path(scratch) / f"seed{seed}"
             env = {**os.environ, "PYTHONHASHSEED": seed}
             command = [
-                sys.executable, "-m", "asymslip.codegen", "generate",
-                "--derivations", str(derivations), "--root", str(out), "--quiet",
-                "--error-map", str(root / REPORT_FOLDER / ERROR_MAP_FILE),
-            ]  # fmt: skip
+                sys.executable,
+                "-m",
+                "asymslip.codegen",
+                "generate",
+                "--derivations",
+                str(derivations),
+                "--root",
+                str(out),
+                "--quiet",
+                "--error-map",
+                str(root / REPORT_FOLDER / ERROR_MAP_FILE),
+            ]
             jobs.append((seed, out, subprocess.Popen(command, env=env)))
         failed = False
         for seed, out, process in jobs:

@@ -31,8 +31,9 @@ class ScalarCodePrinter(PythonCodePrinter):
     """Python printer on ``math``: strict, element-free ``Max``/``Min``, ``1/x`` for ``x**-1``."""
 
     def __init__(self) -> None:
-        super().__init__({"fully_qualified_modules": True, "allow_unknown_functions": False,
-                          "strict": True})  # fmt: skip
+        super().__init__(
+            {"fully_qualified_modules": True, "allow_unknown_functions": False, "strict": True}
+        )
 
     def _print_Max(self, expr: sympy.Max) -> str:
         return f"max({', '.join(self._print(arg) for arg in expr.args)})"
@@ -95,17 +96,17 @@ def render_scalar_module(reduced: Sequence[Reduced], module_docs: Mapping[str, s
             "Each function is its NumPy namesake in the module named in its docstring, with the "
             "same CSE'd body; ``math`` costs a fraction of NumPy's per-call overhead on one "
             "float.  Python floats raise (ZeroDivisionError, OverflowError, ValueError) where "
-            "NumPy gives inf or NaN: callers fall back to the NumPy kernels then.", width=92)
+            "NumPy gives inf or NaN: callers fall back to the NumPy kernels then.",
+            width=92,
+        )
         + (f"\n\nLeft out:{notes}" if notes else "")
         + f"\n\nSee {PAPER}.\n"
     )
     exported = "\n".join(f'    "{name}",' for name in names)
     sources = sorted({item.formula.source for item in reduced})
     return (
-        banner(sources)
-        + f'"""{doc}"""\n\n'
+        banner(sources) + f'"""{doc}"""\n\n'
         "from __future__ import annotations\n\n"
         "import math\n\n"
-        f"__all__ = [\n{exported}\n]\n\n\n"
-        + "\n\n".join(functions)
+        f"__all__ = [\n{exported}\n]\n\n\n" + "\n\n".join(functions)
     )

@@ -48,8 +48,11 @@ def refuse_same_file(out: str | Path, option: str, *inputs: str | Path | None) -
         if not same and target.exists() and source.exists():
             same = os.path.samefile(target, source)
         if same:
-            raise InputError(option, f"{target} is also the input: writing it would destroy the "
-                             "data being read; choose another output file")  # fmt: skip
+            raise InputError(
+                option,
+                f"{target} is also the input: writing it would destroy the "
+                "data being read; choose another output file",
+            )
 
 
 @contextmanager

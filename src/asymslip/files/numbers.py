@@ -46,8 +46,9 @@ FIXED_LOW, FIXED_HIGH = -6, 10
 _MARGIN = 1e-9
 _SPLIT = 134217729.0  # 2^27 + 1, Dekker's splitter
 _POW10 = np.array([10**k for k in range(19)], dtype=np.int64)
-_FOUR_DIGITS = np.frombuffer("".join(f"{i:04d}" for i in range(10_000)).encode(),
-                             np.uint8).reshape(10_000, 4)  # fmt: skip
+_FOUR_DIGITS = np.frombuffer("".join(f"{i:04d}" for i in range(10_000)).encode(), np.uint8).reshape(
+    10_000, 4
+)
 _FOUR_DIGITS_U32 = _FOUR_DIGITS.copy().view(np.uint32).ravel()
 _ZERO, _DOT, _MINUS, _PLUS, _E = (ord(c) for c in "0.-+e")
 
@@ -100,8 +101,9 @@ def _floor_split(hi: NDArray, lo: NDArray) -> tuple[NDArray[np.int64], NDArray]:
     return hi.astype(np.int64) + whole.astype(np.int64), lo - whole
 
 
-def _shortest_digits(x: NDArray[np.float64]) -> tuple[NDArray[np.int64], NDArray[np.int64],
-                                                      NDArray[np.bool_]]:  # fmt: skip
+def _shortest_digits(
+    x: NDArray[np.float64],
+) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.bool_]]:
     """Digits (an integer without trailing zeros), decimal exponent of its last digit, and
     a mask of the numbers whose decision was too close to call (left to ``repr``)."""
     q_hi, q_lo, scales = _scales()
@@ -124,8 +126,9 @@ def _shortest_digits(x: NDArray[np.float64]) -> tuple[NDArray[np.int64], NDArray
     X_floor, X_frac = _floor_split(Xh, Xl)
     L_floor, L_frac = _floor_split(Lh, Ll)
     H_floor, H_frac = _floor_split(Hh, Hl)
-    unsure = ((L_frac < _MARGIN) | (L_frac > 1 - _MARGIN)
-              | (H_frac < _MARGIN) | (H_frac > 1 - _MARGIN))  # fmt: skip
+    unsure = (
+        (L_frac < _MARGIN) | (L_frac > 1 - _MARGIN) | (H_frac < _MARGIN) | (H_frac > 1 - _MARGIN)
+    )
     low = L_floor  # integers in (low, high] are strictly inside the interval
     high = H_floor
     # k: the most trailing zeros a number in (low, high] can have.  Most doubles need 16 or
@@ -180,8 +183,9 @@ _SIGN, _LEAD, _DIGITS, _EXP = 0, 1, 8, 35
 WIDTH = 40
 
 
-def format_doubles(values: ArrayLike, block_rows: int = 1 << 15,
-                   out: NDArray[np.uint8] | None = None) -> NDArray[np.uint8]:
+def format_doubles(
+    values: ArrayLike, block_rows: int = 1 << 15, out: NDArray[np.uint8] | None = None
+) -> NDArray[np.uint8]:
     """Each double as the shortest text that reads back to it, in pyarrow's layout.
 
     Parameters
@@ -235,8 +239,12 @@ def _format_block(x: NDArray[np.float64], out: NDArray[np.uint8]) -> None:
         out[rows] = target
 
 
-def _layout(out: NDArray[np.uint8], negative: NDArray[np.bool_], digits: NDArray[np.int64],
-            last: NDArray[np.int64]) -> None:  # fmt: skip
+def _layout(
+    out: NDArray[np.uint8],
+    negative: NDArray[np.bool_],
+    digits: NDArray[np.int64],
+    last: NDArray[np.int64],
+) -> None:
     """Sign, digits, point and exponent of each number into its row of ``out``.
 
     Each column is one uint8 vector (masks multiplied, no ``np.where``, no ``%``: NumPy's
@@ -281,8 +289,7 @@ def _layout(out: NDArray[np.uint8], negative: NDArray[np.bool_], digits: NDArray
     out[:, _EXP] = exponential * np.uint8(_E)
     out[:, _EXP + 1] = exponential * (np.uint8(_PLUS) + (first < 0) * np.uint8(_MINUS - _PLUS))
     out[:, _EXP + 2] = (hundreds > 0) * (_ZERO + hundreds).astype(np.uint8)
-    out[:, _EXP + 3] = (exponential & (tens > 0)) * (_ZERO + tens - 10 * hundreds).astype(
-        np.uint8)
+    out[:, _EXP + 3] = (exponential & (tens > 0)) * (_ZERO + tens - 10 * hundreds).astype(np.uint8)
     out[:, _EXP + 4] = exponential * (_ZERO + size - 10 * tens).astype(np.uint8)
 
 

@@ -22,8 +22,13 @@ class Progress:
         The word in front of the bar.
     """
 
-    def __init__(self, total: int, stream: TextIO | None = None, enabled: bool | None = None,
-                 label: str = "sweep") -> None:  # fmt: skip
+    def __init__(
+        self,
+        total: int,
+        stream: TextIO | None = None,
+        enabled: bool | None = None,
+        label: str = "sweep",
+    ) -> None:
         self.total, self.label = total, label
         self.stream = stream if stream is not None else sys.stderr
         isatty = getattr(self.stream, "isatty", None)
@@ -38,8 +43,9 @@ class Progress:
             return
         self._last = now
         filled = int(30 * min(done, self.total) / self.total)
-        self.stream.write(f"\r{self.label} [{'#' * filled}{'.' * (30 - filled)}] "
-                          f"{done:,}/{self.total:,} rows")  # fmt: skip
+        self.stream.write(
+            f"\r{self.label} [{'#' * filled}{'.' * (30 - filled)}] {done:,}/{self.total:,} rows"
+        )
         self.stream.flush()
 
     def close(self) -> None:

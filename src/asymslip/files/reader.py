@@ -114,14 +114,16 @@ class CaseTable:
         """Rows ``start:stop`` (no copy of the arrays; error rows renumbered from 0)."""
         stop = min(stop, len(self))
         return CaseTable(
-            self.path, self.header, self.line[start:stop],
+            self.path,
+            self.header,
+            self.line[start:stop],
             {name: column.slice(start, stop) for name, column in self.text.items()},
             {name: column[start:stop] for name, column in self.values.items()},
             {name: column[start:stop] for name, column in self.empty.items()},
-            {row - start: message for row, message in self.errors.items()
-             if start <= row < stop},
-            self.comments, self.engine,
-        )  # fmt: skip
+            {row - start: message for row, message in self.errors.items() if start <= row < stop},
+            self.comments,
+            self.engine,
+        )
 
     def chunks(self, rows: int) -> Iterator[CaseTable]:
         """Consecutive slices of at most ``rows`` rows."""
@@ -193,12 +195,17 @@ def read_table(
         raise InputError("engine", "must be 'pyarrow' or 'numpy'", engine)
     wanted = list(dict.fromkeys([*required, *numeric]))
     data = _read(path, option)
-    layout = (_simple_layout(data, path, option, required) if engine == "pyarrow" else None)
+    layout = _simple_layout(data, path, option, required) if engine == "pyarrow" else None
     if layout is None:
         layout = _scan(data, path, option, required)
     if (not len(layout.starts)) if layout.body is None else layout.body[0] >= layout.body[1]:
-        raise _fail(option, path, None, "has a header but no rows: there is nothing to read "
-                    "(one case per row below the header)")  # fmt: skip
+        raise _fail(
+            option,
+            path,
+            None,
+            "has a header but no rows: there is nothing to read "
+            "(one case per row below the header)",
+        )
     wanted = [name for name in wanted if name in layout.header]
     if engine == "pyarrow":
         parsed = _parse_arrow(layout, wanted)
@@ -210,8 +217,9 @@ def read_table(
         parsed = _parse_numpy(layout, wanted)
     text, values, empty, bad, counts = parsed
     errors = _row_errors(layout, counts, text, empty, bad, wanted, set(required))
-    return CaseTable(path, layout.header, layout.line, text, values, empty, errors,
-                     layout.comments, engine)  # fmt: skip
+    return CaseTable(
+        path, layout.header, layout.line, text, values, empty, errors, layout.comments, engine
+    )
 
 
 # --- the scan ---------------------------------------------------------------------------------
@@ -236,34 +244,37 @@ def _check_text(data: bytes, path: Path, option: str) -> None:
     skip = len(codecs.BOM_UTF8) if data.startswith(codecs.BOM_UTF8) else 0
     nul = data.find(b"\0")
     if nul >= 0:
-        raise _fail(option, path, _line_of(data, nul),
-                    "holds a NUL byte: this is not a CSV text file")  # fmt: skip
+        raise _fail(
+            option, path, _line_of(data, nul), "holds a NUL byte: this is not a CSV text file"
+        )
     try:
         codecs.decode(data[skip:], "utf-8")
     except UnicodeDecodeError as error:
-        raise _fail(option, path, _line_of(data, skip + error.start),
-                    "is not UTF-8 text") from None  # fmt: skip
+        raise _fail(option, path, _line_of(data, skip + error.start), "is not UTF-8 text") from None
 
 
-def _parse_header(text: str, line: int, path: Path, option: str,
-                  required: Sequence[str]) -> list[str]:  # fmt: skip
+def _parse_header(
+    text: str, line: int, path: Path, option: str, required: Sequence[str]
+) -> list[str]:
     header = [name.strip() for name in next(csv.reader([text]))]
     for position, name in enumerate(header, start=1):
         if not name:
             raise _fail(option, path, line, f"column {position} of the header has no name")
     repeated = sorted({name for name in header if header.count(name) > 1})
     if repeated:
-        raise _fail(option, path, line,
-                    f"column {', '.join(repeated)} appears twice in the header")  # fmt: skip
+        raise _fail(option, path, line, f"column {', '.join(repeated)} appears twice in the header")
     missing = [name for name in required if name not in header]
     if missing:
-        raise _fail(option, path, line, f"the header has no column {', '.join(missing)} "
-                    f"(found {', '.join(header)})")  # fmt: skip
+        raise _fail(
+            option,
+            path,
+            line,
+            f"the header has no column {', '.join(missing)} (found {', '.join(header)})",
+        )
     return header
 
 
-def _simple_layout(data: bytes, path: Path, option: str,
-                   required: Sequence[str]) -> _Layout | None:  # fmt: skip
+def _simple_layout(data: bytes, path: Path, option: str, required: Sequence[str]) -> _Layout | None:
     """The layout of a plain file (a header on line 1, then one record per line: no quotes,
     no blank or comment line before the trailing blank ones), found with a few ``find`` calls
     instead of a scan; ``None`` for any other file."""
@@ -306,8 +317,7 @@ def _scan(data: bytes, path: Path, option: str, required: Sequence[str]) -> _Lay
     if quoted:
         quotes = np.flatnonzero(buffer == 34)
         if len(quotes) % 2:
-            raise _fail(option, path, line_of(int(quotes[-1])),
-                        "a quoted field is never closed")  # fmt: skip
+            raise _fail(option, path, line_of(int(quotes[-1])), "a quoted field is never closed")
         breaks = newlines[np.searchsorted(quotes, newlines) % 2 == 0]
     starts = np.concatenate(([skip], breaks + 1)).astype(np.int64)
     ends = np.concatenate((breaks, [len(data)])).astype(np.int64)
@@ -319,8 +329,11 @@ def _scan(data: bytes, path: Path, option: str, required: Sequence[str]) -> _Lay
         inside = ends > starts
         cr[inside] = buffer[ends[inside] - 1] == 13
         ends = ends - cr
-    line = (np.arange(len(starts), dtype=np.int64) + 1 if not quoted
-            else np.searchsorted(newlines, starts).astype(np.int64) + 1)  # fmt: skip
+    line = (
+        np.arange(len(starts), dtype=np.int64) + 1
+        if not quoted
+        else np.searchsorted(newlines, starts).astype(np.int64) + 1
+    )
     # Blank and comment lines: only records that are empty or start with a space, a tab or #
     # can be either; look at those few in Python.
     first = np.full(len(starts), 0, np.uint8)
@@ -347,8 +360,17 @@ def _scan(data: bytes, path: Path, option: str, required: Sequence[str]) -> _Lay
     text = data[starts[head] : ends[head]].decode("utf-8")
     header = _parse_header(text, header_line, path, option, required)
     records = records[1:]
-    return _Layout(data, buffer, quoted, starts[records], ends[records], line[records], header,
-                   header_line, comments)  # fmt: skip
+    return _Layout(
+        data,
+        buffer,
+        quoted,
+        starts[records],
+        ends[records],
+        line[records],
+        header,
+        header_line,
+        comments,
+    )
 
 
 def _field_counts(layout: _Layout) -> NDArray[np.int64]:
@@ -396,15 +418,18 @@ def _parse_arrow(layout: _Layout, wanted: list[str]):
     header = layout.header
     read = pcsv.ReadOptions(column_names=header, use_threads=True)
     parse = pcsv.ParseOptions(newlines_in_values=layout.quoted, ignore_empty_lines=False)
-    convert = pcsv.ConvertOptions(column_types={name: pa.string() for name in header},
-                                  strings_can_be_null=False,
-                                  quoted_strings_can_be_null=False)  # fmt: skip
+    convert = pcsv.ConvertOptions(
+        column_types={name: pa.string() for name in header},
+        strings_can_be_null=False,
+        quoted_strings_can_be_null=False,
+    )
     counts = None
     if layout.body is not None:
         begin, end = layout.body
         try:
-            table = pcsv.read_csv(pa.py_buffer(memoryview(layout.data)[begin:end]), read, parse,
-                                  convert)  # fmt: skip
+            table = pcsv.read_csv(
+                pa.py_buffer(memoryview(layout.data)[begin:end]), read, parse, convert
+            )
         except pa.ArrowInvalid:  # wrong field count or bad UTF-8: the careful way
             return None
         rows = table.num_rows
@@ -415,18 +440,18 @@ def _parse_arrow(layout: _Layout, wanted: list[str]):
         good = np.arange(rows)
         table = None
         try:
-            table = pcsv.read_csv(pa.py_buffer(_record_bytes(layout, good)), read, parse,
-                                  convert)  # fmt: skip
+            table = pcsv.read_csv(pa.py_buffer(_record_bytes(layout, good)), read, parse, convert)
         except pa.ArrowInvalid:  # a row with the wrong number of fields: find them, drop them
             pass
         if table is None or table.num_rows != rows:
             counts = _field_counts(layout)
             good = np.flatnonzero(counts == len(header))
-            table = pcsv.read_csv(pa.py_buffer(_record_bytes(layout, good)), read, parse,
-                                  convert)  # fmt: skip
+            table = pcsv.read_csv(pa.py_buffer(_record_bytes(layout, good)), read, parse, convert)
         if table.num_rows != len(good):  # the scan and pyarrow disagree on the records
-            raise RuntimeError(f"pyarrow read {table.num_rows} rows where "
-                               f"the scan found {len(good)}; use engine='numpy'")
+            raise RuntimeError(
+                f"pyarrow read {table.num_rows} rows where "
+                f"the scan found {len(good)}; use engine='numpy'"
+            )
     text: dict[str, TextColumn] = {}
     for name in header:
         column = _text_from_arrow(table[name])
@@ -439,8 +464,10 @@ def _parse_arrow(layout: _Layout, wanted: list[str]):
     bad: dict[str, NDArray[np.bool_]] = {}
     for name, (number, blank, wrong) in zip(wanted, converted, strict=True):
         values[name], empty[name], bad[name] = (
-            _spread(number, good, rows, np.nan), _spread(blank, good, rows, False),
-            _spread(wrong, good, rows, False))  # fmt: skip
+            _spread(number, good, rows, np.nan),
+            _spread(blank, good, rows, False),
+            _spread(wrong, good, rows, False),
+        )
     return text, values, empty, bad, counts
 
 
@@ -538,8 +565,9 @@ def _split_plain(layout: _Layout, good: NDArray[np.intp]) -> dict[str, TextColum
     return columns
 
 
-def _gather(buffer: NDArray[np.uint8], starts: NDArray[np.int64],
-            lengths: NDArray[np.int64]) -> tuple[NDArray[np.uint8], NDArray[np.int64]]:  # fmt: skip
+def _gather(
+    buffer: NDArray[np.uint8], starts: NDArray[np.int64], lengths: NDArray[np.int64]
+) -> tuple[NDArray[np.uint8], NDArray[np.int64]]:
     offsets = np.zeros(len(starts) + 1, np.int64)
     np.cumsum(lengths, out=offsets[1:])
     total = int(offsets[-1])
@@ -553,11 +581,14 @@ def _split_quoted(layout: _Layout, good: NDArray[np.intp]) -> dict[str, TextColu
     """Quoted fields (commas, quotes, line breaks inside): Python's csv module, record by
     record."""
     data = layout.data
-    fields = [next(csv.reader([data[a:b].decode("utf-8")]))
-              for a, b in zip(layout.starts[good].tolist(), layout.ends[good].tolist(),
-                              strict=True)]  # fmt: skip
-    return {name: TextColumn.from_strings(row[position] for row in fields)
-            for position, name in enumerate(layout.header)}  # fmt: skip
+    fields = [
+        next(csv.reader([data[a:b].decode("utf-8")]))
+        for a, b in zip(layout.starts[good].tolist(), layout.ends[good].tolist(), strict=True)
+    ]
+    return {
+        name: TextColumn.from_strings(row[position] for row in fields)
+        for position, name in enumerate(layout.header)
+    }
 
 
 def _numbers(column: TextColumn) -> tuple[FloatArray, NDArray[np.bool_], NDArray[np.bool_]]:
@@ -570,12 +601,20 @@ def _numbers(column: TextColumn) -> tuple[FloatArray, NDArray[np.bool_], NDArray
     present = np.flatnonzero(~blank)
     if not len(present):
         return number, blank, wrong
-    data, offsets = (column.data, column.offsets) if len(present) == rows else \
-        (lambda taken: (taken.data, taken.offsets))(column.take(present))  # fmt: skip
+    data, offsets = (
+        (column.data, column.offsets)
+        if len(present) == rows
+        else (lambda taken: (taken.data, taken.offsets))(column.take(present))
+    )
     lines = np.insert(data[offsets[0] : offsets[-1]], (offsets[1:-1] - offsets[0]), 10)
     try:
-        parsed = np.loadtxt(io.BytesIO(lines.tobytes() + b"\n"), dtype=np.float64,
-                            comments=None, delimiter="\x1f", ndmin=1)  # fmt: skip
+        parsed = np.loadtxt(
+            io.BytesIO(lines.tobytes() + b"\n"),
+            dtype=np.float64,
+            comments=None,
+            delimiter="\x1f",
+            ndmin=1,
+        )
         if len(parsed) != len(present):
             raise ValueError("lines lost")
         number[present] = parsed
@@ -593,9 +632,15 @@ def _numbers(column: TextColumn) -> tuple[FloatArray, NDArray[np.bool_], NDArray
 
 
 # --- the errors of each row -----------------------------------------------------------------------
-def _row_errors(layout: _Layout, counts: NDArray[np.int64] | None, text: dict[str, TextColumn],
-                empty: dict[str, NDArray[np.bool_]], bad: dict[str, NDArray[np.bool_]],
-                wanted: list[str], required: set[str]) -> dict[int, str]:  # fmt: skip
+def _row_errors(
+    layout: _Layout,
+    counts: NDArray[np.int64] | None,
+    text: dict[str, TextColumn],
+    empty: dict[str, NDArray[np.bool_]],
+    bad: dict[str, NDArray[np.bool_]],
+    wanted: list[str],
+    required: set[str],
+) -> dict[int, str]:
     """Why each bad row is bad: its field count, else its first bad field in ``wanted`` order."""
     errors: dict[int, str] = {}
     width = len(layout.header)
@@ -604,8 +649,7 @@ def _row_errors(layout: _Layout, counts: NDArray[np.int64] | None, text: dict[st
             shown = layout.data[layout.starts[row] : layout.ends[row]].decode("utf-8")
             if len(shown) > _SHOWN:
                 shown = shown[:_SHOWN] + "..."
-            errors[row] = (f"line has {counts[row]} fields, the header has {width}: "
-                           f"{shown!r}")  # fmt: skip
+            errors[row] = f"line has {counts[row]} fields, the header has {width}: {shown!r}"
     flagged = np.zeros(len(layout.line), bool)
     for name in wanted:
         flagged |= bad[name]

@@ -39,8 +39,9 @@ def quote_always(text: str) -> str:
     return '"' + text.replace('"', '""') + '"'
 
 
-def ragged_take(data: NDArray[np.uint8], offsets: NDArray[np.int64],
-                rows: NDArray[np.intp]) -> tuple[NDArray[np.uint8], NDArray[np.int64]]:  # fmt: skip
+def ragged_take(
+    data: NDArray[np.uint8], offsets: NDArray[np.int64], rows: NDArray[np.intp]
+) -> tuple[NDArray[np.uint8], NDArray[np.int64]]:
     """The byte strings ``rows`` of a ragged (data, offsets) column, vectorised."""
     starts, ends = offsets[rows], offsets[np.asarray(rows) + 1]
     lengths = ends - starts

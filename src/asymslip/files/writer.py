@@ -71,24 +71,33 @@ class WrittenTable:
 
     def __str__(self) -> str:
         size = self.bytes / 1e6
-        return (f"wrote {self.rows:,} rows x {self.columns} columns to {self.path} "
-                f"({self.format}, {size:,.1f} MB, {self.seconds:.2f} s)")  # fmt: skip
+        return (
+            f"wrote {self.rows:,} rows x {self.columns} columns to {self.path} "
+            f"({self.format}, {size:,.1f} MB, {self.seconds:.2f} s)"
+        )
 
 
 def table_format(path: str | Path, option: str = "out") -> Format:
     """``"csv"`` or ``"parquet"`` from the extension; anything else is refused."""
     suffix = Path(path).suffix.lower()
     if suffix not in FORMATS:
-        raise InputError(option, f"{path}: the extension must be .csv or .parquet "
-                         f"(got {suffix or 'none'!r})")  # fmt: skip
+        raise InputError(
+            option, f"{path}: the extension must be .csv or .parquet (got {suffix or 'none'!r})"
+        )
     return FORMATS[suffix]
 
 
 class TableWriter:
     """Write chunks of a table with a fixed schema; use :func:`open_table`."""
 
-    def __init__(self, handle: IO[bytes], path: Path, schema: Sequence[tuple[str, Kind]],
-                 fmt: Format, engine: str) -> None:  # fmt: skip
+    def __init__(
+        self,
+        handle: IO[bytes],
+        path: Path,
+        schema: Sequence[tuple[str, Kind]],
+        fmt: Format,
+        engine: str,
+    ) -> None:
         self.path, self.schema, self.format, self.engine = path, list(schema), fmt, engine
         self.rows = 0
         self._handle = handle
@@ -111,8 +120,9 @@ class TableWriter:
             # Dictionary pages only for the category columns: trying them on a million distinct
             # doubles more than doubles the write time and saves nothing.
             categories = [name for name, kind in schema if kind == "category"]
-            self._parquet = pq.ParquetWriter(pa.PythonFile(handle, mode="w"), self._arrow_schema,
-                                             use_dictionary=categories)  # fmt: skip
+            self._parquet = pq.ParquetWriter(
+                pa.PythonFile(handle, mode="w"), self._arrow_schema, use_dictionary=categories
+            )
 
     def write(self, chunk: Mapping[str, Column]) -> None:
         """Append rows: one entry per schema column, all of the same length."""
@@ -123,16 +133,20 @@ class TableWriter:
         if self.format == "parquet":
             import pyarrow as pa
 
-            table = pa.table([_arrow_array(columns[name], kind) for name, kind in self.schema],
-                             schema=self._arrow_schema)  # fmt: skip
+            table = pa.table(
+                [_arrow_array(columns[name], kind) for name, kind in self.schema],
+                schema=self._arrow_schema,
+            )
             assert self._parquet is not None
             self._parquet.write_table(table)
         elif self.engine == "pyarrow":
             self._write_csv_arrow(columns)
         else:
             for start in range(0, rows, _NUMPY_ROWS):
-                part = {name: _slice(column, start, start + _NUMPY_ROWS)
-                        for name, column in columns.items()}  # fmt: skip
+                part = {
+                    name: _slice(column, start, start + _NUMPY_ROWS)
+                    for name, column in columns.items()
+                }
                 self._handle.write(csv_rows(part, self.schema))
         self.rows += rows
 
@@ -150,8 +164,10 @@ class TableWriter:
         names = [name for name, _ in self.schema]
         if set(chunk) != set(names):
             missing, extra = set(names) - set(chunk), set(chunk) - set(names)
-            raise ValueError(f"chunk columns differ from the schema: missing {sorted(missing)}, "
-                             f"unknown {sorted(extra)}")  # fmt: skip
+            raise ValueError(
+                f"chunk columns differ from the schema: missing {sorted(missing)}, "
+                f"unknown {sorted(extra)}"
+            )
         columns: dict[str, Column] = {}
         for name, kind in self.schema:
             column = chunk[name]
@@ -245,17 +261,26 @@ def open_table(
             writer._abandon()
             raise
         writer._close()
-    writer._written = WrittenTable(path, fmt, writer.rows, len(writer.schema),
-                                   path.stat().st_size, time.perf_counter() - writer._started,
-                                   engine)  # fmt: skip
+    writer._written = WrittenTable(
+        path,
+        fmt,
+        writer.rows,
+        len(writer.schema),
+        path.stat().st_size,
+        time.perf_counter() - writer._started,
+        engine,
+    )
 
 
 # --- columns as Arrow arrays ---------------------------------------------------------------------
 def _arrow_type(kind: Kind):  # noqa: ANN202
     import pyarrow as pa
 
-    return {"float": pa.float64(), "text": pa.large_string(),
-            "category": pa.dictionary(pa.int32(), pa.string())}[kind]  # fmt: skip
+    return {
+        "float": pa.float64(),
+        "text": pa.large_string(),
+        "category": pa.dictionary(pa.int32(), pa.string()),
+    }[kind]
 
 
 def _arrow_array(column: Column, kind: Kind):  # noqa: ANN202
@@ -269,13 +294,15 @@ def _arrow_array(column: Column, kind: Kind):  # noqa: ANN202
         assert isinstance(column, TextColumn)
         offsets = column.offsets - column.offsets[0]
         data = np.ascontiguousarray(column.data[column.offsets[0] : column.offsets[-1]])
-        return pa.LargeStringArray.from_buffers(len(column), pa.py_buffer(offsets),
-                                                pa.py_buffer(data))  # fmt: skip
+        return pa.LargeStringArray.from_buffers(
+            len(column), pa.py_buffer(offsets), pa.py_buffer(data)
+        )
     assert isinstance(column, Categorical)
     codes = column.codes
     missing = codes < 0
-    indices = pa.array(np.where(missing, 0, codes).astype(np.int32),
-                       mask=missing if missing.any() else None)  # fmt: skip
+    indices = pa.array(
+        np.where(missing, 0, codes).astype(np.int32), mask=missing if missing.any() else None
+    )
     return pa.DictionaryArray.from_arrays(indices, pa.array(column.categories, pa.string()))
 
 
@@ -312,8 +339,9 @@ def csv_rows(columns: Mapping[str, Column], schema: Sequence[tuple[str, Kind]]) 
             segments.append([names[code] for code in column.codes.tolist()])
         else:
             assert isinstance(column, TextColumn)
-            segments.append([b'"' + item.replace(b'"', b'""') + b'"'
-                             for item in column.to_bytes_list()])  # fmt: skip
+            segments.append(
+                [b'"' + item.replace(b'"', b'""') + b'"' for item in column.to_bytes_list()]
+            )
     flush()
     width = 2 * len(segments)
     pieces: list[bytes] = [b","] * (rows * width)

@@ -78,11 +78,21 @@ class LawState:
     def as_floats(self, number: type[float] = float) -> LawState:
         """One cycle's state with every number as ``number`` (Python floats by default) and
         the found flags as bools: a law computed on NumPy returns 0-d arrays."""
-        return LawState(number(self.P1), number(self.P2), number(self.a1),
-                        number(self.a2), number(self.da), number(self.L_I1), number(self.L_I2),
-                        number(self.load_slope1), number(self.load_slope2),
-                        number(self.L_I_slope1), number(self.L_I_slope2),
-                        bool(self.found1), bool(self.found2))  # fmt: skip
+        return LawState(
+            number(self.P1),
+            number(self.P2),
+            number(self.a1),
+            number(self.a2),
+            number(self.da),
+            number(self.L_I1),
+            number(self.L_I2),
+            number(self.load_slope1),
+            number(self.load_slope2),
+            number(self.L_I_slope1),
+            number(self.L_I_slope2),
+            bool(self.found1),
+            bool(self.found2),
+        )
 
     @property
     def a_slope1(self) -> FloatArray:
@@ -123,8 +133,9 @@ class ContactLaw(abc.ABC):
         a = np.asarray(a, dtype=np.float64)
         step = 1e-5 * a
         upper, lower = a + step, a - step
-        change = self.normal_multiplier_at(upper, self.load_slope(upper)) \
-            - self.normal_multiplier_at(lower, self.load_slope(lower))  # fmt: skip
+        change = self.normal_multiplier_at(
+            upper, self.load_slope(upper)
+        ) - self.normal_multiplier_at(lower, self.load_slope(lower))
         return change / (2 * step) / np.asarray(load_slope, dtype=np.float64)
 
     def load_difference(self, a: ArrayLike, d: ArrayLike) -> FloatArray:
@@ -134,8 +145,9 @@ class ContactLaw(abc.ABC):
     # --- in terms of the load ---------------------------------------------------------------
     def half_width_where_possible(self, P: ArrayLike) -> tuple[FloatArray, BoolArray]:
         """a(P), and a mask of the loads the law can carry (NaN elsewhere)."""
-        return invert_increasing_where_possible(self.load, np.asarray(P, dtype=np.float64),
-                                                self.load_slope)  # fmt: skip
+        return invert_increasing_where_possible(
+            self.load, np.asarray(P, dtype=np.float64), self.load_slope
+        )
 
     def half_width(self, P: ArrayLike) -> FloatArray:
         """Contact half-width a(P), the inverse of :meth:`load`."""
@@ -143,8 +155,12 @@ class ContactLaw(abc.ABC):
         if not np.all(found):
             loads = np.asarray(P, dtype=np.float64)
             shown = float(loads.ravel()[int(np.flatnonzero(~np.asarray(found).ravel())[0])])
-            raise InputError("P", f"no contact half-width of the {self.name} law carries this "
-                             "load: it is outside the law's range", shown)  # fmt: skip
+            raise InputError(
+                "P",
+                f"no contact half-width of the {self.name} law carries this "
+                "load: it is outside the law's range",
+                shown,
+            )
         return a
 
     def half_width_near(self, P: ArrayLike, P_ref: ArrayLike, a_ref: ArrayLike) -> FloatArray:
@@ -156,8 +172,9 @@ class ContactLaw(abc.ABC):
         a_ref = np.asarray(a_ref, dtype=np.float64)
         with np.errstate(all="ignore"):
             guess = a_ref + (P - P_ref) / self.load_slope(a_ref)
-        a, converged = newton_from(self.load, self.load_slope, P, guess,
-                                   both=getattr(self, "load_and_slope", None))  # fmt: skip
+        a, converged = newton_from(
+            self.load, self.load_slope, P, guess, both=getattr(self, "load_and_slope", None)
+        )
         if not np.all(converged):
             a = np.array(a, dtype=float)
             retry = ~np.asarray(converged)
@@ -197,8 +214,15 @@ class ContactLaw(abc.ABC):
         a1, found1 = self.half_width_where_possible(P1)
         with np.errstate(all="ignore"):
             start = np.where(found1, a1, 1.0)
-            da, found2 = growth_from(self.load, self.load_slope, self.load_difference, start,
-                                     P2, dP, both=getattr(self, "load_and_slope", None))
+            da, found2 = growth_from(
+                self.load,
+                self.load_slope,
+                self.load_difference,
+                start,
+                P2,
+                dP,
+                both=getattr(self, "load_and_slope", None),
+            )
             found2 = found2 & found1
             a2 = a1 + da
         return self._state_from_half_widths(P1, P2, a1, a2, da, found1, found2)
@@ -209,28 +233,47 @@ class ContactLaw(abc.ABC):
         Laws whose three share costly parts (the rounded flat's corner angle) override it.
         """
         slope = self.load_slope(a)
-        return (slope, self.normal_multiplier_at(a, slope),
-                self.normal_multiplier_slope_at(a, slope))  # fmt: skip
+        return (
+            slope,
+            self.normal_multiplier_at(a, slope),
+            self.normal_multiplier_slope_at(a, slope),
+        )
 
-    def _state_from_half_widths(self, P1: FloatArray, P2: FloatArray, a1: FloatArray,
-                                a2: FloatArray, da: FloatArray, found1: BoolArray,
-                                found2: BoolArray) -> LawState:  # fmt: skip
+    def _state_from_half_widths(
+        self,
+        P1: FloatArray,
+        P2: FloatArray,
+        a1: FloatArray,
+        a2: FloatArray,
+        da: FloatArray,
+        found1: BoolArray,
+        found2: BoolArray,
+    ) -> LawState:
         """The multipliers and slopes at known half-widths (NaN where a load has no a)."""
         with np.errstate(all="ignore"):  # unfound elements are NaN and marked, not warned
             (slope1, L_I1, L_I_slope1), (slope2, L_I2, L_I_slope2) = (
                 self.quantities_at(np.where(found, a, self.stand_in_half_width))
-                for a, found in ((a1, found1), (a2, found2)))  # fmt: skip
+                for a, found in ((a1, found1), (a2, found2))
+            )
 
         def mark(values: ArrayLike, found: BoolArray) -> FloatArray:
             return np.where(found, values, np.nan)
 
         return LawState(
-            P1=P1, P2=P2, a1=mark(a1, found1), a2=mark(a2, found2), da=mark(da, found2),
-            L_I1=mark(L_I1, found1), L_I2=mark(L_I2, found2),
-            load_slope1=mark(slope1, found1), load_slope2=mark(slope2, found2),
-            L_I_slope1=mark(L_I_slope1, found1), L_I_slope2=mark(L_I_slope2, found2),
-            found1=np.asarray(found1), found2=np.asarray(found2),
-        )  # fmt: skip
+            P1=P1,
+            P2=P2,
+            a1=mark(a1, found1),
+            a2=mark(a2, found2),
+            da=mark(da, found2),
+            L_I1=mark(L_I1, found1),
+            L_I2=mark(L_I2, found2),
+            load_slope1=mark(slope1, found1),
+            load_slope2=mark(slope2, found2),
+            L_I_slope1=mark(L_I_slope1, found1),
+            L_I_slope2=mark(L_I_slope2, found2),
+            found1=np.asarray(found1),
+            found2=np.asarray(found2),
+        )
 
     #: A half-width where the law is defined, evaluated in place of a load it cannot carry.
     stand_in_half_width: float = 1.0
@@ -276,5 +319,8 @@ class ContactLaw(abc.ABC):
 
     def load_warnings(self, P1: float, P2: float) -> list[str]:
         """Messages for the load states where the law is extrapolated."""
-        return [self.extrapolation_note(label) for label, P in (("P1", P1), ("P2", P2))
-                if bool(self.extrapolated(P))]  # fmt: skip
+        return [
+            self.extrapolation_note(label)
+            for label, P in (("P1", P1), ("P2", P2))
+            if bool(self.extrapolated(P))
+        ]

@@ -86,8 +86,10 @@ class FlatRoundedLaw(ContactLaw):
         """P(a) and dP/da from one chord and one corner angle (a Newton step needs both)."""
         chord = flat_rounded_chord(a, self.c)
         angle = flat_rounded_corner_angle(chord, self.c)
-        return (flat_rounded_load_at_angle(a, self.c, self.R, self.E_star, angle, chord),
-                flat_rounded_load_slope_at_angle(a, self.c, self.R, self.E_star, angle))
+        return (
+            flat_rounded_load_at_angle(a, self.c, self.R, self.E_star, angle, chord),
+            flat_rounded_load_slope_at_angle(a, self.c, self.R, self.E_star, angle),
+        )
 
     def half_width_where_possible(self, P: ArrayLike) -> tuple[FloatArray, BoolArray]:
         """a(P) by Newton on the convex P(a) from above, to a few units in the last place.
@@ -108,17 +110,20 @@ class FlatRoundedLaw(ContactLaw):
             # convex P(a) converges monotonically.
             lever = 2 * self.c / np.pi
             upper = np.minimum(self.c + hertz, lever + np.sqrt(hertz * hertz + lever * lever))
-            a, converged = newton_from(self.load, self.load_slope, load, upper,
-                                       both=self.load_and_slope)  # fmt: skip
+            a, converged = newton_from(
+                self.load, self.load_slope, load, upper, both=self.load_and_slope
+            )
         if not np.all(converged):
             a = np.array(a, dtype=float)
             retry = ~np.asarray(converged) & np.isfinite(hertz) & (load > 0)
             if retry.any():
                 a[retry], _ = invert_increasing_where_possible(
-                    self.load, np.broadcast_to(load, a.shape)[retry], self.load_slope,
+                    self.load,
+                    np.broadcast_to(load, a.shape)[retry],
+                    self.load_slope,
                     lower=np.maximum(self.c, np.broadcast_to(hertz, a.shape)[retry]),
                     upper=self.c + np.broadcast_to(hertz, a.shape)[retry],
-                )  # fmt: skip
+                )
             a = a[()] if a.ndim == 0 else a
         # a - c must be resolved: the nearest doubles to c can carry loads far above a tiny P.
         with np.errstate(invalid="ignore"):
@@ -129,8 +134,13 @@ class FlatRoundedLaw(ContactLaw):
         """a(P), refusing a load too small to separate a from c in double precision."""
         load = positive("P", P)
         a, found = self.half_width_where_possible(load)
-        require(found, "P", "is too small: a(P) equals the flat half-width c in double "
-                "precision (P R/(E* c^2) below about 1e-23)", load)  # fmt: skip
+        require(
+            found,
+            "P",
+            "is too small: a(P) equals the flat half-width c in double "
+            "precision (P R/(E* c^2) below about 1e-23)",
+            load,
+        )
         return a
 
     def load_difference(self, a: ArrayLike, d: ArrayLike) -> FloatArray:
@@ -142,8 +152,7 @@ class FlatRoundedLaw(ContactLaw):
         to rounding for d <= a/4 with the rule chosen by du/sqrt(a).  u2 - u1 = d/(u1 + u2),
         without cancellation.
         """
-        a, d = np.broadcast_arrays(np.asarray(a, dtype=np.float64),
-                                   np.asarray(d, dtype=np.float64))  # fmt: skip
+        a, d = np.broadcast_arrays(np.asarray(a, dtype=np.float64), np.asarray(d, dtype=np.float64))
         near = d <= QUADRATURE_LIMIT * a
         out = np.empty(a.shape)
         if near.any():
@@ -152,8 +161,9 @@ class FlatRoundedLaw(ContactLaw):
             u2 = np.sqrt(a_near + d_near - self.c)
             du = d_near / (u1 + u2)
             # The singularities at u^2 = -c, -2c lie at least sqrt(a) from [u1, u2].
-            out[near] = gauss_integral(lambda u: 2 * u * self.load_slope(self.c + u * u), u1,
-                                       du, du / np.sqrt(a_near))  # fmt: skip
+            out[near] = gauss_integral(
+                lambda u: 2 * u * self.load_slope(self.c + u * u), u1, du, du / np.sqrt(a_near)
+            )
         if (~near).any():
             out[~near] = self.load(a[~near] + d[~near]) - self.load(a[~near])
         return out[()] if out.ndim == 0 else out
@@ -169,9 +179,11 @@ class FlatRoundedLaw(ContactLaw):
         """dP/da, L_I and dL_I/dP from one chord and one corner angle."""
         chord = flat_rounded_chord(a, self.c)
         parameters = (a, self.c, self.R, self.E_star, flat_rounded_corner_angle(chord, self.c))
-        return (flat_rounded_load_slope_at_angle(*parameters),
-                flat_rounded_normal_edge_multiplier_at_angle(*parameters),
-                flat_rounded_normal_edge_multiplier_slope_at_angle(*parameters, chord))
+        return (
+            flat_rounded_load_slope_at_angle(*parameters),
+            flat_rounded_normal_edge_multiplier_at_angle(*parameters),
+            flat_rounded_normal_edge_multiplier_slope_at_angle(*parameters, chord),
+        )
 
     @property
     def stand_in_half_width(self) -> float:  # type: ignore[override]
@@ -180,12 +192,14 @@ class FlatRoundedLaw(ContactLaw):
     def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
         chord = flat_rounded_chord(a, self.c)
         return flat_rounded_normal_edge_multiplier_at_angle(
-            a, self.c, self.R, self.E_star, flat_rounded_corner_angle(chord, self.c))
+            a, self.c, self.R, self.E_star, flat_rounded_corner_angle(chord, self.c)
+        )
 
     def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
         chord = flat_rounded_chord(a, self.c)
         return flat_rounded_normal_edge_multiplier_slope_at_angle(
-            a, self.c, self.R, self.E_star, flat_rounded_corner_angle(chord, self.c), chord)
+            a, self.c, self.R, self.E_star, flat_rounded_corner_angle(chord, self.c), chord
+        )
 
     def profile(self, x: ArrayLike) -> FloatArray:
         """Initial gap h(x) = Max(0, |x| - c)^2/(2R): flat over |x| < c, rounded beyond."""

@@ -71,8 +71,9 @@ class HertzLaw(ContactLaw):
         # One cycle on Python floats: the math kernels (NumPy scalars take the NumPy ones).
         scalar = type(P1) is float and type(dP) is float
         if not scalar:
-            P1, dP = np.broadcast_arrays(np.asarray(P1, dtype=np.float64),
-                                         np.asarray(dP, dtype=np.float64))  # fmt: skip
+            P1, dP = np.broadcast_arrays(
+                np.asarray(P1, dtype=np.float64), np.asarray(dP, dtype=np.float64)
+            )
         R, E_star = self.R, self.E_star
         if scalar:  # inside the core's errstate; one cycle skips the cost of its own
             return self._closed_form_state(P1, dP, R, E_star, True)
@@ -80,8 +81,9 @@ class HertzLaw(ContactLaw):
             return self._closed_form_state(P1, dP, R, E_star, False)
 
     @staticmethod
-    def _closed_form_state(P1: FloatArray, dP: FloatArray, R: float, E_star: float,
-                           scalar: bool) -> LawState:  # fmt: skip
+    def _closed_form_state(
+        P1: FloatArray, dP: FloatArray, R: float, E_star: float, scalar: bool
+    ) -> LawState:
         kernels = scalar_kernels if scalar else asymslip_gen.hertz
         P2 = P1 + dP
         a1 = kernels.hertz_half_width(P1, R, E_star)
@@ -90,14 +92,20 @@ class HertzLaw(ContactLaw):
         # Every load P > 0 has a half-width; an overflow is caught by the finiteness rule.
         found = True if scalar else np.ones(np.shape(a1), dtype=bool)
         return LawState(
-            P1, P2, a1, a2, da,
+            P1,
+            P2,
+            a1,
+            a2,
+            da,
             kernels.hertz_normal_edge_multiplier(P1, R, E_star),
             kernels.hertz_normal_edge_multiplier(P2, R, E_star),
-            kernels.hertz_load_slope(a1, R, E_star), kernels.hertz_load_slope(a2, R, E_star),
+            kernels.hertz_load_slope(a1, R, E_star),
+            kernels.hertz_load_slope(a2, R, E_star),
             kernels.hertz_normal_edge_multiplier_slope(P1, R, E_star),
             kernels.hertz_normal_edge_multiplier_slope(P2, R, E_star),
-            found, found,
-        )  # fmt: skip
+            found,
+            found,
+        )
 
     def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
         return hertz_normal_edge_multiplier(self.load(a), self.R, self.E_star)

@@ -38,16 +38,22 @@ def import_law_module(path: str | Path) -> ModuleType:
     try:
         spec.loader.exec_module(module)
     except Exception as error:  # any failure of the user's file is a bad --module
-        raise InputError("module", f"could not be imported ({type(error).__name__}: {error})",
-                         str(path)) from None  # fmt: skip
+        raise InputError(
+            "module", f"could not be imported ({type(error).__name__}: {error})", str(path)
+        ) from None
     description = getattr(module, "__asymslip_law__", None)
     if not isinstance(description, Mapping) or not isinstance(description.get("params"), list):
-        raise InputError("module", "is not an asymslip law module (it has no __asymslip_law__ "
-                         "description; write one with `asymslip derive`)", str(path))  # fmt: skip
+        raise InputError(
+            "module",
+            "is not an asymslip law module (it has no __asymslip_law__ "
+            "description; write one with `asymslip derive`)",
+            str(path),
+        )
     missing = [name for name in REQUIRED_FUNCTIONS if not callable(getattr(module, name, None))]
     if missing:
-        raise InputError("module", f"is not an asymslip law module: it lacks "
-                         f"{', '.join(missing)}", str(path))  # fmt: skip
+        raise InputError(
+            "module", f"is not an asymslip law module: it lacks {', '.join(missing)}", str(path)
+        )
     return module
 
 
@@ -86,20 +92,31 @@ class ModuleLaw(ContactLaw):
         listed = ", ".join(self.param_names) or "none"
         missing = [name for name in self.param_names if name not in param_values]
         if missing:
-            raise InputError("param", f"{', '.join(missing)} required by the law {self.name} in "
-                             f"{source} (its parameters: {listed}); give NAME=VALUE")  # fmt: skip
+            raise InputError(
+                "param",
+                f"{', '.join(missing)} required by the law {self.name} in "
+                f"{source} (its parameters: {listed}); give NAME=VALUE",
+            )
         unknown = sorted(set(param_values) - set(self.param_names))
         if unknown:
-            raise InputError("param", f"{', '.join(unknown)} is not a parameter of the law "
-                             f"{self.name} in {source} (its parameters: {listed})")  # fmt: skip
-        self.params = {name: float(as_float_array(name, param_values[name]))
-                       for name in self.param_names}  # fmt: skip
+            raise InputError(
+                "param",
+                f"{', '.join(unknown)} is not a parameter of the law "
+                f"{self.name} in {source} (its parameters: {listed})",
+            )
+        self.params = {
+            name: float(as_float_array(name, param_values[name])) for name in self.param_names
+        }
         if description.get("parameters_are") == "positive real numbers":
             for name, value in self.params.items():
                 if not value > 0:
-                    raise InputError("param", f"{name} must be > 0: the law {self.name} was "
-                                     "derived (and its range established) for positive "
-                                     "parameters", value)  # fmt: skip
+                    raise InputError(
+                        "param",
+                        f"{name} must be > 0: the law {self.name} was "
+                        "derived (and its range established) for positive "
+                        "parameters",
+                        value,
+                    )
         self._values = tuple(self.params.values())
         self.valid_half_widths, self.valid_loads = self._range()
         #: False when ``asymslip derive`` could not establish where P(a) increases (P =
@@ -125,8 +142,7 @@ class ModuleLaw(ContactLaw):
         if not all(callable(function) for function in functions):
             return (0.0, np.inf), (0.0, np.inf)
         with np.errstate(all="ignore"):
-            a_min, a_max, P_min, P_max = (float(function(*self._values))
-                                          for function in functions)  # fmt: skip
+            a_min, a_max, P_min, P_max = (float(function(*self._values)) for function in functions)
         return (a_min, a_max), (P_min, P_max)
 
     #: The scan of :meth:`_first_branch`: half-widths from 1e-12 to 1e12, log-spaced.
@@ -145,8 +161,9 @@ class ModuleLaw(ContactLaw):
         """
         (a_min, a_max), (P_min, P_max) = self.valid_half_widths, self.valid_loads
         with np.errstate(all="ignore"):
-            falling = np.flatnonzero((self.load_slope(self.BRANCH_SCAN) <= 0)
-                                     & (self.BRANCH_SCAN > a_min))  # fmt: skip
+            falling = np.flatnonzero(
+                (self.load_slope(self.BRANCH_SCAN) <= 0) & (self.BRANCH_SCAN > a_min)
+            )
         if falling.size == 0:
             return (a_min, a_max), (P_min, P_max)
         first = int(falling[0])
@@ -183,7 +200,8 @@ class ModuleLaw(ContactLaw):
         else:
             upper = np.maximum(lower, 1.0)
         a, found = invert_increasing_where_possible(
-            self.load, np.where(inside, P, np.nan), self.load_slope, lower=lower, upper=upper)
+            self.load, np.where(inside, P, np.nan), self.load_slope, lower=lower, upper=upper
+        )
         return a, np.asarray(found) & inside
 
     def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
@@ -202,8 +220,9 @@ class ModuleLaw(ContactLaw):
         return replace(state, found2=np.asarray(state.found2) & inside)
 
     def _call(self, function: Callable[..., FloatArray], a: ArrayLike) -> FloatArray:
-        return np.asarray(function(np.asarray(a, dtype=np.float64), *self._values),
-                          dtype=np.float64)  # fmt: skip
+        return np.asarray(
+            function(np.asarray(a, dtype=np.float64), *self._values), dtype=np.float64
+        )
 
     def load(self, a: ArrayLike) -> FloatArray:
         return self._call(self.module.load, a)

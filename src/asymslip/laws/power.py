@@ -49,9 +49,12 @@ def _hyp2f1():
     try:
         from scipy.special import hyp2f1
     except ImportError:
-        raise InputError("n", "the power-law pressure for n other than 1 or 2 needs SciPy's "
-                         "hyp2f1: install the 'special' extra (pip install "
-                         "'asymslip[special]')") from None  # fmt: skip
+        raise InputError(
+            "n",
+            "the power-law pressure for n other than 1 or 2 needs SciPy's "
+            "hyp2f1: install the 'special' extra (pip install "
+            "'asymslip[special]')",
+        ) from None
     return hyp2f1
 
 
@@ -91,8 +94,11 @@ class PowerLaw(ContactLaw):
         try:
             shape_factor(float(exponent))
         except OverflowError:  # log Gamma(n/2) beyond the double range: n above about 5e305
-            raise InputError("n", "is too large: the factor K(n) of P = K E* A a^n overflows "
-                             "double precision", float(exponent)) from None  # fmt: skip
+            raise InputError(
+                "n",
+                "is too large: the factor K(n) of P = K E* A a^n overflows double precision",
+                float(exponent),
+            ) from None
         object.__setattr__(self, "n", float(exponent))
         object.__setattr__(self, "E_star", float(positive("E_star", self.E_star)))
 
@@ -105,8 +111,12 @@ class PowerLaw(ContactLaw):
     def _parameters(self) -> tuple[np.float64, np.float64, np.float64, np.float64]:
         # NumPy scalars, not Python floats: a kernel's A**(3/2) of a huge A is then inf (which
         # the rules refuse, naming the load) instead of Python's OverflowError.
-        return (np.float64(self.n), np.float64(self.A), np.float64(self.E_star),
-                np.float64(self.shape_factor))  # fmt: skip
+        return (
+            np.float64(self.n),
+            np.float64(self.A),
+            np.float64(self.E_star),
+            np.float64(self.shape_factor),
+        )
 
     def load(self, a: ArrayLike) -> FloatArray:
         return power_law_load(a, *self._parameters)
@@ -134,8 +144,9 @@ class PowerLaw(ContactLaw):
 
     def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
         """Closed forms: a = (P/(K E* A))^(1/n); a2 - a1 = a1 expm1(log1p(dP/P1)/n)."""
-        P1, dP = np.broadcast_arrays(np.asarray(P1, dtype=np.float64),
-                                     np.asarray(dP, dtype=np.float64))  # fmt: skip
+        P1, dP = np.broadcast_arrays(
+            np.asarray(P1, dtype=np.float64), np.asarray(dP, dtype=np.float64)
+        )
         parameters = self._parameters
         with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):
             P2 = P1 + dP
@@ -148,13 +159,20 @@ class PowerLaw(ContactLaw):
             found1 = np.ones(np.shape(a1), dtype=bool)
             found2 = found1
             return LawState(
-                P1=P1, P2=P2, a1=a1, a2=a2, da=da, L_I1=L_I1, L_I2=L_I2,
+                P1=P1,
+                P2=P2,
+                a1=a1,
+                a2=a2,
+                da=da,
+                L_I1=L_I1,
+                L_I2=L_I2,
                 load_slope1=power_law_load_slope(a1, *parameters),
                 load_slope2=power_law_load_slope(a2, *parameters),
                 L_I_slope1=power_law_normal_edge_multiplier_slope(P1, *parameters),
                 L_I_slope2=power_law_normal_edge_multiplier_slope(P2, *parameters),
-                found1=found1, found2=found2,
-            )  # fmt: skip
+                found1=found1,
+                found2=found2,
+            )
 
     def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
         return power_law_normal_edge_multiplier(self.load(a), *self._parameters)

@@ -71,8 +71,9 @@ def invert_increasing(
         If a target is not finite, or no bracket is found within the double range (the target
         is outside the range of ``function``).
     """
-    root, found = invert_increasing_where_possible(function, target, slope, lower=lower,
-                                                   upper=upper)  # fmt: skip
+    root, found = invert_increasing_where_possible(
+        function, target, slope, lower=lower, upper=upper
+    )
     if not np.all(found):
         goal = np.asarray(target, dtype=np.float64)
         index = int(np.flatnonzero(~np.asarray(found).ravel())[0])
@@ -144,8 +145,10 @@ def newton_from(
     shape = x.shape
     x, goal = x.reshape(-1), np.ascontiguousarray(goal).reshape(-1)
     if both is None:
+
         def both(points: FloatArray) -> tuple[FloatArray, FloatArray]:
             return function(points), slope(points)
+
     usable = np.isfinite(x) & (x > 0) & np.isfinite(goal)
     converged = np.zeros(x.shape, dtype=bool)
     moving = usable.copy()
@@ -195,8 +198,9 @@ def _start(value: ArrayLike | None, goal: FloatArray) -> FloatArray:
     return start
 
 
-def _residual(function: Callable[[FloatArray], FloatArray], x: FloatArray,
-              goal: FloatArray) -> FloatArray:  # fmt: skip
+def _residual(
+    function: Callable[[FloatArray], FloatArray], x: FloatArray, goal: FloatArray
+) -> FloatArray:
     return np.asarray(function(x), dtype=np.float64) - goal
 
 
@@ -330,8 +334,12 @@ GAUSS_RULES = tuple(
 )
 
 
-def gauss_integral(integrand: Callable[[FloatArray], FloatArray], start: FloatArray,
-                   length: FloatArray, ratio: FloatArray) -> FloatArray:  # fmt: skip
+def gauss_integral(
+    integrand: Callable[[FloatArray], FloatArray],
+    start: FloatArray,
+    length: FloatArray,
+    ratio: FloatArray,
+) -> FloatArray:
     """int_start^(start + length) integrand, elementwise, each with the smallest rule of
     :data:`GAUSS_RULES` whose limit covers its ``ratio`` (all ratios <= QUADRATURE_LIMIT)."""
     out = np.empty(start.shape)
@@ -397,9 +405,14 @@ def growth_from(
         retry = ~found
         a2 = np.array(a2, dtype=float)
         solved, solved_found = invert_increasing_where_possible(
-            load, P2[retry], slope, lower=a1[retry], upper=np.where(
-                np.isfinite(guess[retry]) & (guess[retry] > a1[retry]), guess[retry],
-                2 * a1[retry]))  # fmt: skip
+            load,
+            P2[retry],
+            slope,
+            lower=a1[retry],
+            upper=np.where(
+                np.isfinite(guess[retry]) & (guess[retry] > a1[retry]), guess[retry], 2 * a1[retry]
+            ),
+        )
         a2[retry], found = solved, np.array(found, dtype=bool)
         found[retry] = solved_found
     with np.errstate(all="ignore"):

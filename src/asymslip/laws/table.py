@@ -136,8 +136,9 @@ class LogLogCurve:
         # the vertex -c2 / (3 c3).
         c1, c2, c3 = self.c1[1:-1], self.c2[1:-1], self.c3[1:-1]
         vertex = np.clip(np.divide(-c2, 3 * c3, out=np.zeros_like(c2), where=c3 > 0), 0, h)
-        lowest = np.minimum.reduce([c1, c1 + 2 * c2 * h + 3 * c3 * h**2,
-                                    c1 + 2 * c2 * vertex + 3 * c3 * vertex**2])  # fmt: skip
+        lowest = np.minimum.reduce(
+            [c1, c1 + 2 * c2 * h + 3 * c3 * h**2, c1 + 2 * c2 * vertex + 3 * c3 * vertex**2]
+        )
         if not np.all(lowest > 0) or not (self.c1[0] > 0 and self.c1[-1] > 0):
             raise InputError("table", "the monotone fit is not strictly increasing (internal)")
 
@@ -147,8 +148,9 @@ class LogLogCurve:
         # interval, so that its change measures the fit's error there, not a straight line's.
         return np.clip(j, 1, self.knots.size - 1) if self.cubic_ends else j
 
-    def evaluate(self, u: FloatArray, derivatives: int = 1,
-                 j: NDArray[np.intp] | None = None) -> tuple[FloatArray, ...]:  # fmt: skip
+    def evaluate(
+        self, u: FloatArray, derivatives: int = 1, j: NDArray[np.intp] | None = None
+    ) -> tuple[FloatArray, ...]:
         """s(u) and its first ``derivatives`` derivatives (``j``: the pieces, if known)."""
         j = self.piece(u) if j is None else j
         t = u - self.base[j]
@@ -166,8 +168,13 @@ class LogLogCurve:
             + self.c3[j] * (t_high**2 + t_high * t_low + t_low**2)
         )
 
-    def increment(self, u1: FloatArray, du: FloatArray, j1: NDArray[np.intp] | None = None,
-                  j2: NDArray[np.intp] | None = None) -> FloatArray:  # fmt: skip
+    def increment(
+        self,
+        u1: FloatArray,
+        du: FloatArray,
+        j1: NDArray[np.intp] | None = None,
+        j2: NDArray[np.intp] | None = None,
+    ) -> FloatArray:
         """s(u1 + du) - s(u1) for du > 0, keeping full relative precision as du -> 0.
 
         Within one piece the cubic's difference is du times its mean slope.  Across one knot
@@ -176,8 +183,9 @@ class LogLogCurve:
         Across several knots du is at least one spacing and the plain difference is accurate.
         ``j1``, ``j2``: the pieces of u1 and u1 + du, if known.
         """
-        u1, du = np.broadcast_arrays(np.asarray(u1, dtype=np.float64),
-                                     np.asarray(du, dtype=np.float64))  # fmt: skip
+        u1, du = np.broadcast_arrays(
+            np.asarray(u1, dtype=np.float64), np.asarray(du, dtype=np.float64)
+        )
         shape = u1.shape
         u1, du = u1.reshape(-1), du.reshape(-1)
         u2 = u1 + du
@@ -187,8 +195,13 @@ class LogLogCurve:
         out = self.mean_slope(j1, t1, t1 + du) * du
         crossing = j2 != j1
         if crossing.any():
-            k1, k2, v1, v2, step = j1[crossing], j2[crossing], u1[crossing], u2[crossing], \
-                du[crossing]  # fmt: skip
+            k1, k2, v1, v2, step = (
+                j1[crossing],
+                j2[crossing],
+                u1[crossing],
+                u2[crossing],
+                du[crossing],
+            )
             knot = self.base[np.minimum(k1 + 1, self.base.size - 1)]
             g1 = self.mean_slope(k1, v1 - self.base[k1], knot - self.base[k1])
             g2 = self.mean_slope(k2, np.zeros_like(step), v2 - self.base[k2])
@@ -202,8 +215,9 @@ class LogLogCurve:
 _LogLogCurve = LogLogCurve
 
 
-def _validated_points(P: ArrayLike, a: ArrayLike,
-                      lines: list[int] | None = None) -> tuple[FloatArray, FloatArray]:  # fmt: skip
+def _validated_points(
+    P: ArrayLike, a: ArrayLike, lines: list[int] | None = None
+) -> tuple[FloatArray, FloatArray]:
     """Refuse tables the fit cannot use.  ``lines``: the file line (1-based) of each point,
     for messages that point at the line an editor shows; else points are numbered from 1."""
 
@@ -216,21 +230,25 @@ def _validated_points(P: ArrayLike, a: ArrayLike,
         bad = ~np.isfinite(values)
         if bad.any():
             index = int(np.flatnonzero(bad.ravel())[0])
-            raise InputError(name, f"table values must be finite (not inf or nan; "
-                             f"{where(index)})")  # fmt: skip
+            raise InputError(name, f"table values must be finite (not inf or nan; {where(index)})")
     P = as_float_array("P", P)
     a = as_float_array("a", a)
     if P.ndim != 1 or a.ndim != 1 or P.size != a.size:
-        raise InputError("table", "P and a must be 1-D and of the same length",
-                         f"{P.shape} and {a.shape}")  # fmt: skip
+        raise InputError(
+            "table", "P and a must be 1-D and of the same length", f"{P.shape} and {a.shape}"
+        )
     if P.size < MIN_POINTS:
-        raise InputError("table", f"needs at least {MIN_POINTS} points (P, a) to fit a(P) "
-                         "and estimate the fit's error", P.size)  # fmt: skip
+        raise InputError(
+            "table",
+            f"needs at least {MIN_POINTS} points (P, a) to fit a(P) and estimate the fit's error",
+            P.size,
+        )
     for name, values in (("P", P), ("a", a)):
         if not np.all(values > 0):
             index = int(np.flatnonzero(~(values > 0))[0])
-            raise InputError(name, f"table values must be > 0 ({where(index)})",
-                             float(values[index]))  # fmt: skip
+            raise InputError(
+                name, f"table values must be > 0 ({where(index)})", float(values[index])
+            )
         if not np.all(np.diff(values) > 0):
             index = int(np.flatnonzero(~(np.diff(values) > 0))[0]) + 1
             raise InputError(
@@ -265,7 +283,12 @@ class TableLaw(ContactLaw):
     name = "table"
 
     def __init__(
-        self, P: ArrayLike, a: ArrayLike, *, source: str = "table", _cubic_ends: bool = False,
+        self,
+        P: ArrayLike,
+        a: ArrayLike,
+        *,
+        source: str = "table",
+        _cubic_ends: bool = False,
         _lines: list[int] | None = None,
     ) -> None:
         self.P, self.a = _validated_points(P, a, _lines)
@@ -273,8 +296,10 @@ class TableLaw(ContactLaw):
         self._curve = LogLogCurve(np.log(self.P), np.log(self.a), cubic_ends=_cubic_ends)
 
     def __repr__(self) -> str:
-        return f"TableLaw({self.P.size} points from {self.source}, P in [{self.P[0]:g}, " \
-               f"{self.P[-1]:g}])"  # fmt: skip
+        return (
+            f"TableLaw({self.P.size} points from {self.source}, P in [{self.P[0]:g}, "
+            f"{self.P[-1]:g}])"
+        )
 
     @classmethod
     def from_csv(cls, path: str | Path) -> TableLaw:
@@ -296,8 +321,7 @@ class TableLaw(ContactLaw):
             return cls(columns["P"], columns["a"], source=str(path), _lines=lines)
         except InputError as error:  # name the file too: the table option is a path
             inner = "" if error.parameter == "table" else f"{error.parameter}: "
-            raise InputError("table", f"{path}: {inner}{error.rule}",
-                             error.value) from None  # fmt: skip
+            raise InputError("table", f"{path}: {inner}{error.rule}", error.value) from None
 
     # --- the law --------------------------------------------------------------------------
     def _log_half_width(self, P: ArrayLike, derivatives: int = 1) -> tuple[FloatArray, ...]:
@@ -336,8 +360,9 @@ class TableLaw(ContactLaw):
 
     def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
         """a, a' and L_I straight from the fitted curve: no root solve at all."""
-        P1, dP = np.broadcast_arrays(np.asarray(P1, dtype=np.float64),
-                                     np.asarray(dP, dtype=np.float64))  # fmt: skip
+        P1, dP = np.broadcast_arrays(
+            np.asarray(P1, dtype=np.float64), np.asarray(dP, dtype=np.float64)
+        )
         P2 = P1 + dP
         with np.errstate(all="ignore"):
             u1, du = np.log(P1), np.log1p(dP / P1)
@@ -353,16 +378,25 @@ class TableLaw(ContactLaw):
             found1 = np.isfinite(a1) & np.isfinite(L_I1) & (P1 > 0)
             found2 = found1 & np.isfinite(a2) & np.isfinite(L_I2) & np.isfinite(da)
             return LawState(
-                P1=P1, P2=P2, a1=a1, a2=a1 + da, da=da, L_I1=L_I1, L_I2=L_I2,
-                load_slope1=slope1, load_slope2=slope2,
+                P1=P1,
+                P2=P2,
+                a1=a1,
+                a2=a1 + da,
+                da=da,
+                L_I1=L_I1,
+                L_I2=L_I2,
+                load_slope1=slope1,
+                load_slope2=slope2,
                 L_I_slope1=self._multiplier_slope(P1, L_I1, ds1, d2s1),
                 L_I_slope2=self._multiplier_slope(P2, L_I2, ds2, d2s2),
-                found1=found1, found2=found2,
-            )  # fmt: skip
+                found1=found1,
+                found2=found2,
+            )
 
     @staticmethod
-    def _multiplier_slope(P: FloatArray, L_I: FloatArray, ds: FloatArray,
-                          d2s: FloatArray) -> FloatArray:  # fmt: skip
+    def _multiplier_slope(
+        P: FloatArray, L_I: FloatArray, ds: FloatArray, d2s: FloatArray
+    ) -> FloatArray:
         return normal_edge_multiplier_slope_loglog(P, L_I, ds, d2s)
 
     def extrapolated(self, P: ArrayLike) -> BoolArray:
@@ -370,8 +404,10 @@ class TableLaw(ContactLaw):
 
     def extrapolation_note(self, label: str) -> str:
         low, high = self.load_range
-        return (f"{label} is outside the table's loads [{low:.6g}, {high:.6g}] ({self.source}): "
-                "a(P) there is the end power law, extrapolated")  # fmt: skip
+        return (
+            f"{label} is outside the table's loads [{low:.6g}, {high:.6g}] ({self.source}): "
+            "a(P) there is the end power law, extrapolated"
+        )
 
     def load(self, a: ArrayLike) -> FloatArray:
         """P(a), by inverting the fitted a(P) (bisection; the fit is strictly increasing)."""
@@ -415,10 +451,14 @@ class TableLaw(ContactLaw):
         """The table refitted with each point left out in turn (leave-one-out)."""
         keep = ~np.eye(self.P.size, dtype=bool)
         return tuple(
-            TableLaw(self.P[keep[index]], self.a[keep[index]],
-                     source=f"{self.source} without point {index}", _cubic_ends=True)
+            TableLaw(
+                self.P[keep[index]],
+                self.a[keep[index]],
+                source=f"{self.source} without point {index}",
+                _cubic_ends=True,
+            )
             for index in range(self.P.size)
-        )  # fmt: skip
+        )
 
     def error_of(self, quantity: Callable[[ContactLaw], ArrayLike]) -> FloatArray:
         """Estimated error of any result computed from this law, e.g. the stick boundary:
@@ -428,8 +468,10 @@ class TableLaw(ContactLaw):
         leave-one-out refits.
         """
         reference = np.asarray(quantity(self), dtype=np.float64)
-        changes = [np.abs(np.asarray(quantity(refit), dtype=np.float64) - reference)
-                   for refit in self.refits]  # fmt: skip
+        changes = [
+            np.abs(np.asarray(quantity(refit), dtype=np.float64) - reference)
+            for refit in self.refits
+        ]
         return ERROR_SAFETY_FACTOR * np.max(changes, axis=0)
 
     def error_estimate(self, P: ArrayLike) -> dict[str, FloatArray]:

@@ -29,8 +29,9 @@ from .result import SolverResult
 ESTIMATES = ("b", "b_paper", "b_first_order", "b_corrective_stick", "b_exact")
 
 
-def _entry(value: float | None, b: float | None, b_error: float | None,
-           element: float) -> dict[str, Any] | None:  # fmt: skip
+def _entry(
+    value: float | None, b: float | None, b_error: float | None, element: float
+) -> dict[str, Any] | None:
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return None
     if b is None:

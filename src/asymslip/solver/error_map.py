@@ -70,11 +70,13 @@ from .toeplitz import SolverError
 #: The contact laws of the map: name -> (law, description).  Each is set to a1 = A1.
 LAWS: dict[str, tuple[Any, str]] = {
     "hertz": (HertzLaw(R=1.0, E_star=1.0), "Hertz (cylinder), R = E* = 1"),
-    "flat-rounded": (FlatRoundedLaw(c=1.0, R=10.0, E_star=1.0),
-                     "flat punch with rounded corners, c = 1, R = 10, E* = 1 (c/a1 = 0.5)"),
+    "flat-rounded": (
+        FlatRoundedLaw(c=1.0, R=10.0, E_star=1.0),
+        "flat punch with rounded corners, c = 1, R = 10, E* = 1 (c/a1 = 0.5)",
+    ),
     "power-1.5": (PowerLaw(A=0.3, n=1.5, E_star=1.0), "power law h = 0.3 |x|^1.5, E* = 1"),
     "power-3": (PowerLaw(A=0.05, n=3.0, E_star=1.0), "power law h = 0.05 |x|^3, E* = 1"),
-}  # fmt: skip
+}
 #: Coefficient of friction and the state-1 contact half-width of every cycle.
 MU = 0.3
 A1 = 2.0
@@ -117,9 +119,12 @@ COLUMNS: dict[str, str] = {
     "eq26": ".5f",
     "eq27": ".5f",
     "validity_warning": "d",
-    **{f"{name}_{unit}": fmt for name in ESTIMATES
-       for unit, fmt in (("elements", ".3f"), ("fraction", ".5f"))},
-}  # fmt: skip
+    **{
+        f"{name}_{unit}": fmt
+        for name in ESTIMATES
+        for unit, fmt in (("elements", ".3f"), ("fraction", ".5f"))
+    },
+}
 
 #: The runs the quick freshness check recomputes: one per law, each branch of the other edge,
 #: with and without tension, the largest errors of the map among them.
@@ -209,8 +214,10 @@ def _solved(case: MapCase, steps: int, elements: int) -> tuple[float, dict[str, 
     """
     result = solve(case.contact_law, case.cycle(), MU, elements=elements, steps=steps)
     if not result.steady or result.warnings:
-        raise SolverError(f"error map, {case}: the solver's result is not usable: "
-                          + "; ".join(result.warnings or ("not steady",)))  # fmt: skip
+        raise SolverError(
+            f"error map, {case}: the solver's result is not usable: "
+            + "; ".join(result.warnings or ("not steady",))
+        )
     edges = {}
     for side in SIDES:
         edge = result.right if side == "right" else result.left
@@ -220,8 +227,9 @@ def _solved(case: MapCase, steps: int, elements: int) -> tuple[float, dict[str, 
     return result.element_size, edges
 
 
-def solver_boundaries(case: MapCase, *, elements: int = ELEMENTS
-                      ) -> tuple[float, dict[str, SolvedBoundary]]:  # fmt: skip
+def solver_boundaries(
+    case: MapCase, *, elements: int = ELEMENTS
+) -> tuple[float, dict[str, SolvedBoundary]]:
     """The element width and, per edge, the solver's b and its bound.
 
     One load step per half-cycle where both edges slip; where one does not, extrapolated from
@@ -234,8 +242,12 @@ def solver_boundaries(case: MapCase, *, elements: int = ELEMENTS
     out = {}
     for side in SIDES:
         change = fine[side].b - coarse[side].b
-        out[side] = SolvedBoundary(fine[side].b + change, fine[side].bound + abs(change), change,
-                                   coarse[side].slip_direction)  # fmt: skip
+        out[side] = SolvedBoundary(
+            fine[side].b + change,
+            fine[side].bound + abs(change),
+            change,
+            coarse[side].slip_direction,
+        )
     return h, out
 
 
@@ -275,7 +287,8 @@ def solve_case(case: MapCase, *, elements: int = ELEMENTS) -> list[dict[str, Any
             "a1": float(estimate.a1),
             "b_solver": b,
             "b_error_elements": solved.bound / h,
-            "steps_change_elements": None if solved.steps_change is None
+            "steps_change_elements": None
+            if solved.steps_change is None
             else solved.steps_change / h,
             "width_elements": width / h,
             "b_accuracy_elements": float(estimate.b_accuracy) / h,
@@ -376,8 +389,10 @@ def read_csv(text: str) -> list[dict[str, str]]:
     """The rows of an error-map CSV as text fields (comment lines skipped)."""
     body = [line for line in text.splitlines() if line and not line.startswith("#")]
     if not body or body[0].split(",") != list(COLUMNS):
-        raise InputError("error_map.csv", "is not an error map of this version (its header "
-                         "row differs): run `make error-map`")  # fmt: skip
+        raise InputError(
+            "error_map.csv",
+            "is not an error map of this version (its header row differs): run `make error-map`",
+        )
     return list(csv.DictReader(io.StringIO("\n".join(body))))
 
 
@@ -426,8 +441,10 @@ def compare_texts(committed_text: str, fresh_text: str) -> list[str]:
     keyed = {(case_of(row), row["edge"]): row for row in committed}
     for row in fresh:
         key = (case_of(row), row["edge"])
-        label = f"{row['law']} a2/a1 = {row['a2_a1']}, lam/mu = {row['lam_mu']}, " \
-            f"tau = {row['tau']}, {row['edge']} edge"  # fmt: skip
+        label = (
+            f"{row['law']} a2/a1 = {row['a2_a1']}, lam/mu = {row['lam_mu']}, "
+            f"tau = {row['tau']}, {row['edge']} edge"
+        )
         if key not in keyed:
             problems.append(f"{label}: missing from the committed map")
             continue

@@ -106,9 +106,13 @@ def _draw(result: SolverResult, target: Any) -> None:
     for state in result.states:
         (line,) = traction.plot(x, state.shear, label=f"q at {state.label}")
         traction.plot(
-            x, result.mu * state.pressure, ":", color=line.get_color(), linewidth=0.8,
+            x,
+            result.mu * state.pressure,
+            ":",
+            color=line.get_color(),
+            linewidth=0.8,
             label=f"$\\mu$ p at {state.label}",
-        )  # fmt: skip
+        )
         slip.plot(x, state.slip, color=line.get_color(), label=f"slip at {state.label}")
     if result.is_cycle:
         traction.plot(x, result.q_diff, "k--", linewidth=1.0, label="$q_{diff} = q_2 - q_1$")

@@ -275,14 +275,27 @@ def solve(
             for left, right in attempts:
                 grid = Grid.spanning(left, right, elements)
                 try:
-                    return _run(profile, E_star, path, mu, grid, steps, tolerance, max_cycles,
-                                is_cycle, started)  # fmt: skip
+                    return _run(
+                        profile,
+                        E_star,
+                        path,
+                        mu,
+                        grid,
+                        steps,
+                        tolerance,
+                        max_cycles,
+                        is_cycle,
+                        started,
+                    )
                 except ContactOutsideGrid:
                     continue
         except FloatingPointError:
-            raise InputError("cycle", "the reference solver overflows double precision for these "
-                             "loads and this modulus: give them in units that keep the "
-                             "pressures far from 1e308") from None  # fmt: skip
+            raise InputError(
+                "cycle",
+                "the reference solver overflows double precision for these "
+                "loads and this modulus: give them in units that keep the "
+                "pressures far from 1e308",
+            ) from None
     raise InputError(
         "domain", "the contact reaches the end of the computational domain; give a wider domain"
     )

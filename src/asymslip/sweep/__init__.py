@@ -83,8 +83,10 @@ class SweepSummary:
 
     def report(self, shown: int = 10) -> str:
         """The stderr summary."""
-        lines = [f"asymslip sweep: {self.rows:,} rows written to {self.out} in "
-                 f"{self.seconds:.2f} s ({self.rows_per_second:,.0f} rows/s)"]  # fmt: skip
+        lines = [
+            f"asymslip sweep: {self.rows:,} rows written to {self.out} in "
+            f"{self.seconds:.2f} s ({self.rows_per_second:,.0f} rows/s)"
+        ]
         if self.written is not None:
             lines.append(f"  {self.written}")
         if self.comment_lines:
@@ -101,15 +103,17 @@ def _schema(header: list[str], edge: Edges) -> list[tuple[str, Kind]]:
     """Input columns as text, then each edge's numbers and warnings, then the error."""
     schema: list[tuple[str, Kind]] = [(name, "text") for name in header]
     for side in edges_of(edge):
-        schema.extend((PREFIX[side] + name, "category" if name == "warnings" else "float")
-                      for name in edge_columns())  # fmt: skip
+        schema.extend(
+            (PREFIX[side] + name, "category" if name == "warnings" else "float")
+            for name in edge_columns()
+        )
     schema.append(("error", "category"))
     return schema
 
 
-def _cycle_values(part: CaseTable, default_mu: float | None) -> tuple[dict[str, FloatArray],
-                                                                        FloatArray,
-                                                                        list[str | None]]:
+def _cycle_values(
+    part: CaseTable, default_mu: float | None
+) -> tuple[dict[str, FloatArray], FloatArray, list[str | None]]:
     """The cycle columns and mu of a chunk, defaults filled in, and each row's parse error."""
     rows = len(part)
     errors: list[str | None] = [part.errors.get(row) for row in range(rows)]
@@ -185,12 +189,15 @@ def sweep_file(
         raise InputError("edge", "must be 'right', 'left' or 'both'", edge)
     table_format(out, "out")
     refuse_same_file(out, "out", cases)
-    table = read_table(cases, required=REQUIRED_COLUMNS, numeric=("sigma1", "sigma2", "mu"),
-                       option="cases")  # fmt: skip
+    table = read_table(
+        cases, required=REQUIRED_COLUMNS, numeric=("sigma1", "sigma2", "mu"), option="cases"
+    )
     clash = sorted(set(table.header) & set(output_columns([], "both")))
     if clash:
-        raise InputError("cases", f"{cases}: input column {', '.join(clash)} has the name of "
-                         "an output column; rename it")  # fmt: skip
+        raise InputError(
+            "cases",
+            f"{cases}: input column {', '.join(clash)} has the name of an output column; rename it",
+        )
     if mu is None and "mu" not in table.header:
         raise InputError("mu", "is required: give --mu or a mu column in the cases file")
     default_mu = None if mu is None else float(mu)
@@ -202,13 +209,21 @@ def sweep_file(
             result = evaluate_chunk(law, values, friction, edge, errors)
             columns: dict[str, object] = {name: part.text[name] for name in table.header}
             columns.update(result.numbers)
-            columns.update({name: Categorical(encoded.codes, encoded.categories)
-                            for name, encoded in result.warnings.items()})  # fmt: skip
+            columns.update(
+                {
+                    name: Categorical(encoded.codes, encoded.categories)
+                    for name, encoded in result.warnings.items()
+                }
+            )
             columns["error"] = Categorical.from_strings(result.errors)  # None: no error
             writer.write(columns)
-            invalid.extend((int(part.line[row]), message)
-                           for row, message in enumerate(result.errors) if message is not None)
+            invalid.extend(
+                (int(part.line[row]), message)
+                for row, message in enumerate(result.errors)
+                if message is not None
+            )
             bar.update(writer.rows)
     bar.close()
-    return SweepSummary(len(table), out, time.perf_counter() - start, invalid, writer.written,
-                        len(table.comments))
+    return SweepSummary(
+        len(table), out, time.perf_counter() - start, invalid, writer.written, len(table.comments)
+    )

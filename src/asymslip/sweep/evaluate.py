@@ -42,14 +42,16 @@ class ChunkResult:
     errors: list[str | None]
 
 
-def _warnings_column(flags: NDArray[np.int64], valid: NDArray[np.bool_],
-                     law: ContactLaw) -> Encoded:  # fmt: skip
+def _warnings_column(
+    flags: NDArray[np.int64], valid: NDArray[np.bool_], law: ContactLaw
+) -> Encoded:
     """Code -1 (an empty field, a Parquet null) for no warnings and for invalid rows (which
     have only their error); each distinct set of warnings in words once."""
     flags = np.where(valid, flags, 0)
     distinct, codes = np.unique(flags, return_inverse=True)
-    categories = [WARNING_SEPARATOR.join(warning_texts(int(value), law))
-                  for value in distinct.tolist()]  # fmt: skip
+    categories = [
+        WARNING_SEPARATOR.join(warning_texts(int(value), law)) for value in distinct.tolist()
+    ]
     codes = codes.reshape(-1)
     if distinct.size and distinct[0] == 0:  # no warnings: no value
         codes = codes - 1
@@ -57,8 +59,13 @@ def _warnings_column(flags: NDArray[np.int64], valid: NDArray[np.bool_],
     return Encoded(codes, categories)
 
 
-def evaluate_chunk(law: ContactLaw, values: dict[str, FloatArray], mu: FloatArray,
-                   edge: Edges, errors: list[str | None]) -> ChunkResult:  # fmt: skip
+def evaluate_chunk(
+    law: ContactLaw,
+    values: dict[str, FloatArray],
+    mu: FloatArray,
+    edge: Edges,
+    errors: list[str | None],
+) -> ChunkResult:
     """Evaluate the rows whose parsing gave no error; mark the others with the API's rules.
 
     ``values`` holds the cycle columns (:data:`CYCLE_COLUMNS`) as float arrays; ``errors`` the
@@ -72,16 +79,17 @@ def evaluate_chunk(law: ContactLaw, values: dict[str, FloatArray], mu: FloatArra
     friction = np.where(parsed, mu, 1.0)
     evaluation = evaluate(law, LoadCycle.unchecked(*loads), friction)
     messages = evaluation.verdict.messages()
-    errors = [error if error is not None else message
-              for error, message in zip(errors, messages, strict=True)]  # fmt: skip
+    errors = [
+        error if error is not None else message
+        for error, message in zip(errors, messages, strict=True)
+    ]
     valid = np.array([error is None for error in errors], dtype=bool)
     numbers: dict[str, FloatArray] = {}
     warnings: dict[str, Encoded] = {}
     for side in edges_of(edge):
         edge_values = evaluation.edges[side]
         for key in (*NUMBER_KEYS, *MEASURE_KEYS):
-            column = np.broadcast_to(np.asarray(edge_values.values[key], dtype=np.float64),
-                                     (rows,))  # fmt: skip
+            column = np.broadcast_to(np.asarray(edge_values.values[key], dtype=np.float64), (rows,))
             numbers[PREFIX[side] + key] = np.where(valid, column, np.nan)
         flags = np.broadcast_to(np.asarray(edge_values.flags, dtype=np.int64), (rows,))
         warnings[PREFIX[side] + "warnings"] = _warnings_column(flags, valid, law.for_edge(side))

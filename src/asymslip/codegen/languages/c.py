@@ -138,7 +138,7 @@ def render_c(reduced: Sequence[Reduced], module_docs: Mapping[str, str]) -> Rend
         + '#ifdef __cplusplus\nextern "C" {\n#endif\n\n'
         + note
         + "\n".join(declarations)
-        + '\n#ifdef __cplusplus\n}\n#endif\n\n#endif /* ASYMSLIP_GEN_H */\n'
+        + "\n#ifdef __cplusplus\n}\n#endif\n\n#endif /* ASYMSLIP_GEN_H */\n"
     )
     source = (
         banner

@@ -104,7 +104,7 @@ def _continued(head: str, items: Sequence[str], tail: str, indent: str) -> list[
 def _declarations(kind: str, names: Sequence[str], indent: str) -> list[str]:
     lines = []
     for start in range(0, len(names), 8):
-        lines.append(f"{indent}{kind} :: {', '.join(names[start:start + 8])}")
+        lines.append(f"{indent}{kind} :: {', '.join(names[start : start + 8])}")
     return lines
 
 
@@ -140,9 +140,7 @@ def _function(item: Reduced) -> tuple[str, list[str]]:
     binding_doc = wrap(f"C binding of {name} (scalar arguments by value).")
     lines.append(f"{INDENT}!> {binding_doc[0]}")
     lines += commented(binding_doc[1:], "!!", INDENT).splitlines()
-    lines += _continued(
-        f"function {name}_c", args, f" result({RESULT}) &", INDENT
-    )
+    lines += _continued(f"function {name}_c", args, f" result({RESULT}) &", INDENT)
     lines.append(f'{INDENT * 3}bind(C, name="{name}")')
     lines += _declarations("real(c_double), value, intent(in)", args, inner)
     lines.append(f"{inner}real(c_double) :: {RESULT}")

@@ -22,26 +22,69 @@ NOTE_FILE = "LEFT_OUT.md"
 #: SymPy functions whose Octave names exist in base MATLAB and base Octave alike.  SymPy's
 #: printer also maps zeta, polylog, harmonic, lambertw, chebyshevT, ... which need MATLAB's
 #: Symbolic Math Toolbox or Octave's symbolic package: a generated file must run without them.
-BASE_FUNCTIONS = frozenset({
-    "sin", "cos", "tan", "cot", "sec", "csc", "asin", "acos", "acot", "atan", "atan2", "asec",
-    "acsc", "sinh", "cosh", "tanh", "coth", "csch", "sech", "asinh", "acosh", "atanh", "acoth",
-    "asech", "acsch", "erf", "erfc", "erfinv", "erfcinv", "besseli", "besselj", "besselk",
-    "bessely", "beta", "exp", "gamma", "log", "sign", "floor", "ceiling", "Abs", "Max", "Min",
-    "Mod", "loggamma", "log1p", "expm1",
-})  # fmt: skip
+BASE_FUNCTIONS = frozenset(
+    {
+        "sin",
+        "cos",
+        "tan",
+        "cot",
+        "sec",
+        "csc",
+        "asin",
+        "acos",
+        "acot",
+        "atan",
+        "atan2",
+        "asec",
+        "acsc",
+        "sinh",
+        "cosh",
+        "tanh",
+        "coth",
+        "csch",
+        "sech",
+        "asinh",
+        "acosh",
+        "atanh",
+        "acoth",
+        "asech",
+        "acsch",
+        "erf",
+        "erfc",
+        "erfinv",
+        "erfcinv",
+        "besseli",
+        "besselj",
+        "besselk",
+        "bessely",
+        "beta",
+        "exp",
+        "gamma",
+        "log",
+        "sign",
+        "floor",
+        "ceiling",
+        "Abs",
+        "Max",
+        "Min",
+        "Mod",
+        "loggamma",
+        "log1p",
+        "expm1",
+    }
+)
 
 
 class MatlabGeneratedPrinter(OctaveCodePrinter):
     """Octave/MATLAB printer: strict, base functions only, with ``log1p`` and ``expm1``."""
 
     def __init__(self) -> None:
-        super().__init__(
-            {"strict": True, "user_functions": {"log1p": "log1p", "expm1": "expm1"}}
-        )
+        super().__init__({"strict": True, "user_functions": {"log1p": "log1p", "expm1": "expm1"}})
         self.known_functions = {
-            name: printed for name, printed in self.known_functions.items()
+            name: printed
+            for name, printed in self.known_functions.items()
             if name in BASE_FUNCTIONS
-        }  # fmt: skip
+        }
 
     # Printed by SymPy as toolbox functions (or, for the deltas, as branches): refused, so
     # that a formula using them is left out with a note.
@@ -75,8 +118,7 @@ def _function_file(item: Reduced) -> str:
     doc = function_lines(formula, names, arguments_heading="Arguments (scalars or arrays):")
     # MATLAB's help convention: the first line is NAME in capitals, then the summary.
     help_lines = [f"{name.upper()}  {doc[0]}", *doc[1:], "", *banner_lines([formula.source])]
-    body = [printer.doprint(value, assign_to=temporary) for temporary, value in
-            item.temporaries]  # fmt: skip
+    body = [printer.doprint(value, assign_to=temporary) for temporary, value in item.temporaries]
     body.append(printer.doprint(item.result, assign_to=sympy.Symbol(RESULT)))
     return (
         f"function {RESULT} = {name}({args})\n"
