@@ -65,7 +65,7 @@ toolchains: ## install gfortran and Octave where missing (Debian, as root; quiet
 	@.ci/install-toolchains
 
 test-languages: $(STAMP) toolchains ## compile the C and Fortran, run the MATLAB files, compare with NumPy
-	$(PY) -m pytest tests/emit
+	ASYMSLIP_REQUIRE_TOOLCHAINS=1 $(PY) -m pytest tests/emit
 
 bench: $(STAMP) ## issue 10's targets vs the strongest baselines (BENCH_ARGS="--quick", "--markdown F")
 	$(PY) -m tests.benchmarks.run_benchmarks $(BENCH_ARGS)
