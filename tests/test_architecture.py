@@ -17,6 +17,8 @@ LAYERS = (
     {"cycle", "codegen", "edge_flags", "edge_estimates"},
     {"single_cycle", "slip_zones", "solver"},
     {"tractions", "sweep", "calibration"},
+    {"stress"},
+    {"nucleation"},
     {"figures"},
     {"cli"},
     {"__main__"},

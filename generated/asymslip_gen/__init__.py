@@ -6,7 +6,8 @@
 # derivations/section2_dislocation_density.py, derivations/section2_validity.py,
 # derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
 # derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
-# derivations/section3_tractions.py, derivations/solver_influence.py.
+# derivations/section3_tractions.py, derivations/solver_influence.py,
+# derivations/stress_half_plane.py.
 # Do not edit: change the derivation and run `make generate`.
 """Generated NumPy kernels for asymptotic partial-slip contacts.
 
@@ -40,6 +41,19 @@ _MODULES = {
     "flat_rounded_pressure": "flat_rounded",
     "flat_rounded_profile": "flat_rounded",
     "gap_opening_influence": "solver_influence",
+    "half_plane_element_sxx": "half_plane_stress",
+    "half_plane_element_sxy": "half_plane_stress",
+    "half_plane_element_syy": "half_plane_stress",
+    "half_plane_node_angle": "half_plane_stress",
+    "half_plane_node_log_distance": "half_plane_stress",
+    "half_plane_node_potential_imag": "half_plane_stress",
+    "half_plane_node_potential_real": "half_plane_stress",
+    "half_plane_node_series_factor": "half_plane_stress",
+    "half_plane_node_sum_imag": "half_plane_stress",
+    "half_plane_node_sum_real": "half_plane_stress",
+    "half_plane_potential_sxx": "half_plane_stress",
+    "half_plane_potential_sxy": "half_plane_stress",
+    "half_plane_potential_syy": "half_plane_stress",
     "hertz_half_width": "hertz",
     "hertz_half_width_growth": "hertz",
     "hertz_load": "hertz",
@@ -75,6 +89,12 @@ _MODULES = {
     "relative_slip_zone_measure": "validity",
     "second_order_stick_boundary_gap": "generic_law",
     "second_order_stick_boundary_gap_from_multiplier": "generic_law",
+    "semi_ellipse_pressure_sxx": "half_plane_stress",
+    "semi_ellipse_pressure_sxy": "half_plane_stress",
+    "semi_ellipse_pressure_syy": "half_plane_stress",
+    "semi_ellipse_shear_sxx": "half_plane_stress",
+    "semi_ellipse_shear_sxy": "half_plane_stress",
+    "semi_ellipse_shear_syy": "half_plane_stress",
     "shear_edge_multiplier": "edge_multipliers",
     "shear_edge_multiplier_asymmetric": "asymmetric_edges",
     "shear_edge_multiplier_proportional": "edge_multipliers",

@@ -6,7 +6,8 @@
 # derivations/section2_dislocation_density.py, derivations/section2_validity.py,
 # derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
 # derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
-# derivations/section3_tractions.py, derivations/solver_influence.py.
+# derivations/section3_tractions.py, derivations/solver_influence.py,
+# derivations/stress_half_plane.py.
 # Do not edit: change the derivation and run `make generate`.
 """The generated formulas for one value at a time, on Python floats with ``math``.
 
@@ -58,6 +59,25 @@ __all__ = [
     "flat_rounded_pressure",
     "second_order_stick_boundary_gap",
     "second_order_stick_boundary_gap_from_multiplier",
+    "half_plane_element_sxx",
+    "half_plane_element_syy",
+    "half_plane_element_sxy",
+    "half_plane_node_log_distance",
+    "half_plane_node_angle",
+    "half_plane_node_potential_real",
+    "half_plane_node_potential_imag",
+    "half_plane_node_sum_real",
+    "half_plane_node_sum_imag",
+    "half_plane_potential_sxx",
+    "half_plane_potential_syy",
+    "half_plane_potential_sxy",
+    "semi_ellipse_pressure_sxx",
+    "semi_ellipse_pressure_syy",
+    "semi_ellipse_pressure_sxy",
+    "semi_ellipse_shear_sxx",
+    "semi_ellipse_shear_syy",
+    "semi_ellipse_shear_sxy",
+    "half_plane_node_series_factor",
     "hertz_profile",
     "hertz_load",
     "hertz_load_slope",
@@ -1339,6 +1359,826 @@ def second_order_stick_boundary_gap_from_multiplier(
         * (-L_I1 * da_dP + 2 * a1 * dL_I_dP)
         / (L_I1 * a1 * mu**2)
     )
+
+
+def half_plane_element_sxx(
+    x: float, y: float, t0: float, t1: float, p0: float, p1: float, q0: float, q1: float
+) -> float:
+    """Stress sxx, along the surface, at (x, y) from one linear traction element.
+
+    The lower half-plane under a pressure p and a shear traction q varying linearly from (p0,
+    q0) at t0 to (p1, q1) at t1, both exerted by the indenter; tension positive, plane strain.
+    Valid for y > 0, and at y = 0 (the surface limit, principal value) for x != t0, t1; well
+    conditioned within a few element lengths of the element, while far from it the terms of its
+    two ends cancel.  For many elements use the node potentials (asymslip.stress sums them).
+    One value at a time, as ``asymslip_gen.half_plane_stress.half_plane_element_sxx``.
+
+    Implements Eqs. (F-1), (HP-1), (HP-2) of the paper; derived in
+    ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the surface, from the contact centre [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    t0 : float
+        Left end of the element [length].
+    t1 : float
+        Right end of the element, t1 > t0 [length].
+    p0 : float
+        Pressure at t0 (positive pushes into the lower body) [force/length^2].
+    p1 : float
+        Pressure at t1 [force/length^2].
+    q0 : float
+        Shear traction at t0, exerted by the indenter along +x [force/length^2].
+    q1 : float
+        Shear traction at t1 [force/length^2].
+
+    Returns
+    -------
+    float
+        sxx [force/length^2].
+    """
+    tmp0 = 1 / math.pi
+    tmp1 = 1 / (-t0 + t1)
+    tmp2 = -y
+    tmp3 = -x
+    tmp4 = -t0 - tmp3
+    tmp5 = -t1 - tmp3
+    tmp6 = 3 * y
+    tmp7 = y**2
+    tmp8 = tmp4**2
+    tmp9 = tmp7 + tmp8
+    tmp10 = tmp5**2
+    tmp11 = tmp10 + tmp7
+    tmp12 = p0 * y
+    tmp13 = y**4
+    tmp14 = y**3
+    tmp15 = q1 * tmp7
+    tmp16 = 2 * tmp10
+    return (
+        -tmp0
+        * tmp1
+        * (-math.log(tmp11) + math.log(tmp9))
+        * (-p1 * y - q0 * tmp5 + q1 * tmp4 + tmp12)
+        + tmp0
+        * tmp1
+        * (math.atan2(tmp2, tmp4) - math.atan2(tmp2, tmp5))
+        * (p0 * tmp5 - p1 * tmp4 + q0 * tmp6 - q1 * tmp6)
+        - tmp0
+        * (
+            -p0 * tmp14 * tmp4
+            + p1 * tmp14 * tmp5
+            + p1 * tmp5 * tmp8 * y
+            + 3 * q0 * tmp10 * tmp7
+            + 2 * q0 * tmp10 * tmp8
+            + 3 * q0 * tmp13
+            + 2 * q0 * tmp7 * tmp8
+            - 3 * q1 * tmp13
+            - q1 * tmp16 * tmp8
+            - tmp10 * tmp12 * tmp4
+            - tmp15 * tmp16
+            - 3 * tmp15 * tmp8
+        )
+        / (tmp11 * tmp9)
+    )
+
+
+def half_plane_element_syy(
+    x: float, y: float, t0: float, t1: float, p0: float, p1: float, q0: float, q1: float
+) -> float:
+    """Stress syy, normal to it, at (x, y) from one linear traction element.
+
+    The lower half-plane under a pressure p and a shear traction q varying linearly from (p0,
+    q0) at t0 to (p1, q1) at t1, both exerted by the indenter; tension positive, plane strain.
+    Valid for y > 0, and at y = 0 (the surface limit, principal value) for x != t0, t1; well
+    conditioned within a few element lengths of the element, while far from it the terms of its
+    two ends cancel.  For many elements use the node potentials (asymslip.stress sums them).
+    One value at a time, as ``asymslip_gen.half_plane_stress.half_plane_element_syy``.
+
+    Implements Eqs. (F-1), (HP-1), (HP-2) of the paper; derived in
+    ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the surface, from the contact centre [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    t0 : float
+        Left end of the element [length].
+    t1 : float
+        Right end of the element, t1 > t0 [length].
+    p0 : float
+        Pressure at t0 (positive pushes into the lower body) [force/length^2].
+    p1 : float
+        Pressure at t1 [force/length^2].
+    q0 : float
+        Shear traction at t0, exerted by the indenter along +x [force/length^2].
+    q1 : float
+        Shear traction at t1 [force/length^2].
+
+    Returns
+    -------
+    float
+        syy [force/length^2].
+    """
+    tmp0 = 1 / math.pi
+    tmp1 = -y
+    tmp2 = -x
+    tmp3 = -t0 - tmp2
+    tmp4 = -t1 - tmp2
+    tmp5 = q1 * y
+    tmp6 = y**2
+    tmp7 = tmp3**2
+    tmp8 = tmp4**2
+    tmp9 = y**3
+    tmp10 = p0 * tmp3
+    return tmp0 * y * (
+        p1 * tmp4 * tmp6
+        + p1 * tmp4 * tmp7
+        + q0 * tmp8 * y
+        + q0 * tmp9
+        - q1 * tmp9
+        - tmp10 * tmp6
+        - tmp10 * tmp8
+        - tmp5 * tmp7
+    ) / ((tmp6 + tmp7) * (tmp6 + tmp8)) - tmp0 * (
+        math.atan2(tmp1, tmp3) - math.atan2(tmp1, tmp4)
+    ) * (-p0 * tmp4 + p1 * tmp3 + q0 * y - tmp5) / (-t0 + t1)
+
+
+def half_plane_element_sxy(
+    x: float, y: float, t0: float, t1: float, p0: float, p1: float, q0: float, q1: float
+) -> float:
+    """Stress sxy, at (x, y) from one linear traction element.
+
+    The lower half-plane under a pressure p and a shear traction q varying linearly from (p0,
+    q0) at t0 to (p1, q1) at t1, both exerted by the indenter; tension positive, plane strain.
+    Valid for y > 0, and at y = 0 (the surface limit, principal value) for x != t0, t1; well
+    conditioned within a few element lengths of the element, while far from it the terms of its
+    two ends cancel.  For many elements use the node potentials (asymslip.stress sums them).
+    One value at a time, as ``asymslip_gen.half_plane_stress.half_plane_element_sxy``.
+
+    Implements Eqs. (F-1), (HP-1), (HP-2) of the paper; derived in
+    ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the surface, from the contact centre [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    t0 : float
+        Left end of the element [length].
+    t1 : float
+        Right end of the element, t1 > t0 [length].
+    p0 : float
+        Pressure at t0 (positive pushes into the lower body) [force/length^2].
+    p1 : float
+        Pressure at t1 [force/length^2].
+    q0 : float
+        Shear traction at t0, exerted by the indenter along +x [force/length^2].
+    q1 : float
+        Shear traction at t1 [force/length^2].
+
+    Returns
+    -------
+    float
+        sxy [force/length^2].
+    """
+    tmp0 = y**2
+    tmp1 = -x
+    tmp2 = -t0 - tmp1
+    tmp3 = tmp2**2
+    tmp4 = tmp0 + tmp3
+    tmp5 = -t1 - tmp1
+    tmp6 = tmp5**2
+    tmp7 = tmp0 + tmp6
+    tmp8 = 1 / math.pi
+    tmp9 = tmp8 / (-t0 + t1)
+    tmp10 = -y
+    tmp11 = p0 * y
+    tmp12 = p1 * y
+    tmp13 = y**3
+    tmp14 = q0 * tmp2
+    tmp15 = q1 * tmp5
+    return (
+        -tmp9 * y * (q0 - q1) * (math.log(tmp4) - math.log(tmp7))
+        - tmp9
+        * (math.atan2(tmp10, tmp2) - math.atan2(tmp10, tmp5))
+        * (-q0 * tmp5 + q1 * tmp2 + tmp11 - tmp12)
+        + tmp8
+        * y
+        * (
+            p0 * tmp13
+            - p1 * tmp13
+            + tmp0 * tmp14
+            - tmp0 * tmp15
+            + tmp11 * tmp6
+            - tmp12 * tmp3
+            + tmp14 * tmp6
+            - tmp15 * tmp3
+        )
+        / (tmp4 * tmp7)
+    )
+
+
+def half_plane_node_log_distance(u: float, y: float) -> float:
+    """L = log|zeta - t_j| of a node, zeta = x - i y.
+
+    Real part of log(zeta - t_j); infinite at the node itself on the surface (u = y = 0), where
+    every term it enters vanishes (the evaluator passes a finite value there).  One value at a
+    time, as ``asymslip_gen.half_plane_stress.half_plane_node_log_distance``.
+
+    Implements Eq. (HP-4) of the paper; derived in ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    u : float
+        Offset x - t_j of the point from the node t_j along the surface [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+
+    Returns
+    -------
+    float
+        L [log of a length].
+    """
+    return (1 / 2) * math.log(u**2 + y**2)
+
+
+def half_plane_node_angle(u: float, y: float) -> float:
+    """theta = arg(zeta - t_j) of a node, in [-pi, 0].
+
+    Imaginary part of log(zeta - t_j), zeta = x - i y: -pi for a surface point left of the node
+    (u < 0, y = +0), 0 right of it: the limit from inside the body.  y must be +0.0 on the
+    surface, not -0.0.  One value at a time, as
+    ``asymslip_gen.half_plane_stress.half_plane_node_angle``.
+
+    Implements Eq. (HP-4) of the paper; derived in ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    u : float
+        Offset x - t_j of the point from the node t_j along the surface [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+
+    Returns
+    -------
+    float
+        theta [rad].
+    """
+    return math.atan2(-y, u)
+
+
+def half_plane_node_potential_real(u: float, y: float, L: float, theta: float) -> float:
+    """Re K(zeta - t_j), K(v) = v log v - v.
+
+    The node kernel of a piecewise-linear load: its potential is sum_j c_j K(zeta - t_j) with
+    c_j the load's slope jump at node t_j; L and theta from half_plane_node_log_distance and
+    half_plane_node_angle.  One value at a time, as
+    ``asymslip_gen.half_plane_stress.half_plane_node_potential_real``.
+
+    Implements Eq. (HP-4) of the paper; derived in ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    u : float
+        Offset x - t_j of the point from the node t_j along the surface [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    L : float
+        L = log|zeta - t_j| = log(u^2 + y^2)/2 (node_log_distance).
+    theta : float
+        theta = arg(zeta - t_j) = atan2(-y, u), in [-pi, 0] (node_angle).
+
+    Returns
+    -------
+    float
+        [length].
+    """
+    return L * u + theta * y - u
+
+
+def half_plane_node_potential_imag(u: float, y: float, L: float, theta: float) -> float:
+    """Im K(zeta - t_j), K(v) = v log v - v.
+
+    The node kernel of a piecewise-linear load: its potential is sum_j c_j K(zeta - t_j) with
+    c_j the load's slope jump at node t_j; L and theta from half_plane_node_log_distance and
+    half_plane_node_angle.  One value at a time, as
+    ``asymslip_gen.half_plane_stress.half_plane_node_potential_imag``.
+
+    Implements Eq. (HP-4) of the paper; derived in ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    u : float
+        Offset x - t_j of the point from the node t_j along the surface [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    L : float
+        L = log|zeta - t_j| = log(u^2 + y^2)/2 (node_log_distance).
+    theta : float
+        theta = arg(zeta - t_j) = atan2(-y, u), in [-pi, 0] (node_angle).
+
+    Returns
+    -------
+    float
+        [length].
+    """
+    return -L * y + theta * u + y
+
+
+def half_plane_node_sum_real(
+    x: float, y: float, A_L: float, B_L: float, A_theta: float, A_1: float, B_1: float
+) -> float:
+    """Re sum_j c_j K(zeta - t_j) from weighted sums over the nodes.
+
+    The potential of a piecewise-linear load (slope jumps c_j at nodes t_j) at zeta = x - i y,
+    from A_f = sum c_j f_j and B_f = sum c_j t_j f_j with f = L_j = log|zeta - t_j|, theta_j =
+    arg(zeta - t_j) and 1.  Keep x and t_j small (a local origin near the point): x A_L - B_L
+    cancels where |x - t_j| << |t_j|.  One value at a time, as
+    ``asymslip_gen.half_plane_stress.half_plane_node_sum_real``.
+
+    Implements Eq. (HP-4) of the paper; derived in ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position of the point, in the frame of the node positions t_j [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    A_L : float
+        A_L = sum_j c_j L_j over the nodes summed [force/length].
+    B_L : float
+        B_L = sum_j c_j t_j L_j [force].
+    A_theta : float
+        A_theta = sum_j c_j theta_j [force/length].
+    A_1 : float
+        A_1 = sum_j c_j [force/length].
+    B_1 : float
+        B_1 = sum_j c_j t_j [force].
+
+    Returns
+    -------
+    float
+        [force/length].
+    """
+    return -A_1 * x + A_L * x + A_theta * y + B_1 - B_L
+
+
+def half_plane_node_sum_imag(
+    x: float, y: float, A_theta: float, B_theta: float, A_L: float, A_1: float
+) -> float:
+    """Im sum_j c_j K(zeta - t_j) from weighted sums over the nodes.
+
+    The potential of a piecewise-linear load (slope jumps c_j at nodes t_j) at zeta = x - i y,
+    from A_f = sum c_j f_j and B_f = sum c_j t_j f_j with f = L_j = log|zeta - t_j|, theta_j =
+    arg(zeta - t_j) and 1.  Keep x and t_j small (a local origin near the point): x A_L - B_L
+    cancels where |x - t_j| << |t_j|.  One value at a time, as
+    ``asymslip_gen.half_plane_stress.half_plane_node_sum_imag``.
+
+    Implements Eq. (HP-4) of the paper; derived in ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position of the point, in the frame of the node positions t_j [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    A_theta : float
+        A_theta = sum_j c_j theta_j [force/length].
+    B_theta : float
+        B_theta = sum_j c_j t_j theta_j [force].
+    A_L : float
+        A_L = sum_j c_j L_j over the nodes summed [force/length].
+    A_1 : float
+        A_1 = sum_j c_j [force/length].
+
+    Returns
+    -------
+    float
+        [force/length].
+    """
+    return A_1 * y - A_L * y + A_theta * x - B_theta
+
+
+def half_plane_potential_sxx(
+    Q_re: float,
+    Q_im: float,
+    P_im: float,
+    dQ_re: float,
+    dQ_im: float,
+    dP_re: float,
+    dP_im: float,
+    y: float,
+) -> float:
+    """Stress sxx, along the surface, from the pressure and shear potentials.
+
+    Q = int q(t)/(zeta - t) dt and P = int p(t)/(zeta - t) dt at zeta = x - i y (tractions
+    exerted by the indenter on the lower body): the whole plane-strain field at depth y >= 0,
+    tension positive.  Re P does not enter.  One value at a time, as
+    ``asymslip_gen.half_plane_stress.half_plane_potential_sxx``.
+
+    Implements Eqs. (F-1), (HP-3) of the paper; derived in ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    Q_re : float
+        Re Q: real part of the shear potential Q = int q(t)/(zeta - t) dt [force/length].
+    Q_im : float
+        Im Q [force/length]; its surface limit from the body is pi q(x).
+    P_im : float
+        Im P of the pressure potential P = int p(t)/(zeta - t) dt; pi p(x) at y = 0.
+    dQ_re : float
+        Re dQ/dzeta [force/length^2].
+    dQ_im : float
+        Im dQ/dzeta [force/length^2].
+    dP_re : float
+        Re dP/dzeta [force/length^2].
+    dP_im : float
+        Im dP/dzeta [force/length^2].
+    y : float
+        Depth y >= 0 of the point [length] (multiplies the derivatives).
+
+    Returns
+    -------
+    float
+        sxx [force/length^2].
+    """
+    tmp0 = 1 / math.pi
+    return -P_im * tmp0 - 2 * Q_re * tmp0 + dP_re * tmp0 * y - dQ_im * tmp0 * y
+
+
+def half_plane_potential_syy(
+    Q_re: float,
+    Q_im: float,
+    P_im: float,
+    dQ_re: float,
+    dQ_im: float,
+    dP_re: float,
+    dP_im: float,
+    y: float,
+) -> float:
+    """Stress syy, normal to it, from the pressure and shear potentials.
+
+    Q = int q(t)/(zeta - t) dt and P = int p(t)/(zeta - t) dt at zeta = x - i y (tractions
+    exerted by the indenter on the lower body): the whole plane-strain field at depth y >= 0,
+    tension positive.  Re P does not enter.  One value at a time, as
+    ``asymslip_gen.half_plane_stress.half_plane_potential_syy``.
+
+    Implements Eqs. (F-1), (HP-3) of the paper; derived in ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    Q_re : float
+        Re Q: real part of the shear potential Q = int q(t)/(zeta - t) dt [force/length].
+    Q_im : float
+        Im Q [force/length]; its surface limit from the body is pi q(x).
+    P_im : float
+        Im P of the pressure potential P = int p(t)/(zeta - t) dt; pi p(x) at y = 0.
+    dQ_re : float
+        Re dQ/dzeta [force/length^2].
+    dQ_im : float
+        Im dQ/dzeta [force/length^2].
+    dP_re : float
+        Re dP/dzeta [force/length^2].
+    dP_im : float
+        Im dP/dzeta [force/length^2].
+    y : float
+        Depth y >= 0 of the point [length] (multiplies the derivatives).
+
+    Returns
+    -------
+    float
+        syy [force/length^2].
+    """
+    tmp0 = 1 / math.pi
+    return -P_im * tmp0 - dP_re * tmp0 * y + dQ_im * tmp0 * y
+
+
+def half_plane_potential_sxy(
+    Q_re: float,
+    Q_im: float,
+    P_im: float,
+    dQ_re: float,
+    dQ_im: float,
+    dP_re: float,
+    dP_im: float,
+    y: float,
+) -> float:
+    """Stress sxy, from the pressure and shear potentials.
+
+    Q = int q(t)/(zeta - t) dt and P = int p(t)/(zeta - t) dt at zeta = x - i y (tractions
+    exerted by the indenter on the lower body): the whole plane-strain field at depth y >= 0,
+    tension positive.  Re P does not enter.  One value at a time, as
+    ``asymslip_gen.half_plane_stress.half_plane_potential_sxy``.
+
+    Implements Eqs. (F-1), (HP-3) of the paper; derived in ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    Q_re : float
+        Re Q: real part of the shear potential Q = int q(t)/(zeta - t) dt [force/length].
+    Q_im : float
+        Im Q [force/length]; its surface limit from the body is pi q(x).
+    P_im : float
+        Im P of the pressure potential P = int p(t)/(zeta - t) dt; pi p(x) at y = 0.
+    dQ_re : float
+        Re dQ/dzeta [force/length^2].
+    dQ_im : float
+        Im dQ/dzeta [force/length^2].
+    dP_re : float
+        Re dP/dzeta [force/length^2].
+    dP_im : float
+        Im dP/dzeta [force/length^2].
+    y : float
+        Depth y >= 0 of the point [length] (multiplies the derivatives).
+
+    Returns
+    -------
+    float
+        sxy [force/length^2].
+    """
+    tmp0 = 1 / math.pi
+    tmp1 = tmp0 * y
+    return -Q_im * tmp0 + dP_im * tmp1 + dQ_re * tmp1
+
+
+def semi_ellipse_pressure_sxx(x: float, y: float, a: float) -> float:
+    """Stress sxx, along the surface, under the pressure sqrt(a^2 - x^2).
+
+    The lower half-plane under the semi-elliptic pressure sqrt(a^2 - t^2) on (-a, a), exerted by
+    the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's sliding shear mu
+    p0/a times it); tension positive, plane strain; any y >= 0, finite everywhere (polar form).
+    One value at a time, as ``asymslip_gen.half_plane_stress.semi_ellipse_pressure_sxx``.
+
+    Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+    ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the surface from the load's centre [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    a : float
+        Half-width a > 0 of the load [length].
+
+    Returns
+    -------
+    float
+        sxx per unit load amplitude [length].
+    """
+    tmp0 = -y
+    tmp1 = a + x
+    tmp2 = math.atan2(tmp0, tmp1)
+    tmp3 = -a + x
+    tmp4 = math.atan2(tmp0, tmp3)
+    tmp5 = math.sqrt(math.sin(tmp2) * math.sin(tmp4))
+    tmp6 = (1 / 2) * tmp2 + (1 / 2) * tmp4
+    tmp7 = math.sin(tmp6)
+    tmp8 = y**2
+    return (
+        tmp5 * tmp7 * y
+        - tmp5 * x * math.cos(tmp6)
+        + tmp7 * (tmp1**2 + tmp8) ** (1 / 4) * (tmp3**2 + tmp8) ** (1 / 4)
+        + 2 * y
+    )
+
+
+def semi_ellipse_pressure_syy(x: float, y: float, a: float) -> float:
+    """Stress syy, normal to it, under the pressure sqrt(a^2 - x^2).
+
+    The lower half-plane under the semi-elliptic pressure sqrt(a^2 - t^2) on (-a, a), exerted by
+    the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's sliding shear mu
+    p0/a times it); tension positive, plane strain; any y >= 0, finite everywhere (polar form).
+    One value at a time, as ``asymslip_gen.half_plane_stress.semi_ellipse_pressure_syy``.
+
+    Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+    ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the surface from the load's centre [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    a : float
+        Half-width a > 0 of the load [length].
+
+    Returns
+    -------
+    float
+        syy per unit load amplitude [length].
+    """
+    tmp0 = -y
+    tmp1 = a + x
+    tmp2 = math.atan2(tmp0, tmp1)
+    tmp3 = -a + x
+    tmp4 = math.atan2(tmp0, tmp3)
+    tmp5 = math.sqrt(math.sin(tmp2) * math.sin(tmp4))
+    tmp6 = (1 / 2) * tmp2 + (1 / 2) * tmp4
+    tmp7 = y**2
+    tmp8 = math.sin(tmp6)
+    return (
+        -tmp5 * tmp8 * y
+        + tmp5 * x * math.cos(tmp6)
+        + tmp8 * (tmp1**2 + tmp7) ** (1 / 4) * (tmp3**2 + tmp7) ** (1 / 4)
+    )
+
+
+def semi_ellipse_pressure_sxy(x: float, y: float, a: float) -> float:
+    """Stress sxy, under the pressure sqrt(a^2 - x^2).
+
+    The lower half-plane under the semi-elliptic pressure sqrt(a^2 - t^2) on (-a, a), exerted by
+    the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's sliding shear mu
+    p0/a times it); tension positive, plane strain; any y >= 0, finite everywhere (polar form).
+    One value at a time, as ``asymslip_gen.half_plane_stress.semi_ellipse_pressure_sxy``.
+
+    Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+    ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the surface from the load's centre [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    a : float
+        Half-width a > 0 of the load [length].
+
+    Returns
+    -------
+    float
+        sxy per unit load amplitude [length].
+    """
+    tmp0 = -y
+    tmp1 = math.atan2(tmp0, a + x)
+    tmp2 = math.atan2(tmp0, -a + x)
+    tmp3 = math.sqrt(math.sin(tmp1) * math.sin(tmp2))
+    tmp4 = (1 / 2) * tmp1 + (1 / 2) * tmp2
+    return tmp3 * x * math.sin(tmp4) + tmp3 * y * math.cos(tmp4)
+
+
+def semi_ellipse_shear_sxx(x: float, y: float, a: float) -> float:
+    """Stress sxx, along the surface, under the shear traction sqrt(a^2 - x^2).
+
+    The lower half-plane under the semi-elliptic shear traction sqrt(a^2 - t^2) on (-a, a),
+    exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's sliding
+    shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite everywhere
+    (polar form).  One value at a time, as
+    ``asymslip_gen.half_plane_stress.semi_ellipse_shear_sxx``.
+
+    Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+    ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the surface from the load's centre [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    a : float
+        Half-width a > 0 of the load [length].
+
+    Returns
+    -------
+    float
+        sxx per unit load amplitude [length].
+    """
+    tmp0 = -y
+    tmp1 = a + x
+    tmp2 = math.atan2(tmp0, tmp1)
+    tmp3 = -a + x
+    tmp4 = math.atan2(tmp0, tmp3)
+    tmp5 = math.sqrt(math.sin(tmp2) * math.sin(tmp4))
+    tmp6 = (1 / 2) * tmp2 + (1 / 2) * tmp4
+    tmp7 = math.cos(tmp6)
+    tmp8 = y**2
+    return (
+        -tmp5 * tmp7 * y
+        - tmp5 * x * math.sin(tmp6)
+        + 2 * tmp7 * (tmp1**2 + tmp8) ** (1 / 4) * (tmp3**2 + tmp8) ** (1 / 4)
+        - 2 * x
+    )
+
+
+def semi_ellipse_shear_syy(x: float, y: float, a: float) -> float:
+    """Stress syy, normal to it, under the shear traction sqrt(a^2 - x^2).
+
+    The lower half-plane under the semi-elliptic shear traction sqrt(a^2 - t^2) on (-a, a),
+    exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's sliding
+    shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite everywhere
+    (polar form).  One value at a time, as
+    ``asymslip_gen.half_plane_stress.semi_ellipse_shear_syy``.
+
+    Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+    ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the surface from the load's centre [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    a : float
+        Half-width a > 0 of the load [length].
+
+    Returns
+    -------
+    float
+        syy per unit load amplitude [length].
+    """
+    tmp0 = -y
+    tmp1 = math.atan2(tmp0, a + x)
+    tmp2 = math.atan2(tmp0, -a + x)
+    tmp3 = math.sqrt(math.sin(tmp1) * math.sin(tmp2))
+    tmp4 = (1 / 2) * tmp1 + (1 / 2) * tmp2
+    return tmp3 * x * math.sin(tmp4) + tmp3 * y * math.cos(tmp4)
+
+
+def semi_ellipse_shear_sxy(x: float, y: float, a: float) -> float:
+    """Stress sxy, under the shear traction sqrt(a^2 - x^2).
+
+    The lower half-plane under the semi-elliptic shear traction sqrt(a^2 - t^2) on (-a, a),
+    exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's sliding
+    shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite everywhere
+    (polar form).  One value at a time, as
+    ``asymslip_gen.half_plane_stress.semi_ellipse_shear_sxy``.
+
+    Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+    ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    x : float
+        Position along the surface from the load's centre [length].
+    y : float
+        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the surface
+        limit (principal value).
+    a : float
+        Half-width a > 0 of the load [length].
+
+    Returns
+    -------
+    float
+        sxy per unit load amplitude [length].
+    """
+    tmp0 = -y
+    tmp1 = a + x
+    tmp2 = math.atan2(tmp0, tmp1)
+    tmp3 = -a + x
+    tmp4 = math.atan2(tmp0, tmp3)
+    tmp5 = math.sqrt(math.sin(tmp2) * math.sin(tmp4))
+    tmp6 = (1 / 2) * tmp2 + (1 / 2) * tmp4
+    tmp7 = math.sin(tmp6)
+    tmp8 = y**2
+    return (
+        tmp5 * tmp7 * y
+        - tmp5 * x * math.cos(tmp6)
+        + tmp7 * (tmp1**2 + tmp8) ** (1 / 4) * (tmp3**2 + tmp8) ** (1 / 4)
+        + 2 * y
+    )
+
+
+def half_plane_node_series_factor(k: float) -> float:
+    """K^(k)(v)/k! divided by v^(1 - k): (-1)^k / (k (k - 1)).
+
+    Taylor coefficients of the node kernel about a far centre v0: K(v0 + d) = K(v0) + log(v0) d
+    + sum_{k >= 2} factor(k) v0^(1 - k) d^k, convergent for |d| < |v0|.  One value at a time, as
+    ``asymslip_gen.half_plane_stress.half_plane_node_series_factor``.
+
+    Implements Eq. (HP-5) of the paper; derived in ``derivations/stress_half_plane.py``.
+
+    Parameters
+    ----------
+    k : float
+        Order k >= 2 of the Taylor term.
+
+    Returns
+    -------
+    float
+        The factor (dimensionless).
+    """
+    return (-1) ** k / (k * (k - 1))
 
 
 def hertz_profile(x: float, R: float) -> float:

@@ -7,7 +7,8 @@
  * derivations/section2_dislocation_density.py, derivations/section2_validity.py,
  * derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
  * derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
- * derivations/section3_tractions.py, derivations/solver_influence.py.
+ * derivations/section3_tractions.py, derivations/solver_influence.py,
+ * derivations/stress_half_plane.py.
  * Do not edit: change the derivation and run `make generate`.
  */
 
@@ -402,6 +403,286 @@ double asymslip_second_order_stick_boundary_gap_from_multiplier(
     double dL_I_dP)
 {
     return -1.0/16.0*da_dP*(lam - mu)*(lam + mu)*(-L_I1*da_dP + 2*a1*dL_I_dP)/(L_I1*a1*pow(mu, 2));
+}
+
+/* Stress sxx, along the surface, at (x, y) from one linear traction element. See asymslip_gen.h. */
+double asymslip_half_plane_element_sxx(
+    double x,
+    double y,
+    double t0,
+    double t1,
+    double p0,
+    double p1,
+    double q0,
+    double q1)
+{
+    const double tmp0 = 1.0/asymslip_pi;
+    const double tmp1 = 1.0/(-t0 + t1);
+    const double tmp2 = -y;
+    const double tmp3 = -x;
+    const double tmp4 = -t0 - tmp3;
+    const double tmp5 = -t1 - tmp3;
+    const double tmp6 = 3*y;
+    const double tmp7 = pow(y, 2);
+    const double tmp8 = pow(tmp4, 2);
+    const double tmp9 = tmp7 + tmp8;
+    const double tmp10 = pow(tmp5, 2);
+    const double tmp11 = tmp10 + tmp7;
+    const double tmp12 = p0*y;
+    const double tmp13 = pow(y, 4);
+    const double tmp14 = pow(y, 3);
+    const double tmp15 = q1*tmp7;
+    const double tmp16 = 2*tmp10;
+    return -tmp0*tmp1*(-log(tmp11) + log(tmp9))*(-p1*y - q0*tmp5 + q1*tmp4 + tmp12) + tmp0*tmp1*(atan2(tmp2, tmp4) - atan2(tmp2, tmp5))*(p0*tmp5 - p1*tmp4 + q0*tmp6 - q1*tmp6) - tmp0*(-p0*tmp14*tmp4 + p1*tmp14*tmp5 + p1*tmp5*tmp8*y + 3*q0*tmp10*tmp7 + 2*q0*tmp10*tmp8 + 3*q0*tmp13 + 2*q0*tmp7*tmp8 - 3*q1*tmp13 - q1*tmp16*tmp8 - tmp10*tmp12*tmp4 - tmp15*tmp16 - 3*tmp15*tmp8)/(tmp11*tmp9);
+}
+
+/* Stress syy, normal to it, at (x, y) from one linear traction element. See asymslip_gen.h. */
+double asymslip_half_plane_element_syy(
+    double x,
+    double y,
+    double t0,
+    double t1,
+    double p0,
+    double p1,
+    double q0,
+    double q1)
+{
+    const double tmp0 = 1.0/asymslip_pi;
+    const double tmp1 = -y;
+    const double tmp2 = -x;
+    const double tmp3 = -t0 - tmp2;
+    const double tmp4 = -t1 - tmp2;
+    const double tmp5 = q1*y;
+    const double tmp6 = pow(y, 2);
+    const double tmp7 = pow(tmp3, 2);
+    const double tmp8 = pow(tmp4, 2);
+    const double tmp9 = pow(y, 3);
+    const double tmp10 = p0*tmp3;
+    return tmp0*y*(p1*tmp4*tmp6 + p1*tmp4*tmp7 + q0*tmp8*y + q0*tmp9 - q1*tmp9 - tmp10*tmp6 - tmp10*tmp8 - tmp5*tmp7)/((tmp6 + tmp7)*(tmp6 + tmp8)) - tmp0*(atan2(tmp1, tmp3) - atan2(tmp1, tmp4))*(-p0*tmp4 + p1*tmp3 + q0*y - tmp5)/(-t0 + t1);
+}
+
+/* Stress sxy, at (x, y) from one linear traction element. See asymslip_gen.h. */
+double asymslip_half_plane_element_sxy(
+    double x,
+    double y,
+    double t0,
+    double t1,
+    double p0,
+    double p1,
+    double q0,
+    double q1)
+{
+    const double tmp0 = pow(y, 2);
+    const double tmp1 = -x;
+    const double tmp2 = -t0 - tmp1;
+    const double tmp3 = pow(tmp2, 2);
+    const double tmp4 = tmp0 + tmp3;
+    const double tmp5 = -t1 - tmp1;
+    const double tmp6 = pow(tmp5, 2);
+    const double tmp7 = tmp0 + tmp6;
+    const double tmp8 = 1.0/asymslip_pi;
+    const double tmp9 = tmp8/(-t0 + t1);
+    const double tmp10 = -y;
+    const double tmp11 = p0*y;
+    const double tmp12 = p1*y;
+    const double tmp13 = pow(y, 3);
+    const double tmp14 = q0*tmp2;
+    const double tmp15 = q1*tmp5;
+    return -tmp9*y*(q0 - q1)*(log(tmp4) - log(tmp7)) - tmp9*(atan2(tmp10, tmp2) - atan2(tmp10, tmp5))*(-q0*tmp5 + q1*tmp2 + tmp11 - tmp12) + tmp8*y*(p0*tmp13 - p1*tmp13 + tmp0*tmp14 - tmp0*tmp15 + tmp11*tmp6 - tmp12*tmp3 + tmp14*tmp6 - tmp15*tmp3)/(tmp4*tmp7);
+}
+
+/* L = log|zeta - t_j| of a node, zeta = x - i y. See asymslip_gen.h. */
+double asymslip_half_plane_node_log_distance(double u, double y)
+{
+    return (1.0/2.0)*log(pow(u, 2) + pow(y, 2));
+}
+
+/* theta = arg(zeta - t_j) of a node, in [-pi, 0]. See asymslip_gen.h. */
+double asymslip_half_plane_node_angle(double u, double y)
+{
+    return atan2(-y, u);
+}
+
+/* Re K(zeta - t_j), K(v) = v log v - v. See asymslip_gen.h. */
+double asymslip_half_plane_node_potential_real(double u, double y, double L, double theta)
+{
+    return L*u + theta*y - u;
+}
+
+/* Im K(zeta - t_j), K(v) = v log v - v. See asymslip_gen.h. */
+double asymslip_half_plane_node_potential_imag(double u, double y, double L, double theta)
+{
+    return -L*y + theta*u + y;
+}
+
+/* Re sum_j c_j K(zeta - t_j) from weighted sums over the nodes. See asymslip_gen.h. */
+double asymslip_half_plane_node_sum_real(
+    double x,
+    double y,
+    double A_L,
+    double B_L,
+    double A_theta,
+    double A_1,
+    double B_1)
+{
+    return -A_1*x + A_L*x + A_theta*y + B_1 - B_L;
+}
+
+/* Im sum_j c_j K(zeta - t_j) from weighted sums over the nodes. See asymslip_gen.h. */
+double asymslip_half_plane_node_sum_imag(
+    double x,
+    double y,
+    double A_theta,
+    double B_theta,
+    double A_L,
+    double A_1)
+{
+    return A_1*y - A_L*y + A_theta*x - B_theta;
+}
+
+/* Stress sxx, along the surface, from the pressure and shear potentials. See asymslip_gen.h. */
+double asymslip_half_plane_potential_sxx(
+    double Q_re,
+    double Q_im,
+    double P_im,
+    double dQ_re,
+    double dQ_im,
+    double dP_re,
+    double dP_im,
+    double y)
+{
+    (void)Q_im;
+    (void)dQ_re;
+    (void)dP_im;
+    const double tmp0 = 1.0/asymslip_pi;
+    return -P_im*tmp0 - 2*Q_re*tmp0 + dP_re*tmp0*y - dQ_im*tmp0*y;
+}
+
+/* Stress syy, normal to it, from the pressure and shear potentials. See asymslip_gen.h. */
+double asymslip_half_plane_potential_syy(
+    double Q_re,
+    double Q_im,
+    double P_im,
+    double dQ_re,
+    double dQ_im,
+    double dP_re,
+    double dP_im,
+    double y)
+{
+    (void)Q_re;
+    (void)Q_im;
+    (void)dQ_re;
+    (void)dP_im;
+    const double tmp0 = 1.0/asymslip_pi;
+    return -P_im*tmp0 - dP_re*tmp0*y + dQ_im*tmp0*y;
+}
+
+/* Stress sxy, from the pressure and shear potentials. See asymslip_gen.h. */
+double asymslip_half_plane_potential_sxy(
+    double Q_re,
+    double Q_im,
+    double P_im,
+    double dQ_re,
+    double dQ_im,
+    double dP_re,
+    double dP_im,
+    double y)
+{
+    (void)Q_re;
+    (void)P_im;
+    (void)dQ_im;
+    (void)dP_re;
+    const double tmp0 = 1.0/asymslip_pi;
+    const double tmp1 = tmp0*y;
+    return -Q_im*tmp0 + dP_im*tmp1 + dQ_re*tmp1;
+}
+
+/* Stress sxx, along the surface, under the pressure sqrt(a^2 - x^2). See asymslip_gen.h. */
+double asymslip_semi_ellipse_pressure_sxx(double x, double y, double a)
+{
+    const double tmp0 = -y;
+    const double tmp1 = a + x;
+    const double tmp2 = atan2(tmp0, tmp1);
+    const double tmp3 = -a + x;
+    const double tmp4 = atan2(tmp0, tmp3);
+    const double tmp5 = sqrt(sin(tmp2)*sin(tmp4));
+    const double tmp6 = (1.0/2.0)*tmp2 + (1.0/2.0)*tmp4;
+    const double tmp7 = sin(tmp6);
+    const double tmp8 = pow(y, 2);
+    return tmp5*tmp7*y - tmp5*x*cos(tmp6) + tmp7*pow(pow(tmp1, 2) + tmp8, 1.0/4.0)*pow(pow(tmp3, 2) + tmp8, 1.0/4.0) + 2*y;
+}
+
+/* Stress syy, normal to it, under the pressure sqrt(a^2 - x^2). See asymslip_gen.h. */
+double asymslip_semi_ellipse_pressure_syy(double x, double y, double a)
+{
+    const double tmp0 = -y;
+    const double tmp1 = a + x;
+    const double tmp2 = atan2(tmp0, tmp1);
+    const double tmp3 = -a + x;
+    const double tmp4 = atan2(tmp0, tmp3);
+    const double tmp5 = sqrt(sin(tmp2)*sin(tmp4));
+    const double tmp6 = (1.0/2.0)*tmp2 + (1.0/2.0)*tmp4;
+    const double tmp7 = pow(y, 2);
+    const double tmp8 = sin(tmp6);
+    return -tmp5*tmp8*y + tmp5*x*cos(tmp6) + tmp8*pow(pow(tmp1, 2) + tmp7, 1.0/4.0)*pow(pow(tmp3, 2) + tmp7, 1.0/4.0);
+}
+
+/* Stress sxy, under the pressure sqrt(a^2 - x^2). See asymslip_gen.h. */
+double asymslip_semi_ellipse_pressure_sxy(double x, double y, double a)
+{
+    const double tmp0 = -y;
+    const double tmp1 = atan2(tmp0, a + x);
+    const double tmp2 = atan2(tmp0, -a + x);
+    const double tmp3 = sqrt(sin(tmp1)*sin(tmp2));
+    const double tmp4 = (1.0/2.0)*tmp1 + (1.0/2.0)*tmp2;
+    return tmp3*x*sin(tmp4) + tmp3*y*cos(tmp4);
+}
+
+/* Stress sxx, along the surface, under the shear traction sqrt(a^2 - x^2). See asymslip_gen.h. */
+double asymslip_semi_ellipse_shear_sxx(double x, double y, double a)
+{
+    const double tmp0 = -y;
+    const double tmp1 = a + x;
+    const double tmp2 = atan2(tmp0, tmp1);
+    const double tmp3 = -a + x;
+    const double tmp4 = atan2(tmp0, tmp3);
+    const double tmp5 = sqrt(sin(tmp2)*sin(tmp4));
+    const double tmp6 = (1.0/2.0)*tmp2 + (1.0/2.0)*tmp4;
+    const double tmp7 = cos(tmp6);
+    const double tmp8 = pow(y, 2);
+    return -tmp5*tmp7*y - tmp5*x*sin(tmp6) + 2*tmp7*pow(pow(tmp1, 2) + tmp8, 1.0/4.0)*pow(pow(tmp3, 2) + tmp8, 1.0/4.0) - 2*x;
+}
+
+/* Stress syy, normal to it, under the shear traction sqrt(a^2 - x^2). See asymslip_gen.h. */
+double asymslip_semi_ellipse_shear_syy(double x, double y, double a)
+{
+    const double tmp0 = -y;
+    const double tmp1 = atan2(tmp0, a + x);
+    const double tmp2 = atan2(tmp0, -a + x);
+    const double tmp3 = sqrt(sin(tmp1)*sin(tmp2));
+    const double tmp4 = (1.0/2.0)*tmp1 + (1.0/2.0)*tmp2;
+    return tmp3*x*sin(tmp4) + tmp3*y*cos(tmp4);
+}
+
+/* Stress sxy, under the shear traction sqrt(a^2 - x^2). See asymslip_gen.h. */
+double asymslip_semi_ellipse_shear_sxy(double x, double y, double a)
+{
+    const double tmp0 = -y;
+    const double tmp1 = a + x;
+    const double tmp2 = atan2(tmp0, tmp1);
+    const double tmp3 = -a + x;
+    const double tmp4 = atan2(tmp0, tmp3);
+    const double tmp5 = sqrt(sin(tmp2)*sin(tmp4));
+    const double tmp6 = (1.0/2.0)*tmp2 + (1.0/2.0)*tmp4;
+    const double tmp7 = sin(tmp6);
+    const double tmp8 = pow(y, 2);
+    return tmp5*tmp7*y - tmp5*x*cos(tmp6) + tmp7*pow(pow(tmp1, 2) + tmp8, 1.0/4.0)*pow(pow(tmp3, 2) + tmp8, 1.0/4.0) + 2*y;
+}
+
+/* K^(k)(v)/k! divided by v^(1 - k): (-1)^k / (k (k - 1)). See asymslip_gen.h. */
+double asymslip_half_plane_node_series_factor(double k)
+{
+    return pow(-1, k)/(k*(k - 1));
 }
 
 /* Gap profile h(x) = x^2/(2R) of the cylinder, from which (29) is derived. See asymslip_gen.h. */

@@ -7,7 +7,8 @@
  * derivations/section2_dislocation_density.py, derivations/section2_validity.py,
  * derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
  * derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
- * derivations/section3_tractions.py, derivations/solver_influence.py.
+ * derivations/section3_tractions.py, derivations/solver_influence.py,
+ * derivations/stress_half_plane.py.
  * Do not edit: change the derivation and run `make generate`.
  */
 
@@ -957,6 +958,513 @@ double asymslip_second_order_stick_boundary_gap_from_multiplier(
     double da_dP,
     double L_I1,
     double dL_I_dP);
+
+/* --------------------------------------------------------------------------------------------
+ * half_plane_stress: The plane-strain stress field of the lower half-plane (depth y >= 0)
+ * under surface tractions exerted by the indenter -- pressure p into the body, shear q
+ * along +x -- from Flamant's point-force solution: the closed form of one linear element,
+ * its surface limit (principal value), and the potential form the evaluator of
+ * asymslip.stress sums (beyond the paper; issue 18).
+ */
+
+/**
+ * Stress sxx, along the surface, at (x, y) from one linear traction element.
+ *
+ * The lower half-plane under a pressure p and a shear traction q varying linearly from
+ * (p0, q0) at t0 to (p1, q1) at t1, both exerted by the indenter; tension positive, plane
+ * strain. Valid for y > 0, and at y = 0 (the surface limit, principal value) for x != t0,
+ * t1; well conditioned within a few element lengths of the element, while far from it the
+ * terms of its two ends cancel. For many elements use the node potentials (asymslip.stress
+ * sums them).
+ *
+ * Implements Eqs. (F-1), (HP-1), (HP-2) of the paper; derived in
+ * derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   x   Position along the surface, from the contact centre [length].
+ *   y   Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *       surface limit (principal value).
+ *   t0  Left end of the element [length].
+ *   t1  Right end of the element, t1 > t0 [length].
+ *   p0  Pressure at t0 (positive pushes into the lower body) [force/length^2].
+ *   p1  Pressure at t1 [force/length^2].
+ *   q0  Shear traction at t0, exerted by the indenter along +x [force/length^2].
+ *   q1  Shear traction at t1 [force/length^2].
+ *
+ * Returns:
+ *   sxx [force/length^2].
+ */
+double asymslip_half_plane_element_sxx(
+    double x,
+    double y,
+    double t0,
+    double t1,
+    double p0,
+    double p1,
+    double q0,
+    double q1);
+
+/**
+ * Stress syy, normal to it, at (x, y) from one linear traction element.
+ *
+ * The lower half-plane under a pressure p and a shear traction q varying linearly from
+ * (p0, q0) at t0 to (p1, q1) at t1, both exerted by the indenter; tension positive, plane
+ * strain. Valid for y > 0, and at y = 0 (the surface limit, principal value) for x != t0,
+ * t1; well conditioned within a few element lengths of the element, while far from it the
+ * terms of its two ends cancel. For many elements use the node potentials (asymslip.stress
+ * sums them).
+ *
+ * Implements Eqs. (F-1), (HP-1), (HP-2) of the paper; derived in
+ * derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   x   Position along the surface, from the contact centre [length].
+ *   y   Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *       surface limit (principal value).
+ *   t0  Left end of the element [length].
+ *   t1  Right end of the element, t1 > t0 [length].
+ *   p0  Pressure at t0 (positive pushes into the lower body) [force/length^2].
+ *   p1  Pressure at t1 [force/length^2].
+ *   q0  Shear traction at t0, exerted by the indenter along +x [force/length^2].
+ *   q1  Shear traction at t1 [force/length^2].
+ *
+ * Returns:
+ *   syy [force/length^2].
+ */
+double asymslip_half_plane_element_syy(
+    double x,
+    double y,
+    double t0,
+    double t1,
+    double p0,
+    double p1,
+    double q0,
+    double q1);
+
+/**
+ * Stress sxy, at (x, y) from one linear traction element.
+ *
+ * The lower half-plane under a pressure p and a shear traction q varying linearly from
+ * (p0, q0) at t0 to (p1, q1) at t1, both exerted by the indenter; tension positive, plane
+ * strain. Valid for y > 0, and at y = 0 (the surface limit, principal value) for x != t0,
+ * t1; well conditioned within a few element lengths of the element, while far from it the
+ * terms of its two ends cancel. For many elements use the node potentials (asymslip.stress
+ * sums them).
+ *
+ * Implements Eqs. (F-1), (HP-1), (HP-2) of the paper; derived in
+ * derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   x   Position along the surface, from the contact centre [length].
+ *   y   Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *       surface limit (principal value).
+ *   t0  Left end of the element [length].
+ *   t1  Right end of the element, t1 > t0 [length].
+ *   p0  Pressure at t0 (positive pushes into the lower body) [force/length^2].
+ *   p1  Pressure at t1 [force/length^2].
+ *   q0  Shear traction at t0, exerted by the indenter along +x [force/length^2].
+ *   q1  Shear traction at t1 [force/length^2].
+ *
+ * Returns:
+ *   sxy [force/length^2].
+ */
+double asymslip_half_plane_element_sxy(
+    double x,
+    double y,
+    double t0,
+    double t1,
+    double p0,
+    double p1,
+    double q0,
+    double q1);
+
+/**
+ * L = log|zeta - t_j| of a node, zeta = x - i y.
+ *
+ * Real part of log(zeta - t_j); infinite at the node itself on the surface (u = y = 0),
+ * where every term it enters vanishes (the evaluator passes a finite value there).
+ *
+ * Implements Eq. (HP-4) of the paper; derived in derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   u  Offset x - t_j of the point from the node t_j along the surface [length].
+ *   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *      surface limit (principal value).
+ *
+ * Returns:
+ *   L [log of a length].
+ */
+double asymslip_half_plane_node_log_distance(double u, double y);
+
+/**
+ * theta = arg(zeta - t_j) of a node, in [-pi, 0].
+ *
+ * Imaginary part of log(zeta - t_j), zeta = x - i y: -pi for a surface point left of the
+ * node (u < 0, y = +0), 0 right of it: the limit from inside the body. y must be +0.0 on
+ * the surface, not -0.0.
+ *
+ * Implements Eq. (HP-4) of the paper; derived in derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   u  Offset x - t_j of the point from the node t_j along the surface [length].
+ *   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *      surface limit (principal value).
+ *
+ * Returns:
+ *   theta [rad].
+ */
+double asymslip_half_plane_node_angle(double u, double y);
+
+/**
+ * Re K(zeta - t_j), K(v) = v log v - v.
+ *
+ * The node kernel of a piecewise-linear load: its potential is sum_j c_j K(zeta - t_j)
+ * with c_j the load's slope jump at node t_j; L and theta from
+ * half_plane_node_log_distance and half_plane_node_angle.
+ *
+ * Implements Eq. (HP-4) of the paper; derived in derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   u      Offset x - t_j of the point from the node t_j along the surface [length].
+ *   y      Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *          surface limit (principal value).
+ *   L      L = log|zeta - t_j| = log(u^2 + y^2)/2 (node_log_distance).
+ *   theta  theta = arg(zeta - t_j) = atan2(-y, u), in [-pi, 0] (node_angle).
+ *
+ * Returns:
+ *   [length].
+ */
+double asymslip_half_plane_node_potential_real(double u, double y, double L, double theta);
+
+/**
+ * Im K(zeta - t_j), K(v) = v log v - v.
+ *
+ * The node kernel of a piecewise-linear load: its potential is sum_j c_j K(zeta - t_j)
+ * with c_j the load's slope jump at node t_j; L and theta from
+ * half_plane_node_log_distance and half_plane_node_angle.
+ *
+ * Implements Eq. (HP-4) of the paper; derived in derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   u      Offset x - t_j of the point from the node t_j along the surface [length].
+ *   y      Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *          surface limit (principal value).
+ *   L      L = log|zeta - t_j| = log(u^2 + y^2)/2 (node_log_distance).
+ *   theta  theta = arg(zeta - t_j) = atan2(-y, u), in [-pi, 0] (node_angle).
+ *
+ * Returns:
+ *   [length].
+ */
+double asymslip_half_plane_node_potential_imag(double u, double y, double L, double theta);
+
+/**
+ * Re sum_j c_j K(zeta - t_j) from weighted sums over the nodes.
+ *
+ * The potential of a piecewise-linear load (slope jumps c_j at nodes t_j) at zeta = x - i
+ * y, from A_f = sum c_j f_j and B_f = sum c_j t_j f_j with f = L_j = log|zeta - t_j|,
+ * theta_j = arg(zeta - t_j) and 1. Keep x and t_j small (a local origin near the point): x
+ * A_L - B_L cancels where |x - t_j| << |t_j|.
+ *
+ * Implements Eq. (HP-4) of the paper; derived in derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   x        Position of the point, in the frame of the node positions t_j [length].
+ *   y        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *            surface limit (principal value).
+ *   A_L      A_L = sum_j c_j L_j over the nodes summed [force/length].
+ *   B_L      B_L = sum_j c_j t_j L_j [force].
+ *   A_theta  A_theta = sum_j c_j theta_j [force/length].
+ *   A_1      A_1 = sum_j c_j [force/length].
+ *   B_1      B_1 = sum_j c_j t_j [force].
+ *
+ * Returns:
+ *   [force/length].
+ */
+double asymslip_half_plane_node_sum_real(
+    double x,
+    double y,
+    double A_L,
+    double B_L,
+    double A_theta,
+    double A_1,
+    double B_1);
+
+/**
+ * Im sum_j c_j K(zeta - t_j) from weighted sums over the nodes.
+ *
+ * The potential of a piecewise-linear load (slope jumps c_j at nodes t_j) at zeta = x - i
+ * y, from A_f = sum c_j f_j and B_f = sum c_j t_j f_j with f = L_j = log|zeta - t_j|,
+ * theta_j = arg(zeta - t_j) and 1. Keep x and t_j small (a local origin near the point): x
+ * A_L - B_L cancels where |x - t_j| << |t_j|.
+ *
+ * Implements Eq. (HP-4) of the paper; derived in derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   x        Position of the point, in the frame of the node positions t_j [length].
+ *   y        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *            surface limit (principal value).
+ *   A_theta  A_theta = sum_j c_j theta_j [force/length].
+ *   B_theta  B_theta = sum_j c_j t_j theta_j [force].
+ *   A_L      A_L = sum_j c_j L_j over the nodes summed [force/length].
+ *   A_1      A_1 = sum_j c_j [force/length].
+ *
+ * Returns:
+ *   [force/length].
+ */
+double asymslip_half_plane_node_sum_imag(
+    double x,
+    double y,
+    double A_theta,
+    double B_theta,
+    double A_L,
+    double A_1);
+
+/**
+ * Stress sxx, along the surface, from the pressure and shear potentials.
+ *
+ * Q = int q(t)/(zeta - t) dt and P = int p(t)/(zeta - t) dt at zeta = x - i y (tractions
+ * exerted by the indenter on the lower body): the whole plane-strain field at depth y >=
+ * 0, tension positive. Re P does not enter.
+ *
+ * Implements Eqs. (F-1), (HP-3) of the paper; derived in derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   Q_re   Re Q: real part of the shear potential Q = int q(t)/(zeta - t) dt
+ *          [force/length].
+ *   Q_im   Im Q [force/length]; its surface limit from the body is pi q(x).
+ *   P_im   Im P of the pressure potential P = int p(t)/(zeta - t) dt; pi p(x) at y = 0.
+ *   dQ_re  Re dQ/dzeta [force/length^2].
+ *   dQ_im  Im dQ/dzeta [force/length^2].
+ *   dP_re  Re dP/dzeta [force/length^2].
+ *   dP_im  Im dP/dzeta [force/length^2].
+ *   y      Depth y >= 0 of the point [length] (multiplies the derivatives).
+ *
+ * Returns:
+ *   sxx [force/length^2].
+ */
+double asymslip_half_plane_potential_sxx(
+    double Q_re,
+    double Q_im,
+    double P_im,
+    double dQ_re,
+    double dQ_im,
+    double dP_re,
+    double dP_im,
+    double y);
+
+/**
+ * Stress syy, normal to it, from the pressure and shear potentials.
+ *
+ * Q = int q(t)/(zeta - t) dt and P = int p(t)/(zeta - t) dt at zeta = x - i y (tractions
+ * exerted by the indenter on the lower body): the whole plane-strain field at depth y >=
+ * 0, tension positive. Re P does not enter.
+ *
+ * Implements Eqs. (F-1), (HP-3) of the paper; derived in derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   Q_re   Re Q: real part of the shear potential Q = int q(t)/(zeta - t) dt
+ *          [force/length].
+ *   Q_im   Im Q [force/length]; its surface limit from the body is pi q(x).
+ *   P_im   Im P of the pressure potential P = int p(t)/(zeta - t) dt; pi p(x) at y = 0.
+ *   dQ_re  Re dQ/dzeta [force/length^2].
+ *   dQ_im  Im dQ/dzeta [force/length^2].
+ *   dP_re  Re dP/dzeta [force/length^2].
+ *   dP_im  Im dP/dzeta [force/length^2].
+ *   y      Depth y >= 0 of the point [length] (multiplies the derivatives).
+ *
+ * Returns:
+ *   syy [force/length^2].
+ */
+double asymslip_half_plane_potential_syy(
+    double Q_re,
+    double Q_im,
+    double P_im,
+    double dQ_re,
+    double dQ_im,
+    double dP_re,
+    double dP_im,
+    double y);
+
+/**
+ * Stress sxy, from the pressure and shear potentials.
+ *
+ * Q = int q(t)/(zeta - t) dt and P = int p(t)/(zeta - t) dt at zeta = x - i y (tractions
+ * exerted by the indenter on the lower body): the whole plane-strain field at depth y >=
+ * 0, tension positive. Re P does not enter.
+ *
+ * Implements Eqs. (F-1), (HP-3) of the paper; derived in derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   Q_re   Re Q: real part of the shear potential Q = int q(t)/(zeta - t) dt
+ *          [force/length].
+ *   Q_im   Im Q [force/length]; its surface limit from the body is pi q(x).
+ *   P_im   Im P of the pressure potential P = int p(t)/(zeta - t) dt; pi p(x) at y = 0.
+ *   dQ_re  Re dQ/dzeta [force/length^2].
+ *   dQ_im  Im dQ/dzeta [force/length^2].
+ *   dP_re  Re dP/dzeta [force/length^2].
+ *   dP_im  Im dP/dzeta [force/length^2].
+ *   y      Depth y >= 0 of the point [length] (multiplies the derivatives).
+ *
+ * Returns:
+ *   sxy [force/length^2].
+ */
+double asymslip_half_plane_potential_sxy(
+    double Q_re,
+    double Q_im,
+    double P_im,
+    double dQ_re,
+    double dQ_im,
+    double dP_re,
+    double dP_im,
+    double y);
+
+/**
+ * Stress sxx, along the surface, under the pressure sqrt(a^2 - x^2).
+ *
+ * The lower half-plane under the semi-elliptic pressure sqrt(a^2 - t^2) on (-a, a),
+ * exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's
+ * sliding shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite
+ * everywhere (polar form).
+ *
+ * Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+ * derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   x  Position along the surface from the load's centre [length].
+ *   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *      surface limit (principal value).
+ *   a  Half-width a > 0 of the load [length].
+ *
+ * Returns:
+ *   sxx per unit load amplitude [length].
+ */
+double asymslip_semi_ellipse_pressure_sxx(double x, double y, double a);
+
+/**
+ * Stress syy, normal to it, under the pressure sqrt(a^2 - x^2).
+ *
+ * The lower half-plane under the semi-elliptic pressure sqrt(a^2 - t^2) on (-a, a),
+ * exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's
+ * sliding shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite
+ * everywhere (polar form).
+ *
+ * Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+ * derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   x  Position along the surface from the load's centre [length].
+ *   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *      surface limit (principal value).
+ *   a  Half-width a > 0 of the load [length].
+ *
+ * Returns:
+ *   syy per unit load amplitude [length].
+ */
+double asymslip_semi_ellipse_pressure_syy(double x, double y, double a);
+
+/**
+ * Stress sxy, under the pressure sqrt(a^2 - x^2).
+ *
+ * The lower half-plane under the semi-elliptic pressure sqrt(a^2 - t^2) on (-a, a),
+ * exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's
+ * sliding shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite
+ * everywhere (polar form).
+ *
+ * Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+ * derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   x  Position along the surface from the load's centre [length].
+ *   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *      surface limit (principal value).
+ *   a  Half-width a > 0 of the load [length].
+ *
+ * Returns:
+ *   sxy per unit load amplitude [length].
+ */
+double asymslip_semi_ellipse_pressure_sxy(double x, double y, double a);
+
+/**
+ * Stress sxx, along the surface, under the shear traction sqrt(a^2 - x^2).
+ *
+ * The lower half-plane under the semi-elliptic shear traction sqrt(a^2 - t^2) on (-a, a),
+ * exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's
+ * sliding shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite
+ * everywhere (polar form).
+ *
+ * Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+ * derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   x  Position along the surface from the load's centre [length].
+ *   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *      surface limit (principal value).
+ *   a  Half-width a > 0 of the load [length].
+ *
+ * Returns:
+ *   sxx per unit load amplitude [length].
+ */
+double asymslip_semi_ellipse_shear_sxx(double x, double y, double a);
+
+/**
+ * Stress syy, normal to it, under the shear traction sqrt(a^2 - x^2).
+ *
+ * The lower half-plane under the semi-elliptic shear traction sqrt(a^2 - t^2) on (-a, a),
+ * exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's
+ * sliding shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite
+ * everywhere (polar form).
+ *
+ * Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+ * derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   x  Position along the surface from the load's centre [length].
+ *   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *      surface limit (principal value).
+ *   a  Half-width a > 0 of the load [length].
+ *
+ * Returns:
+ *   syy per unit load amplitude [length].
+ */
+double asymslip_semi_ellipse_shear_syy(double x, double y, double a);
+
+/**
+ * Stress sxy, under the shear traction sqrt(a^2 - x^2).
+ *
+ * The lower half-plane under the semi-elliptic shear traction sqrt(a^2 - t^2) on (-a, a),
+ * exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's
+ * sliding shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite
+ * everywhere (polar form).
+ *
+ * Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+ * derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   x  Position along the surface from the load's centre [length].
+ *   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+ *      surface limit (principal value).
+ *   a  Half-width a > 0 of the load [length].
+ *
+ * Returns:
+ *   sxy per unit load amplitude [length].
+ */
+double asymslip_semi_ellipse_shear_sxy(double x, double y, double a);
+
+/**
+ * K^(k)(v)/k! divided by v^(1 - k): (-1)^k / (k (k - 1)).
+ *
+ * Taylor coefficients of the node kernel about a far centre v0: K(v0 + d) = K(v0) +
+ * log(v0) d + sum_{k >= 2} factor(k) v0^(1 - k) d^k, convergent for |d| < |v0|.
+ *
+ * Implements Eq. (HP-5) of the paper; derived in derivations/stress_half_plane.py.
+ *
+ * Arguments:
+ *   k  Order k >= 2 of the Taylor term.
+ *
+ * Returns:
+ *   The factor (dimensionless).
+ */
+double asymslip_half_plane_node_series_factor(double k);
 
 /* --------------------------------------------------------------------------------------------
  * hertz: Section 3 of the paper: the Hertzian (cylinder) contact law and its edge

@@ -6,7 +6,8 @@
 ! derivations/section2_dislocation_density.py, derivations/section2_validity.py,
 ! derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
 ! derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
-! derivations/section3_tractions.py, derivations/solver_influence.py.
+! derivations/section3_tractions.py, derivations/solver_influence.py,
+! derivations/stress_half_plane.py.
 ! Do not edit: change the derivation and run `make generate`.
 
 ! The formulas of the paper (Moore, Hills et al., Theoretical and Applied Fracture
@@ -57,6 +58,25 @@ module asymslip_gen
     public :: asymslip_flat_rounded_pressure
     public :: asymslip_second_order_stick_boundary_gap
     public :: asymslip_second_order_stick_boundary_gap_from_multiplier
+    public :: asymslip_half_plane_element_sxx
+    public :: asymslip_half_plane_element_syy
+    public :: asymslip_half_plane_element_sxy
+    public :: asymslip_half_plane_node_log_distance
+    public :: asymslip_half_plane_node_angle
+    public :: asymslip_half_plane_node_potential_real
+    public :: asymslip_half_plane_node_potential_imag
+    public :: asymslip_half_plane_node_sum_real
+    public :: asymslip_half_plane_node_sum_imag
+    public :: asymslip_half_plane_potential_sxx
+    public :: asymslip_half_plane_potential_syy
+    public :: asymslip_half_plane_potential_sxy
+    public :: asymslip_semi_ellipse_pressure_sxx
+    public :: asymslip_semi_ellipse_pressure_syy
+    public :: asymslip_semi_ellipse_pressure_sxy
+    public :: asymslip_semi_ellipse_shear_sxx
+    public :: asymslip_semi_ellipse_shear_syy
+    public :: asymslip_semi_ellipse_shear_sxy
+    public :: asymslip_half_plane_node_series_factor
     public :: asymslip_hertz_profile
     public :: asymslip_hertz_load
     public :: asymslip_hertz_load_slope
@@ -134,6 +154,25 @@ module asymslip_gen
     public :: asymslip_flat_rounded_pressure_c
     public :: asymslip_second_order_stick_boundary_gap_c
     public :: asymslip_second_order_stick_boundary_gap_from_multiplier_c
+    public :: asymslip_half_plane_element_sxx_c
+    public :: asymslip_half_plane_element_syy_c
+    public :: asymslip_half_plane_element_sxy_c
+    public :: asymslip_half_plane_node_log_distance_c
+    public :: asymslip_half_plane_node_angle_c
+    public :: asymslip_half_plane_node_potential_real_c
+    public :: asymslip_half_plane_node_potential_imag_c
+    public :: asymslip_half_plane_node_sum_real_c
+    public :: asymslip_half_plane_node_sum_imag_c
+    public :: asymslip_half_plane_potential_sxx_c
+    public :: asymslip_half_plane_potential_syy_c
+    public :: asymslip_half_plane_potential_sxy_c
+    public :: asymslip_semi_ellipse_pressure_sxx_c
+    public :: asymslip_semi_ellipse_pressure_syy_c
+    public :: asymslip_semi_ellipse_pressure_sxy_c
+    public :: asymslip_semi_ellipse_shear_sxx_c
+    public :: asymslip_semi_ellipse_shear_syy_c
+    public :: asymslip_semi_ellipse_shear_sxy_c
+    public :: asymslip_half_plane_node_series_factor_c
     public :: asymslip_hertz_profile_c
     public :: asymslip_hertz_load_c
     public :: asymslip_hertz_load_slope_c
@@ -1485,6 +1524,793 @@ contains
         asymslip_result = asymslip_second_order_stick_boundary_gap_from_multiplier(mu, lam, a1, &
                 da_dP, L_I1, dL_I_dP)
     end function asymslip_second_order_stick_boundary_gap_from_multiplier_c
+
+    ! --------------------------------------------------------------------------------------------
+    ! half_plane_stress: The plane-strain stress field of the lower half-plane (depth y >= 0)
+    ! under surface tractions exerted by the indenter -- pressure p into the body, shear q
+    ! along +x -- from Flamant's point-force solution: the closed form of one linear element,
+    ! its surface limit (principal value), and the potential form the evaluator of
+    ! asymslip.stress sums (beyond the paper; issue 18).
+    ! --------------------------------------------------------------------------------------------
+    !> Stress sxx, along the surface, at (x, y) from one linear traction element.
+    !!
+    !! The lower half-plane under a pressure p and a shear traction q varying linearly from
+    !! (p0, q0) at t0 to (p1, q1) at t1, both exerted by the indenter; tension positive, plane
+    !! strain. Valid for y > 0, and at y = 0 (the surface limit, principal value) for x != t0,
+    !! t1; well conditioned within a few element lengths of the element, while far from it the
+    !! terms of its two ends cancel. For many elements use the node potentials (asymslip.stress
+    !! sums them).
+    !!
+    !! Implements Eqs. (F-1), (HP-1), (HP-2) of the paper; derived in
+    !! derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   x   Position along the surface, from the contact centre [length].
+    !!   y   Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!       surface limit (principal value).
+    !!   t0  Left end of the element [length].
+    !!   t1  Right end of the element, t1 > t0 [length].
+    !!   p0  Pressure at t0 (positive pushes into the lower body) [force/length^2].
+    !!   p1  Pressure at t1 [force/length^2].
+    !!   q0  Shear traction at t0, exerted by the indenter along +x [force/length^2].
+    !!   q1  Shear traction at t1 [force/length^2].
+    !!
+    !! Returns:
+    !!   sxx [force/length^2].
+    elemental function asymslip_half_plane_element_sxx(x, y, t0, t1, p0, p1, q0, q1) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: x, y, t0, t1, p0, p1, q0, q1
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4, tmp5, tmp6, tmp7
+        real(c_double) :: tmp8, tmp9, tmp10, tmp11, tmp12, tmp13, tmp14, tmp15
+        real(c_double) :: tmp16
+        tmp0 = 1d0/asymslip_pi
+        tmp1 = 1d0/(-t0 + t1)
+        tmp2 = -y
+        tmp3 = -x
+        tmp4 = -t0 - tmp3
+        tmp5 = -t1 - tmp3
+        tmp6 = 3*y
+        tmp7 = y**2
+        tmp8 = tmp4**2
+        tmp9 = tmp7 + tmp8
+        tmp10 = tmp5**2
+        tmp11 = tmp10 + tmp7
+        tmp12 = p0*y
+        tmp13 = y**4
+        tmp14 = y**3
+        tmp15 = q1*tmp7
+        tmp16 = 2*tmp10
+        asymslip_result = -tmp0*tmp1*(-log(tmp11) + log(tmp9))*(-p1*y - q0*tmp5 &
+              + q1*tmp4 + tmp12) + tmp0*tmp1*(atan2(tmp2, tmp4) - atan2(tmp2, &
+              tmp5))*(p0*tmp5 - p1*tmp4 + q0*tmp6 - q1*tmp6) - tmp0*(-p0*tmp14* &
+              tmp4 + p1*tmp14*tmp5 + p1*tmp5*tmp8*y + 3*q0*tmp10*tmp7 + 2*q0* &
+              tmp10*tmp8 + 3*q0*tmp13 + 2*q0*tmp7*tmp8 - 3*q1*tmp13 - q1*tmp16* &
+              tmp8 - tmp10*tmp12*tmp4 - tmp15*tmp16 - 3*tmp15*tmp8)/(tmp11*tmp9 &
+              )
+    end function asymslip_half_plane_element_sxx
+
+    !> C binding of asymslip_half_plane_element_sxx (scalar arguments by value).
+    function asymslip_half_plane_element_sxx_c(x, y, t0, t1, p0, p1, q0, q1) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_element_sxx")
+        real(c_double), value, intent(in) :: x, y, t0, t1, p0, p1, q0, q1
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_element_sxx(x, y, t0, t1, p0, p1, q0, q1)
+    end function asymslip_half_plane_element_sxx_c
+
+    !> Stress syy, normal to it, at (x, y) from one linear traction element.
+    !!
+    !! The lower half-plane under a pressure p and a shear traction q varying linearly from
+    !! (p0, q0) at t0 to (p1, q1) at t1, both exerted by the indenter; tension positive, plane
+    !! strain. Valid for y > 0, and at y = 0 (the surface limit, principal value) for x != t0,
+    !! t1; well conditioned within a few element lengths of the element, while far from it the
+    !! terms of its two ends cancel. For many elements use the node potentials (asymslip.stress
+    !! sums them).
+    !!
+    !! Implements Eqs. (F-1), (HP-1), (HP-2) of the paper; derived in
+    !! derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   x   Position along the surface, from the contact centre [length].
+    !!   y   Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!       surface limit (principal value).
+    !!   t0  Left end of the element [length].
+    !!   t1  Right end of the element, t1 > t0 [length].
+    !!   p0  Pressure at t0 (positive pushes into the lower body) [force/length^2].
+    !!   p1  Pressure at t1 [force/length^2].
+    !!   q0  Shear traction at t0, exerted by the indenter along +x [force/length^2].
+    !!   q1  Shear traction at t1 [force/length^2].
+    !!
+    !! Returns:
+    !!   syy [force/length^2].
+    elemental function asymslip_half_plane_element_syy(x, y, t0, t1, p0, p1, q0, q1) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: x, y, t0, t1, p0, p1, q0, q1
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4, tmp5, tmp6, tmp7
+        real(c_double) :: tmp8, tmp9, tmp10
+        tmp0 = 1d0/asymslip_pi
+        tmp1 = -y
+        tmp2 = -x
+        tmp3 = -t0 - tmp2
+        tmp4 = -t1 - tmp2
+        tmp5 = q1*y
+        tmp6 = y**2
+        tmp7 = tmp3**2
+        tmp8 = tmp4**2
+        tmp9 = y**3
+        tmp10 = p0*tmp3
+        asymslip_result = tmp0*y*(p1*tmp4*tmp6 + p1*tmp4*tmp7 + q0*tmp8*y + q0* &
+              tmp9 - q1*tmp9 - tmp10*tmp6 - tmp10*tmp8 - tmp5*tmp7)/((tmp6 + &
+              tmp7)*(tmp6 + tmp8)) - tmp0*(atan2(tmp1, tmp3) - atan2(tmp1, tmp4 &
+              ))*(-p0*tmp4 + p1*tmp3 + q0*y - tmp5)/(-t0 + t1)
+    end function asymslip_half_plane_element_syy
+
+    !> C binding of asymslip_half_plane_element_syy (scalar arguments by value).
+    function asymslip_half_plane_element_syy_c(x, y, t0, t1, p0, p1, q0, q1) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_element_syy")
+        real(c_double), value, intent(in) :: x, y, t0, t1, p0, p1, q0, q1
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_element_syy(x, y, t0, t1, p0, p1, q0, q1)
+    end function asymslip_half_plane_element_syy_c
+
+    !> Stress sxy, at (x, y) from one linear traction element.
+    !!
+    !! The lower half-plane under a pressure p and a shear traction q varying linearly from
+    !! (p0, q0) at t0 to (p1, q1) at t1, both exerted by the indenter; tension positive, plane
+    !! strain. Valid for y > 0, and at y = 0 (the surface limit, principal value) for x != t0,
+    !! t1; well conditioned within a few element lengths of the element, while far from it the
+    !! terms of its two ends cancel. For many elements use the node potentials (asymslip.stress
+    !! sums them).
+    !!
+    !! Implements Eqs. (F-1), (HP-1), (HP-2) of the paper; derived in
+    !! derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   x   Position along the surface, from the contact centre [length].
+    !!   y   Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!       surface limit (principal value).
+    !!   t0  Left end of the element [length].
+    !!   t1  Right end of the element, t1 > t0 [length].
+    !!   p0  Pressure at t0 (positive pushes into the lower body) [force/length^2].
+    !!   p1  Pressure at t1 [force/length^2].
+    !!   q0  Shear traction at t0, exerted by the indenter along +x [force/length^2].
+    !!   q1  Shear traction at t1 [force/length^2].
+    !!
+    !! Returns:
+    !!   sxy [force/length^2].
+    elemental function asymslip_half_plane_element_sxy(x, y, t0, t1, p0, p1, q0, q1) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: x, y, t0, t1, p0, p1, q0, q1
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4, tmp5, tmp6, tmp7
+        real(c_double) :: tmp8, tmp9, tmp10, tmp11, tmp12, tmp13, tmp14, tmp15
+        tmp0 = y**2
+        tmp1 = -x
+        tmp2 = -t0 - tmp1
+        tmp3 = tmp2**2
+        tmp4 = tmp0 + tmp3
+        tmp5 = -t1 - tmp1
+        tmp6 = tmp5**2
+        tmp7 = tmp0 + tmp6
+        tmp8 = 1d0/asymslip_pi
+        tmp9 = tmp8/(-t0 + t1)
+        tmp10 = -y
+        tmp11 = p0*y
+        tmp12 = p1*y
+        tmp13 = y**3
+        tmp14 = q0*tmp2
+        tmp15 = q1*tmp5
+        asymslip_result = -tmp9*y*(q0 - q1)*(log(tmp4) - log(tmp7)) - tmp9*( &
+              atan2(tmp10, tmp2) - atan2(tmp10, tmp5))*(-q0*tmp5 + q1*tmp2 + &
+              tmp11 - tmp12) + tmp8*y*(p0*tmp13 - p1*tmp13 + tmp0*tmp14 - tmp0* &
+              tmp15 + tmp11*tmp6 - tmp12*tmp3 + tmp14*tmp6 - tmp15*tmp3)/(tmp4* &
+              tmp7)
+    end function asymslip_half_plane_element_sxy
+
+    !> C binding of asymslip_half_plane_element_sxy (scalar arguments by value).
+    function asymslip_half_plane_element_sxy_c(x, y, t0, t1, p0, p1, q0, q1) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_element_sxy")
+        real(c_double), value, intent(in) :: x, y, t0, t1, p0, p1, q0, q1
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_element_sxy(x, y, t0, t1, p0, p1, q0, q1)
+    end function asymslip_half_plane_element_sxy_c
+
+    !> L = log|zeta - t_j| of a node, zeta = x - i y.
+    !!
+    !! Real part of log(zeta - t_j); infinite at the node itself on the surface (u = y = 0),
+    !! where every term it enters vanishes (the evaluator passes a finite value there).
+    !!
+    !! Implements Eq. (HP-4) of the paper; derived in derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   u  Offset x - t_j of the point from the node t_j along the surface [length].
+    !!   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!      surface limit (principal value).
+    !!
+    !! Returns:
+    !!   L [log of a length].
+    elemental function asymslip_half_plane_node_log_distance(u, y) result(asymslip_result)
+        real(c_double), intent(in) :: u, y
+        real(c_double) :: asymslip_result
+        asymslip_result = (1.0d0/2.0d0)*log(u**2 + y**2)
+    end function asymslip_half_plane_node_log_distance
+
+    !> C binding of asymslip_half_plane_node_log_distance (scalar arguments by value).
+    function asymslip_half_plane_node_log_distance_c(u, y) result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_node_log_distance")
+        real(c_double), value, intent(in) :: u, y
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_node_log_distance(u, y)
+    end function asymslip_half_plane_node_log_distance_c
+
+    !> theta = arg(zeta - t_j) of a node, in [-pi, 0].
+    !!
+    !! Imaginary part of log(zeta - t_j), zeta = x - i y: -pi for a surface point left of the
+    !! node (u < 0, y = +0), 0 right of it: the limit from inside the body. y must be +0.0 on
+    !! the surface, not -0.0.
+    !!
+    !! Implements Eq. (HP-4) of the paper; derived in derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   u  Offset x - t_j of the point from the node t_j along the surface [length].
+    !!   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!      surface limit (principal value).
+    !!
+    !! Returns:
+    !!   theta [rad].
+    elemental function asymslip_half_plane_node_angle(u, y) result(asymslip_result)
+        real(c_double), intent(in) :: u, y
+        real(c_double) :: asymslip_result
+        asymslip_result = atan2(-y, u)
+    end function asymslip_half_plane_node_angle
+
+    !> C binding of asymslip_half_plane_node_angle (scalar arguments by value).
+    function asymslip_half_plane_node_angle_c(u, y) result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_node_angle")
+        real(c_double), value, intent(in) :: u, y
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_node_angle(u, y)
+    end function asymslip_half_plane_node_angle_c
+
+    !> Re K(zeta - t_j), K(v) = v log v - v.
+    !!
+    !! The node kernel of a piecewise-linear load: its potential is sum_j c_j K(zeta - t_j)
+    !! with c_j the load's slope jump at node t_j; L and theta from
+    !! half_plane_node_log_distance and half_plane_node_angle.
+    !!
+    !! Implements Eq. (HP-4) of the paper; derived in derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   u      Offset x - t_j of the point from the node t_j along the surface [length].
+    !!   y      Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!          surface limit (principal value).
+    !!   L      L = log|zeta - t_j| = log(u^2 + y^2)/2 (node_log_distance).
+    !!   theta  theta = arg(zeta - t_j) = atan2(-y, u), in [-pi, 0] (node_angle).
+    !!
+    !! Returns:
+    !!   [length].
+    elemental function asymslip_half_plane_node_potential_real(u, y, L, theta) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: u, y, L, theta
+        real(c_double) :: asymslip_result
+        asymslip_result = L*u + theta*y - u
+    end function asymslip_half_plane_node_potential_real
+
+    !> C binding of asymslip_half_plane_node_potential_real (scalar arguments by value).
+    function asymslip_half_plane_node_potential_real_c(u, y, L, theta) result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_node_potential_real")
+        real(c_double), value, intent(in) :: u, y, L, theta
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_node_potential_real(u, y, L, theta)
+    end function asymslip_half_plane_node_potential_real_c
+
+    !> Im K(zeta - t_j), K(v) = v log v - v.
+    !!
+    !! The node kernel of a piecewise-linear load: its potential is sum_j c_j K(zeta - t_j)
+    !! with c_j the load's slope jump at node t_j; L and theta from
+    !! half_plane_node_log_distance and half_plane_node_angle.
+    !!
+    !! Implements Eq. (HP-4) of the paper; derived in derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   u      Offset x - t_j of the point from the node t_j along the surface [length].
+    !!   y      Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!          surface limit (principal value).
+    !!   L      L = log|zeta - t_j| = log(u^2 + y^2)/2 (node_log_distance).
+    !!   theta  theta = arg(zeta - t_j) = atan2(-y, u), in [-pi, 0] (node_angle).
+    !!
+    !! Returns:
+    !!   [length].
+    elemental function asymslip_half_plane_node_potential_imag(u, y, L, theta) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: u, y, L, theta
+        real(c_double) :: asymslip_result
+        asymslip_result = -L*y + theta*u + y
+    end function asymslip_half_plane_node_potential_imag
+
+    !> C binding of asymslip_half_plane_node_potential_imag (scalar arguments by value).
+    function asymslip_half_plane_node_potential_imag_c(u, y, L, theta) result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_node_potential_imag")
+        real(c_double), value, intent(in) :: u, y, L, theta
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_node_potential_imag(u, y, L, theta)
+    end function asymslip_half_plane_node_potential_imag_c
+
+    !> Re sum_j c_j K(zeta - t_j) from weighted sums over the nodes.
+    !!
+    !! The potential of a piecewise-linear load (slope jumps c_j at nodes t_j) at zeta = x - i
+    !! y, from A_f = sum c_j f_j and B_f = sum c_j t_j f_j with f = L_j = log|zeta - t_j|,
+    !! theta_j = arg(zeta - t_j) and 1. Keep x and t_j small (a local origin near the point): x
+    !! A_L - B_L cancels where |x - t_j| << |t_j|.
+    !!
+    !! Implements Eq. (HP-4) of the paper; derived in derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   x        Position of the point, in the frame of the node positions t_j [length].
+    !!   y        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!            surface limit (principal value).
+    !!   A_L      A_L = sum_j c_j L_j over the nodes summed [force/length].
+    !!   B_L      B_L = sum_j c_j t_j L_j [force].
+    !!   A_theta  A_theta = sum_j c_j theta_j [force/length].
+    !!   A_1      A_1 = sum_j c_j [force/length].
+    !!   B_1      B_1 = sum_j c_j t_j [force].
+    !!
+    !! Returns:
+    !!   [force/length].
+    elemental function asymslip_half_plane_node_sum_real(x, y, A_L, B_L, A_theta, A_1, B_1) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: x, y, A_L, B_L, A_theta, A_1, B_1
+        real(c_double) :: asymslip_result
+        asymslip_result = -A_1*x + A_L*x + A_theta*y + B_1 - B_L
+    end function asymslip_half_plane_node_sum_real
+
+    !> C binding of asymslip_half_plane_node_sum_real (scalar arguments by value).
+    function asymslip_half_plane_node_sum_real_c(x, y, A_L, B_L, A_theta, A_1, B_1) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_node_sum_real")
+        real(c_double), value, intent(in) :: x, y, A_L, B_L, A_theta, A_1, B_1
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_node_sum_real(x, y, A_L, B_L, A_theta, A_1, B_1)
+    end function asymslip_half_plane_node_sum_real_c
+
+    !> Im sum_j c_j K(zeta - t_j) from weighted sums over the nodes.
+    !!
+    !! The potential of a piecewise-linear load (slope jumps c_j at nodes t_j) at zeta = x - i
+    !! y, from A_f = sum c_j f_j and B_f = sum c_j t_j f_j with f = L_j = log|zeta - t_j|,
+    !! theta_j = arg(zeta - t_j) and 1. Keep x and t_j small (a local origin near the point): x
+    !! A_L - B_L cancels where |x - t_j| << |t_j|.
+    !!
+    !! Implements Eq. (HP-4) of the paper; derived in derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   x        Position of the point, in the frame of the node positions t_j [length].
+    !!   y        Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!            surface limit (principal value).
+    !!   A_theta  A_theta = sum_j c_j theta_j [force/length].
+    !!   B_theta  B_theta = sum_j c_j t_j theta_j [force].
+    !!   A_L      A_L = sum_j c_j L_j over the nodes summed [force/length].
+    !!   A_1      A_1 = sum_j c_j [force/length].
+    !!
+    !! Returns:
+    !!   [force/length].
+    elemental function asymslip_half_plane_node_sum_imag(x, y, A_theta, B_theta, A_L, A_1) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: x, y, A_theta, B_theta, A_L, A_1
+        real(c_double) :: asymslip_result
+        asymslip_result = A_1*y - A_L*y + A_theta*x - B_theta
+    end function asymslip_half_plane_node_sum_imag
+
+    !> C binding of asymslip_half_plane_node_sum_imag (scalar arguments by value).
+    function asymslip_half_plane_node_sum_imag_c(x, y, A_theta, B_theta, A_L, A_1) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_node_sum_imag")
+        real(c_double), value, intent(in) :: x, y, A_theta, B_theta, A_L, A_1
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_node_sum_imag(x, y, A_theta, B_theta, A_L, A_1)
+    end function asymslip_half_plane_node_sum_imag_c
+
+    !> Stress sxx, along the surface, from the pressure and shear potentials.
+    !!
+    !! Q = int q(t)/(zeta - t) dt and P = int p(t)/(zeta - t) dt at zeta = x - i y (tractions
+    !! exerted by the indenter on the lower body): the whole plane-strain field at depth y >=
+    !! 0, tension positive. Re P does not enter.
+    !!
+    !! Implements Eqs. (F-1), (HP-3) of the paper; derived in derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   Q_re   Re Q: real part of the shear potential Q = int q(t)/(zeta - t) dt
+    !!          [force/length].
+    !!   Q_im   Im Q [force/length]; its surface limit from the body is pi q(x).
+    !!   P_im   Im P of the pressure potential P = int p(t)/(zeta - t) dt; pi p(x) at y = 0.
+    !!   dQ_re  Re dQ/dzeta [force/length^2].
+    !!   dQ_im  Im dQ/dzeta [force/length^2].
+    !!   dP_re  Re dP/dzeta [force/length^2].
+    !!   dP_im  Im dP/dzeta [force/length^2].
+    !!   y      Depth y >= 0 of the point [length] (multiplies the derivatives).
+    !!
+    !! Returns:
+    !!   sxx [force/length^2].
+    elemental function asymslip_half_plane_potential_sxx(Q_re, Q_im, P_im, dQ_re, dQ_im, dP_re, &
+            dP_im, y) result(asymslip_result)
+        real(c_double), intent(in) :: Q_re, Q_im, P_im, dQ_re, dQ_im, dP_re, dP_im, y
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0
+        tmp0 = 1d0/asymslip_pi
+        asymslip_result = -P_im*tmp0 - 2*Q_re*tmp0 + dP_re*tmp0*y - dQ_im*tmp0*y
+    end function asymslip_half_plane_potential_sxx
+
+    !> C binding of asymslip_half_plane_potential_sxx (scalar arguments by value).
+    function asymslip_half_plane_potential_sxx_c(Q_re, Q_im, P_im, dQ_re, dQ_im, dP_re, dP_im, y) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_potential_sxx")
+        real(c_double), value, intent(in) :: Q_re, Q_im, P_im, dQ_re, dQ_im, dP_re, dP_im, y
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_potential_sxx(Q_re, Q_im, P_im, dQ_re, dQ_im, &
+                dP_re, dP_im, y)
+    end function asymslip_half_plane_potential_sxx_c
+
+    !> Stress syy, normal to it, from the pressure and shear potentials.
+    !!
+    !! Q = int q(t)/(zeta - t) dt and P = int p(t)/(zeta - t) dt at zeta = x - i y (tractions
+    !! exerted by the indenter on the lower body): the whole plane-strain field at depth y >=
+    !! 0, tension positive. Re P does not enter.
+    !!
+    !! Implements Eqs. (F-1), (HP-3) of the paper; derived in derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   Q_re   Re Q: real part of the shear potential Q = int q(t)/(zeta - t) dt
+    !!          [force/length].
+    !!   Q_im   Im Q [force/length]; its surface limit from the body is pi q(x).
+    !!   P_im   Im P of the pressure potential P = int p(t)/(zeta - t) dt; pi p(x) at y = 0.
+    !!   dQ_re  Re dQ/dzeta [force/length^2].
+    !!   dQ_im  Im dQ/dzeta [force/length^2].
+    !!   dP_re  Re dP/dzeta [force/length^2].
+    !!   dP_im  Im dP/dzeta [force/length^2].
+    !!   y      Depth y >= 0 of the point [length] (multiplies the derivatives).
+    !!
+    !! Returns:
+    !!   syy [force/length^2].
+    elemental function asymslip_half_plane_potential_syy(Q_re, Q_im, P_im, dQ_re, dQ_im, dP_re, &
+            dP_im, y) result(asymslip_result)
+        real(c_double), intent(in) :: Q_re, Q_im, P_im, dQ_re, dQ_im, dP_re, dP_im, y
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0
+        tmp0 = 1d0/asymslip_pi
+        asymslip_result = -P_im*tmp0 - dP_re*tmp0*y + dQ_im*tmp0*y
+    end function asymslip_half_plane_potential_syy
+
+    !> C binding of asymslip_half_plane_potential_syy (scalar arguments by value).
+    function asymslip_half_plane_potential_syy_c(Q_re, Q_im, P_im, dQ_re, dQ_im, dP_re, dP_im, y) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_potential_syy")
+        real(c_double), value, intent(in) :: Q_re, Q_im, P_im, dQ_re, dQ_im, dP_re, dP_im, y
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_potential_syy(Q_re, Q_im, P_im, dQ_re, dQ_im, &
+                dP_re, dP_im, y)
+    end function asymslip_half_plane_potential_syy_c
+
+    !> Stress sxy, from the pressure and shear potentials.
+    !!
+    !! Q = int q(t)/(zeta - t) dt and P = int p(t)/(zeta - t) dt at zeta = x - i y (tractions
+    !! exerted by the indenter on the lower body): the whole plane-strain field at depth y >=
+    !! 0, tension positive. Re P does not enter.
+    !!
+    !! Implements Eqs. (F-1), (HP-3) of the paper; derived in derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   Q_re   Re Q: real part of the shear potential Q = int q(t)/(zeta - t) dt
+    !!          [force/length].
+    !!   Q_im   Im Q [force/length]; its surface limit from the body is pi q(x).
+    !!   P_im   Im P of the pressure potential P = int p(t)/(zeta - t) dt; pi p(x) at y = 0.
+    !!   dQ_re  Re dQ/dzeta [force/length^2].
+    !!   dQ_im  Im dQ/dzeta [force/length^2].
+    !!   dP_re  Re dP/dzeta [force/length^2].
+    !!   dP_im  Im dP/dzeta [force/length^2].
+    !!   y      Depth y >= 0 of the point [length] (multiplies the derivatives).
+    !!
+    !! Returns:
+    !!   sxy [force/length^2].
+    elemental function asymslip_half_plane_potential_sxy(Q_re, Q_im, P_im, dQ_re, dQ_im, dP_re, &
+            dP_im, y) result(asymslip_result)
+        real(c_double), intent(in) :: Q_re, Q_im, P_im, dQ_re, dQ_im, dP_re, dP_im, y
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1
+        tmp0 = 1d0/asymslip_pi
+        tmp1 = tmp0*y
+        asymslip_result = -Q_im*tmp0 + dP_im*tmp1 + dQ_re*tmp1
+    end function asymslip_half_plane_potential_sxy
+
+    !> C binding of asymslip_half_plane_potential_sxy (scalar arguments by value).
+    function asymslip_half_plane_potential_sxy_c(Q_re, Q_im, P_im, dQ_re, dQ_im, dP_re, dP_im, y) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_potential_sxy")
+        real(c_double), value, intent(in) :: Q_re, Q_im, P_im, dQ_re, dQ_im, dP_re, dP_im, y
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_potential_sxy(Q_re, Q_im, P_im, dQ_re, dQ_im, &
+                dP_re, dP_im, y)
+    end function asymslip_half_plane_potential_sxy_c
+
+    !> Stress sxx, along the surface, under the pressure sqrt(a^2 - x^2).
+    !!
+    !! The lower half-plane under the semi-elliptic pressure sqrt(a^2 - t^2) on (-a, a),
+    !! exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's
+    !! sliding shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite
+    !! everywhere (polar form).
+    !!
+    !! Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+    !! derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   x  Position along the surface from the load's centre [length].
+    !!   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!      surface limit (principal value).
+    !!   a  Half-width a > 0 of the load [length].
+    !!
+    !! Returns:
+    !!   sxx per unit load amplitude [length].
+    elemental function asymslip_semi_ellipse_pressure_sxx(x, y, a) result(asymslip_result)
+        real(c_double), intent(in) :: x, y, a
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4, tmp5, tmp6, tmp7
+        real(c_double) :: tmp8
+        tmp0 = -y
+        tmp1 = a + x
+        tmp2 = atan2(tmp0, tmp1)
+        tmp3 = -a + x
+        tmp4 = atan2(tmp0, tmp3)
+        tmp5 = sqrt(sin(tmp2)*sin(tmp4))
+        tmp6 = (1.0d0/2.0d0)*tmp2 + (1.0d0/2.0d0)*tmp4
+        tmp7 = sin(tmp6)
+        tmp8 = y**2
+        asymslip_result = tmp5*tmp7*y - tmp5*x*cos(tmp6) + tmp7*(tmp1**2 + tmp8) &
+              **(1.0d0/4.0d0)*(tmp3**2 + tmp8)**(1.0d0/4.0d0) + 2*y
+    end function asymslip_semi_ellipse_pressure_sxx
+
+    !> C binding of asymslip_semi_ellipse_pressure_sxx (scalar arguments by value).
+    function asymslip_semi_ellipse_pressure_sxx_c(x, y, a) result(asymslip_result) &
+            bind(C, name="asymslip_semi_ellipse_pressure_sxx")
+        real(c_double), value, intent(in) :: x, y, a
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_semi_ellipse_pressure_sxx(x, y, a)
+    end function asymslip_semi_ellipse_pressure_sxx_c
+
+    !> Stress syy, normal to it, under the pressure sqrt(a^2 - x^2).
+    !!
+    !! The lower half-plane under the semi-elliptic pressure sqrt(a^2 - t^2) on (-a, a),
+    !! exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's
+    !! sliding shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite
+    !! everywhere (polar form).
+    !!
+    !! Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+    !! derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   x  Position along the surface from the load's centre [length].
+    !!   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!      surface limit (principal value).
+    !!   a  Half-width a > 0 of the load [length].
+    !!
+    !! Returns:
+    !!   syy per unit load amplitude [length].
+    elemental function asymslip_semi_ellipse_pressure_syy(x, y, a) result(asymslip_result)
+        real(c_double), intent(in) :: x, y, a
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4, tmp5, tmp6, tmp7
+        real(c_double) :: tmp8
+        tmp0 = -y
+        tmp1 = a + x
+        tmp2 = atan2(tmp0, tmp1)
+        tmp3 = -a + x
+        tmp4 = atan2(tmp0, tmp3)
+        tmp5 = sqrt(sin(tmp2)*sin(tmp4))
+        tmp6 = (1.0d0/2.0d0)*tmp2 + (1.0d0/2.0d0)*tmp4
+        tmp7 = y**2
+        tmp8 = sin(tmp6)
+        asymslip_result = -tmp5*tmp8*y + tmp5*x*cos(tmp6) + tmp8*(tmp1**2 + tmp7 &
+              )**(1.0d0/4.0d0)*(tmp3**2 + tmp7)**(1.0d0/4.0d0)
+    end function asymslip_semi_ellipse_pressure_syy
+
+    !> C binding of asymslip_semi_ellipse_pressure_syy (scalar arguments by value).
+    function asymslip_semi_ellipse_pressure_syy_c(x, y, a) result(asymslip_result) &
+            bind(C, name="asymslip_semi_ellipse_pressure_syy")
+        real(c_double), value, intent(in) :: x, y, a
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_semi_ellipse_pressure_syy(x, y, a)
+    end function asymslip_semi_ellipse_pressure_syy_c
+
+    !> Stress sxy, under the pressure sqrt(a^2 - x^2).
+    !!
+    !! The lower half-plane under the semi-elliptic pressure sqrt(a^2 - t^2) on (-a, a),
+    !! exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's
+    !! sliding shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite
+    !! everywhere (polar form).
+    !!
+    !! Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+    !! derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   x  Position along the surface from the load's centre [length].
+    !!   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!      surface limit (principal value).
+    !!   a  Half-width a > 0 of the load [length].
+    !!
+    !! Returns:
+    !!   sxy per unit load amplitude [length].
+    elemental function asymslip_semi_ellipse_pressure_sxy(x, y, a) result(asymslip_result)
+        real(c_double), intent(in) :: x, y, a
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4
+        tmp0 = -y
+        tmp1 = atan2(tmp0, a + x)
+        tmp2 = atan2(tmp0, -a + x)
+        tmp3 = sqrt(sin(tmp1)*sin(tmp2))
+        tmp4 = (1.0d0/2.0d0)*tmp1 + (1.0d0/2.0d0)*tmp2
+        asymslip_result = tmp3*x*sin(tmp4) + tmp3*y*cos(tmp4)
+    end function asymslip_semi_ellipse_pressure_sxy
+
+    !> C binding of asymslip_semi_ellipse_pressure_sxy (scalar arguments by value).
+    function asymslip_semi_ellipse_pressure_sxy_c(x, y, a) result(asymslip_result) &
+            bind(C, name="asymslip_semi_ellipse_pressure_sxy")
+        real(c_double), value, intent(in) :: x, y, a
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_semi_ellipse_pressure_sxy(x, y, a)
+    end function asymslip_semi_ellipse_pressure_sxy_c
+
+    !> Stress sxx, along the surface, under the shear traction sqrt(a^2 - x^2).
+    !!
+    !! The lower half-plane under the semi-elliptic shear traction sqrt(a^2 - t^2) on (-a, a),
+    !! exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's
+    !! sliding shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite
+    !! everywhere (polar form).
+    !!
+    !! Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+    !! derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   x  Position along the surface from the load's centre [length].
+    !!   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!      surface limit (principal value).
+    !!   a  Half-width a > 0 of the load [length].
+    !!
+    !! Returns:
+    !!   sxx per unit load amplitude [length].
+    elemental function asymslip_semi_ellipse_shear_sxx(x, y, a) result(asymslip_result)
+        real(c_double), intent(in) :: x, y, a
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4, tmp5, tmp6, tmp7
+        real(c_double) :: tmp8
+        tmp0 = -y
+        tmp1 = a + x
+        tmp2 = atan2(tmp0, tmp1)
+        tmp3 = -a + x
+        tmp4 = atan2(tmp0, tmp3)
+        tmp5 = sqrt(sin(tmp2)*sin(tmp4))
+        tmp6 = (1.0d0/2.0d0)*tmp2 + (1.0d0/2.0d0)*tmp4
+        tmp7 = cos(tmp6)
+        tmp8 = y**2
+        asymslip_result = -tmp5*tmp7*y - tmp5*x*sin(tmp6) + 2*tmp7*(tmp1**2 + &
+              tmp8)**(1.0d0/4.0d0)*(tmp3**2 + tmp8)**(1.0d0/4.0d0) - 2*x
+    end function asymslip_semi_ellipse_shear_sxx
+
+    !> C binding of asymslip_semi_ellipse_shear_sxx (scalar arguments by value).
+    function asymslip_semi_ellipse_shear_sxx_c(x, y, a) result(asymslip_result) &
+            bind(C, name="asymslip_semi_ellipse_shear_sxx")
+        real(c_double), value, intent(in) :: x, y, a
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_semi_ellipse_shear_sxx(x, y, a)
+    end function asymslip_semi_ellipse_shear_sxx_c
+
+    !> Stress syy, normal to it, under the shear traction sqrt(a^2 - x^2).
+    !!
+    !! The lower half-plane under the semi-elliptic shear traction sqrt(a^2 - t^2) on (-a, a),
+    !! exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's
+    !! sliding shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite
+    !! everywhere (polar form).
+    !!
+    !! Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+    !! derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   x  Position along the surface from the load's centre [length].
+    !!   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!      surface limit (principal value).
+    !!   a  Half-width a > 0 of the load [length].
+    !!
+    !! Returns:
+    !!   syy per unit load amplitude [length].
+    elemental function asymslip_semi_ellipse_shear_syy(x, y, a) result(asymslip_result)
+        real(c_double), intent(in) :: x, y, a
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4
+        tmp0 = -y
+        tmp1 = atan2(tmp0, a + x)
+        tmp2 = atan2(tmp0, -a + x)
+        tmp3 = sqrt(sin(tmp1)*sin(tmp2))
+        tmp4 = (1.0d0/2.0d0)*tmp1 + (1.0d0/2.0d0)*tmp2
+        asymslip_result = tmp3*x*sin(tmp4) + tmp3*y*cos(tmp4)
+    end function asymslip_semi_ellipse_shear_syy
+
+    !> C binding of asymslip_semi_ellipse_shear_syy (scalar arguments by value).
+    function asymslip_semi_ellipse_shear_syy_c(x, y, a) result(asymslip_result) &
+            bind(C, name="asymslip_semi_ellipse_shear_syy")
+        real(c_double), value, intent(in) :: x, y, a
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_semi_ellipse_shear_syy(x, y, a)
+    end function asymslip_semi_ellipse_shear_syy_c
+
+    !> Stress sxy, under the shear traction sqrt(a^2 - x^2).
+    !!
+    !! The lower half-plane under the semi-elliptic shear traction sqrt(a^2 - t^2) on (-a, a),
+    !! exerted by the indenter (per unit amplitude: Hertz's (48) is p0/a times it, McEwen's
+    !! sliding shear mu p0/a times it); tension positive, plane strain; any y >= 0, finite
+    !! everywhere (polar form).
+    !!
+    !! Implements Eqs. (HP-3), (HP-6), (48) of the paper; derived in
+    !! derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   x  Position along the surface from the load's centre [length].
+    !!   y  Depth below the surface into the lower body, y >= 0 [length]; y = 0 gives the
+    !!      surface limit (principal value).
+    !!   a  Half-width a > 0 of the load [length].
+    !!
+    !! Returns:
+    !!   sxy per unit load amplitude [length].
+    elemental function asymslip_semi_ellipse_shear_sxy(x, y, a) result(asymslip_result)
+        real(c_double), intent(in) :: x, y, a
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4, tmp5, tmp6, tmp7
+        real(c_double) :: tmp8
+        tmp0 = -y
+        tmp1 = a + x
+        tmp2 = atan2(tmp0, tmp1)
+        tmp3 = -a + x
+        tmp4 = atan2(tmp0, tmp3)
+        tmp5 = sqrt(sin(tmp2)*sin(tmp4))
+        tmp6 = (1.0d0/2.0d0)*tmp2 + (1.0d0/2.0d0)*tmp4
+        tmp7 = sin(tmp6)
+        tmp8 = y**2
+        asymslip_result = tmp5*tmp7*y - tmp5*x*cos(tmp6) + tmp7*(tmp1**2 + tmp8) &
+              **(1.0d0/4.0d0)*(tmp3**2 + tmp8)**(1.0d0/4.0d0) + 2*y
+    end function asymslip_semi_ellipse_shear_sxy
+
+    !> C binding of asymslip_semi_ellipse_shear_sxy (scalar arguments by value).
+    function asymslip_semi_ellipse_shear_sxy_c(x, y, a) result(asymslip_result) &
+            bind(C, name="asymslip_semi_ellipse_shear_sxy")
+        real(c_double), value, intent(in) :: x, y, a
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_semi_ellipse_shear_sxy(x, y, a)
+    end function asymslip_semi_ellipse_shear_sxy_c
+
+    !> K^(k)(v)/k! divided by v^(1 - k): (-1)^k / (k (k - 1)).
+    !!
+    !! Taylor coefficients of the node kernel about a far centre v0: K(v0 + d) = K(v0) +
+    !! log(v0) d + sum_{k >= 2} factor(k) v0^(1 - k) d^k, convergent for |d| < |v0|.
+    !!
+    !! Implements Eq. (HP-5) of the paper; derived in derivations/stress_half_plane.py.
+    !!
+    !! Arguments:
+    !!   k  Order k >= 2 of the Taylor term.
+    !!
+    !! Returns:
+    !!   The factor (dimensionless).
+    elemental function asymslip_half_plane_node_series_factor(k) result(asymslip_result)
+        real(c_double), intent(in) :: k
+        real(c_double) :: asymslip_result
+        asymslip_result = (-1)**k/(k*(k - 1))
+    end function asymslip_half_plane_node_series_factor
+
+    !> C binding of asymslip_half_plane_node_series_factor (scalar arguments by value).
+    function asymslip_half_plane_node_series_factor_c(k) result(asymslip_result) &
+            bind(C, name="asymslip_half_plane_node_series_factor")
+        real(c_double), value, intent(in) :: k
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_half_plane_node_series_factor(k)
+    end function asymslip_half_plane_node_series_factor_c
 
     ! --------------------------------------------------------------------------------------------
     ! hertz: Section 3 of the paper: the Hertzian (cylinder) contact law and its edge

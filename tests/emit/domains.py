@@ -275,6 +275,47 @@ def _asymmetric_edges(draw: Draw) -> Points:
     return points
 
 
+def _half_plane_element(draw: Draw) -> Points:
+    """One linear traction element [t0, t1] and a point below the surface (y > 0) within a
+    few element lengths of it, where the closed form is documented as well conditioned."""
+    t0 = draw.uniform(-10.0, 10.0)
+    length = draw.log_uniform(1e-3, 5.0)
+    return {
+        "x": t0 + length * draw.uniform(-3.0, 4.0),
+        "y": length * draw.log_uniform(0.1, 3.0),
+        "t0": t0,
+        "t1": t0 + length,
+        **{name: draw.uniform(-5.0, 5.0) for name in ("p0", "p1", "q0", "q1")},
+    }
+
+
+def _half_plane_node(draw: Draw) -> Points:
+    """A point below the surface and a node: offset u, depth y > 0, and free sums."""
+    return {
+        "u": draw.uniform(-10.0, 10.0),
+        "x": draw.uniform(-10.0, 10.0),
+        "y": draw.log_uniform(1e-4, 10.0),
+        "L": draw.uniform(-5.0, 3.0),
+        "theta": draw.uniform(-math.pi, 0.0),
+        "k": np.round(draw.uniform(2.0, 40.0)),
+        **{
+            name: draw.uniform(-10.0, 10.0)
+            for name in ("A_L", "B_L", "A_theta", "B_theta", "A_1", "B_1")
+        },
+        **{
+            name: draw.uniform(-10.0, 10.0)
+            for name in ("Q_re", "Q_im", "P_im", "dQ_re", "dQ_im", "dP_re", "dP_im")
+        },
+    }
+
+
+def _semi_ellipse(draw: Draw) -> Points:
+    """Any point of the body (y >= 0, a tenth of them on the surface) and a half-width."""
+    y = draw.log_uniform(1e-4, 10.0)
+    y[: draw.n // 10] = 0.0
+    return {"x": draw.uniform(-20.0, 20.0), "y": y, "a": draw.log_uniform(0.1, 10.0)}
+
+
 #: Function name -> how to draw points inside its documented domain.
 DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     # corrective_slip, validity: one steady partial-slip cycle
@@ -368,6 +409,21 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "gap_opening_influence": _influence,
     "relative_slip_influence": _influence,
     "tension_relative_displacement": _tension,
+    # half_plane_stress
+    **{f"half_plane_element_{c}": _half_plane_element for c in ("sxx", "syy", "sxy")},
+    **{f"half_plane_potential_{c}": _half_plane_node for c in ("sxx", "syy", "sxy")},
+    "half_plane_node_log_distance": _half_plane_node,
+    "half_plane_node_angle": _half_plane_node,
+    "half_plane_node_potential_real": _half_plane_node,
+    "half_plane_node_potential_imag": _half_plane_node,
+    "half_plane_node_sum_real": _half_plane_node,
+    "half_plane_node_sum_imag": _half_plane_node,
+    "half_plane_node_series_factor": _half_plane_node,
+    **{
+        f"semi_ellipse_{load}_{c}": _semi_ellipse
+        for load in ("pressure", "shear")
+        for c in ("sxx", "syy", "sxy")
+    },
 }
 
 
