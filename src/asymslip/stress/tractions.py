@@ -3,9 +3,7 @@
 A :class:`SurfaceLoad` is what the half-plane evaluator sums: a pressure p and a shear traction
 q, exerted by the indenter on the lower body (conventions: :mod:`asymslip.stress`), linear
 between strictly increasing nodes and zero at the first and the last node (a contact's
-tractions vanish beyond it).  :func:`square_root_edge` refines the last stretch before a
-contact edge on the square-root form (4) that every incomplete contact's tractions take there,
-so that element values of a numerical solution do not turn into a linear ramp at the edge.
+tractions vanish beyond it).
 """
 
 from __future__ import annotations
@@ -17,11 +15,6 @@ from numpy.typing import ArrayLike
 
 from ..errors import InputError, as_float_array
 from .field import FloatArray
-
-#: Geometric grading of the square-root stretch at an edge: node k at distance d g^k from it.
-EDGE_GRADING = 0.5
-#: Nodes of that stretch (the last at d g^EDGE_NODES, a millionth of d).
-EDGE_NODES = 20
 
 
 @dataclass(frozen=True)
@@ -85,45 +78,3 @@ def from_element_values(
     p = np.concatenate([[0.0], pressure[first : last + 1], [0.0]])
     q = np.concatenate([[0.0], shear[first : last + 1], [0.0]])
     return SurfaceLoad.from_nodes(t, p, q)
-
-
-def square_root_edge(
-    nodes: FloatArray,
-    pressure: FloatArray,
-    shear: FloatArray,
-    anchor: int,
-    edge: float,
-) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """Replace the stretch between node ``anchor`` and a contact ``edge`` by the form (4).
-
-    Beyond the anchor (towards the edge) the nodes are dropped and graded nodes put in their
-    place, at distances d g^k from the edge (d = |edge - anchor node|), carrying p = c
-    sqrt(|edge - t|) with c fitted at the anchor, and q in the ratio q/p of the anchor (Coulomb
-    slip or the locked-in shear: both vanish like the pressure, (4)-(5)); a zero node at the
-    edge, then the unloaded nodes beyond it (a loaded node beyond the edge, an element that
-    straddles it, is replaced by the square root too).
-    """
-    t0 = nodes[anchor]
-    distance = abs(edge - t0)
-    if distance == 0 or pressure[anchor] <= 0:
-        raise InputError("edge", "the anchor must be inside the contact, before its edge")
-    side = 1.0 if edge > t0 else -1.0
-    fractions = EDGE_GRADING ** np.arange(1, EDGE_NODES + 1)
-    graded = edge - side * distance * fractions
-    root = np.sqrt(fractions)  # sqrt(|edge - t| / d)
-    p_graded = pressure[anchor] * root
-    q_graded = shear[anchor] * root
-    unloaded = (pressure == 0) & (shear == 0)
-    if side > 0:
-        beyond = (nodes > edge) & unloaded
-        keep = slice(0, anchor + 1)
-        t = np.concatenate([nodes[keep], graded, [edge], nodes[beyond]])
-        p = np.concatenate([pressure[keep], p_graded, [0.0], pressure[beyond]])
-        q = np.concatenate([shear[keep], q_graded, [0.0], shear[beyond]])
-    else:
-        beyond = (nodes < edge) & unloaded
-        keep = slice(anchor, None)
-        t = np.concatenate([nodes[beyond], [edge], graded[::-1], nodes[keep]])
-        p = np.concatenate([pressure[beyond], [0.0], p_graded[::-1], pressure[keep]])
-        q = np.concatenate([shear[beyond], [0.0], q_graded[::-1], shear[keep]])
-    return t, p, q
