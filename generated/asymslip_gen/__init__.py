@@ -7,7 +7,7 @@
 # derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
 # derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
 # derivations/section3_tractions.py, derivations/solver_influence.py,
-# derivations/stress_half_plane.py.
+# derivations/stress_edge_asymptote.py, derivations/stress_half_plane.py.
 # Do not edit: change the derivation and run `make generate`.
 """Generated NumPy kernels for asymptotic partial-slip contacts.
 
@@ -26,8 +26,20 @@ _MODULES = {
     "corrective_stick_discrepancy_third_order": "method_agreement",
     "corrective_stick_slip_zone_width": "corrective_stick",
     "dislocation_density": "corrective_slip",
+    "edge_eigenfield_pressure_sxx": "edge_stress",
+    "edge_eigenfield_pressure_sxy": "edge_stress",
+    "edge_eigenfield_pressure_syy": "edge_stress",
+    "edge_eigenfield_shear_sxx": "edge_stress",
+    "edge_eigenfield_shear_sxy": "edge_stress",
+    "edge_eigenfield_shear_syy": "edge_stress",
     "edge_moment_factor": "asymmetric_edges",
     "edge_multiplier_balance": "asymmetric_edges",
+    "edge_pressure_next_coefficient": "edge_stress",
+    "edge_shear_amplitude_state1": "edge_stress",
+    "edge_shear_amplitude_state2": "edge_stress",
+    "edge_shear_amplitude_stick": "edge_stress",
+    "edge_shear_next_coefficient": "edge_stress",
+    "edge_uniform_sxx": "edge_stress",
     "flat_rounded_chord": "flat_rounded",
     "flat_rounded_corner_angle": "flat_rounded",
     "flat_rounded_load": "flat_rounded",

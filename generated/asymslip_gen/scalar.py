@@ -7,7 +7,7 @@
 # derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
 # derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
 # derivations/section3_tractions.py, derivations/solver_influence.py,
-# derivations/stress_half_plane.py.
+# derivations/stress_edge_asymptote.py, derivations/stress_half_plane.py.
 # Do not edit: change the derivation and run `make generate`.
 """The generated formulas for one value at a time, on Python floats with ``math``.
 
@@ -42,6 +42,18 @@ __all__ = [
     "normal_edge_multiplier",
     "shear_edge_multiplier",
     "shear_edge_multiplier_proportional",
+    "edge_eigenfield_pressure_sxx",
+    "edge_eigenfield_pressure_syy",
+    "edge_eigenfield_pressure_sxy",
+    "edge_eigenfield_shear_sxx",
+    "edge_eigenfield_shear_syy",
+    "edge_eigenfield_shear_sxy",
+    "edge_uniform_sxx",
+    "edge_shear_amplitude_state2",
+    "edge_shear_amplitude_state1",
+    "edge_shear_amplitude_stick",
+    "edge_pressure_next_coefficient",
+    "edge_shear_next_coefficient",
     "permanent_stick_load",
     "hertz_stick_boundary_exact",
     "hertz_slip_zone_width_exact",
@@ -780,6 +792,472 @@ def shear_edge_multiplier_proportional(lam: float, eta: float, a: float, L_I: fl
         L_II [force/length^(5/2)].
     """
     return L_I * ((1 / 4) * math.pi * a * eta + lam)
+
+
+def edge_eigenfield_pressure_sxx(
+    rho_lam: float,
+    cos_lam: float,
+    sin_lam: float,
+    sin_angle: float,
+    cos_lam1: float,
+    sin_lam1: float,
+    lam_e: float,
+) -> float:
+    """Stress sxx of the pressure (c - t)^lam on t < c, regularised.
+
+    The lower half-plane under the pressure (c - t)^lam on the half-line t < c (exerted by the
+    indenter), whose Flamant integral diverges: the field of the potential -pi w^lam / sin(pi
+    lam), w = x - c - i y = rho e^(i phi), i.e. up to a uniform sxx (fixed for a cycle's
+    amplitude by edge_uniform_sxx), from the polar parts of w (computed once per point and load
+    for all six fields).  Tension positive, plane strain; y >= 0, and not at the edge itself for
+    lam < 0.  One value at a time, as ``asymslip_gen.edge_stress.edge_eigenfield_pressure_sxx``.
+
+    Implements Eqs. (EA-1), (EA-2), (HP-3) of the paper; derived in
+    ``derivations/stress_edge_asymptote.py``.
+
+    Parameters
+    ----------
+    rho_lam : float
+        rho^lam, rho = |x - c - i y| the distance from the load's edge.
+    cos_lam : float
+        cos(lam phi), phi = atan2(-y, x - c) in [-pi, 0].
+    sin_lam : float
+        sin(lam phi).
+    sin_angle : float
+        sin(-phi) = y / rho, in [0, 1] (0 at the edge itself).
+    cos_lam1 : float
+        cos((lam - 1) phi).
+    sin_lam1 : float
+        sin((lam - 1) phi).
+    lam_e : float
+        Power lam of the load (c - t)^lam on t < c: 1/2 (the edge asymptotes (4), (5)), 3/2
+        (their next terms), -1/2 (a moved boundary); not an integer.
+
+    Returns
+    -------
+    float
+        sxx per unit load amplitude [force/length^2 per force/length^(2 + lam)].
+    """
+    tmp0 = 1 / math.sin(math.pi * lam_e)
+    return -cos_lam1 * lam_e * rho_lam * sin_angle * tmp0 + rho_lam * sin_lam * tmp0
+
+
+def edge_eigenfield_pressure_syy(
+    rho_lam: float,
+    cos_lam: float,
+    sin_lam: float,
+    sin_angle: float,
+    cos_lam1: float,
+    sin_lam1: float,
+    lam_e: float,
+) -> float:
+    """Stress syy of the pressure (c - t)^lam on t < c, regularised.
+
+    The lower half-plane under the pressure (c - t)^lam on the half-line t < c (exerted by the
+    indenter), whose Flamant integral diverges: the field of the potential -pi w^lam / sin(pi
+    lam), w = x - c - i y = rho e^(i phi), i.e. up to a uniform sxx (fixed for a cycle's
+    amplitude by edge_uniform_sxx), from the polar parts of w (computed once per point and load
+    for all six fields).  Tension positive, plane strain; y >= 0, and not at the edge itself for
+    lam < 0.  One value at a time, as ``asymslip_gen.edge_stress.edge_eigenfield_pressure_syy``.
+
+    Implements Eqs. (EA-1), (EA-2), (HP-3) of the paper; derived in
+    ``derivations/stress_edge_asymptote.py``.
+
+    Parameters
+    ----------
+    rho_lam : float
+        rho^lam, rho = |x - c - i y| the distance from the load's edge.
+    cos_lam : float
+        cos(lam phi), phi = atan2(-y, x - c) in [-pi, 0].
+    sin_lam : float
+        sin(lam phi).
+    sin_angle : float
+        sin(-phi) = y / rho, in [0, 1] (0 at the edge itself).
+    cos_lam1 : float
+        cos((lam - 1) phi).
+    sin_lam1 : float
+        sin((lam - 1) phi).
+    lam_e : float
+        Power lam of the load (c - t)^lam on t < c: 1/2 (the edge asymptotes (4), (5)), 3/2
+        (their next terms), -1/2 (a moved boundary); not an integer.
+
+    Returns
+    -------
+    float
+        syy per unit load amplitude [force/length^2 per force/length^(2 + lam)].
+    """
+    tmp0 = rho_lam / math.sin(math.pi * lam_e)
+    return cos_lam1 * lam_e * sin_angle * tmp0 + sin_lam * tmp0
+
+
+def edge_eigenfield_pressure_sxy(
+    rho_lam: float,
+    cos_lam: float,
+    sin_lam: float,
+    sin_angle: float,
+    cos_lam1: float,
+    sin_lam1: float,
+    lam_e: float,
+) -> float:
+    """Stress sxy of the pressure (c - t)^lam on t < c, regularised.
+
+    The lower half-plane under the pressure (c - t)^lam on the half-line t < c (exerted by the
+    indenter), whose Flamant integral diverges: the field of the potential -pi w^lam / sin(pi
+    lam), w = x - c - i y = rho e^(i phi), i.e. up to a uniform sxx (fixed for a cycle's
+    amplitude by edge_uniform_sxx), from the polar parts of w (computed once per point and load
+    for all six fields).  Tension positive, plane strain; y >= 0, and not at the edge itself for
+    lam < 0.  One value at a time, as ``asymslip_gen.edge_stress.edge_eigenfield_pressure_sxy``.
+
+    Implements Eqs. (EA-1), (EA-2), (HP-3) of the paper; derived in
+    ``derivations/stress_edge_asymptote.py``.
+
+    Parameters
+    ----------
+    rho_lam : float
+        rho^lam, rho = |x - c - i y| the distance from the load's edge.
+    cos_lam : float
+        cos(lam phi), phi = atan2(-y, x - c) in [-pi, 0].
+    sin_lam : float
+        sin(lam phi).
+    sin_angle : float
+        sin(-phi) = y / rho, in [0, 1] (0 at the edge itself).
+    cos_lam1 : float
+        cos((lam - 1) phi).
+    sin_lam1 : float
+        sin((lam - 1) phi).
+    lam_e : float
+        Power lam of the load (c - t)^lam on t < c: 1/2 (the edge asymptotes (4), (5)), 3/2
+        (their next terms), -1/2 (a moved boundary); not an integer.
+
+    Returns
+    -------
+    float
+        sxy per unit load amplitude [force/length^2 per force/length^(2 + lam)].
+    """
+    return -lam_e * rho_lam * sin_angle * sin_lam1 / math.sin(math.pi * lam_e)
+
+
+def edge_eigenfield_shear_sxx(
+    rho_lam: float,
+    cos_lam: float,
+    sin_lam: float,
+    sin_angle: float,
+    cos_lam1: float,
+    sin_lam1: float,
+    lam_e: float,
+) -> float:
+    """Stress sxx of the shear (c - t)^lam on t < c, regularised.
+
+    The lower half-plane under the shear (c - t)^lam on the half-line t < c (exerted by the
+    indenter), whose Flamant integral diverges: the field of the potential -pi w^lam / sin(pi
+    lam), w = x - c - i y = rho e^(i phi), i.e. up to a uniform sxx (fixed for a cycle's
+    amplitude by edge_uniform_sxx), from the polar parts of w (computed once per point and load
+    for all six fields).  Tension positive, plane strain; y >= 0, and not at the edge itself for
+    lam < 0.  One value at a time, as ``asymslip_gen.edge_stress.edge_eigenfield_shear_sxx``.
+
+    Implements Eqs. (EA-1), (EA-2), (HP-3) of the paper; derived in
+    ``derivations/stress_edge_asymptote.py``.
+
+    Parameters
+    ----------
+    rho_lam : float
+        rho^lam, rho = |x - c - i y| the distance from the load's edge.
+    cos_lam : float
+        cos(lam phi), phi = atan2(-y, x - c) in [-pi, 0].
+    sin_lam : float
+        sin(lam phi).
+    sin_angle : float
+        sin(-phi) = y / rho, in [0, 1] (0 at the edge itself).
+    cos_lam1 : float
+        cos((lam - 1) phi).
+    sin_lam1 : float
+        sin((lam - 1) phi).
+    lam_e : float
+        Power lam of the load (c - t)^lam on t < c: 1/2 (the edge asymptotes (4), (5)), 3/2
+        (their next terms), -1/2 (a moved boundary); not an integer.
+
+    Returns
+    -------
+    float
+        sxx per unit load amplitude [force/length^2 per force/length^(2 + lam)].
+    """
+    tmp0 = rho_lam / math.sin(math.pi * lam_e)
+    return 2 * cos_lam * tmp0 + lam_e * sin_angle * sin_lam1 * tmp0
+
+
+def edge_eigenfield_shear_syy(
+    rho_lam: float,
+    cos_lam: float,
+    sin_lam: float,
+    sin_angle: float,
+    cos_lam1: float,
+    sin_lam1: float,
+    lam_e: float,
+) -> float:
+    """Stress syy of the shear (c - t)^lam on t < c, regularised.
+
+    The lower half-plane under the shear (c - t)^lam on the half-line t < c (exerted by the
+    indenter), whose Flamant integral diverges: the field of the potential -pi w^lam / sin(pi
+    lam), w = x - c - i y = rho e^(i phi), i.e. up to a uniform sxx (fixed for a cycle's
+    amplitude by edge_uniform_sxx), from the polar parts of w (computed once per point and load
+    for all six fields).  Tension positive, plane strain; y >= 0, and not at the edge itself for
+    lam < 0.  One value at a time, as ``asymslip_gen.edge_stress.edge_eigenfield_shear_syy``.
+
+    Implements Eqs. (EA-1), (EA-2), (HP-3) of the paper; derived in
+    ``derivations/stress_edge_asymptote.py``.
+
+    Parameters
+    ----------
+    rho_lam : float
+        rho^lam, rho = |x - c - i y| the distance from the load's edge.
+    cos_lam : float
+        cos(lam phi), phi = atan2(-y, x - c) in [-pi, 0].
+    sin_lam : float
+        sin(lam phi).
+    sin_angle : float
+        sin(-phi) = y / rho, in [0, 1] (0 at the edge itself).
+    cos_lam1 : float
+        cos((lam - 1) phi).
+    sin_lam1 : float
+        sin((lam - 1) phi).
+    lam_e : float
+        Power lam of the load (c - t)^lam on t < c: 1/2 (the edge asymptotes (4), (5)), 3/2
+        (their next terms), -1/2 (a moved boundary); not an integer.
+
+    Returns
+    -------
+    float
+        syy per unit load amplitude [force/length^2 per force/length^(2 + lam)].
+    """
+    return -lam_e * rho_lam * sin_angle * sin_lam1 / math.sin(math.pi * lam_e)
+
+
+def edge_eigenfield_shear_sxy(
+    rho_lam: float,
+    cos_lam: float,
+    sin_lam: float,
+    sin_angle: float,
+    cos_lam1: float,
+    sin_lam1: float,
+    lam_e: float,
+) -> float:
+    """Stress sxy of the shear (c - t)^lam on t < c, regularised.
+
+    The lower half-plane under the shear (c - t)^lam on the half-line t < c (exerted by the
+    indenter), whose Flamant integral diverges: the field of the potential -pi w^lam / sin(pi
+    lam), w = x - c - i y = rho e^(i phi), i.e. up to a uniform sxx (fixed for a cycle's
+    amplitude by edge_uniform_sxx), from the polar parts of w (computed once per point and load
+    for all six fields).  Tension positive, plane strain; y >= 0, and not at the edge itself for
+    lam < 0.  One value at a time, as ``asymslip_gen.edge_stress.edge_eigenfield_shear_sxy``.
+
+    Implements Eqs. (EA-1), (EA-2), (HP-3) of the paper; derived in
+    ``derivations/stress_edge_asymptote.py``.
+
+    Parameters
+    ----------
+    rho_lam : float
+        rho^lam, rho = |x - c - i y| the distance from the load's edge.
+    cos_lam : float
+        cos(lam phi), phi = atan2(-y, x - c) in [-pi, 0].
+    sin_lam : float
+        sin(lam phi).
+    sin_angle : float
+        sin(-phi) = y / rho, in [0, 1] (0 at the edge itself).
+    cos_lam1 : float
+        cos((lam - 1) phi).
+    sin_lam1 : float
+        sin((lam - 1) phi).
+    lam_e : float
+        Power lam of the load (c - t)^lam on t < c: 1/2 (the edge asymptotes (4), (5)), 3/2
+        (their next terms), -1/2 (a moved boundary); not an integer.
+
+    Returns
+    -------
+    float
+        sxy per unit load amplitude [force/length^2 per force/length^(2 + lam)].
+    """
+    tmp0 = 1 / math.sin(math.pi * lam_e)
+    return -cos_lam1 * lam_e * rho_lam * sin_angle * tmp0 + rho_lam * sin_lam * tmp0
+
+
+def edge_uniform_sxx(dsigma: float) -> float:
+    """Uniform sxx of the amplitude near an edge: half the change of bulk tension.
+
+    The amplitude (state 2 minus state 1) of the surface-parallel stress that the regularised
+    edge eigenfields leave undetermined, fixed by the strain compatibility of the two bodies in
+    the stick zone.  One value at a time, as ``asymslip_gen.edge_stress.edge_uniform_sxx``.
+
+    Implements Eq. (EA-3) of the paper; derived in ``derivations/stress_edge_asymptote.py``.
+
+    Parameters
+    ----------
+    dsigma : float
+        Change sigma2 - sigma1 of the lower body's bulk tension.
+
+    Returns
+    -------
+    float
+        sxx [force/length^2].
+    """
+    return (1 / 2) * dsigma
+
+
+def edge_shear_amplitude_state2(L_I2: float, mu: float) -> float:
+    """Coefficient of sqrt(a2 - x): the slip zone's traction at state 2 in the shear change (49) at b from (17).
+
+    (49) with the density (15) on b from (17) is a sum of three square-root loads in the paper's
+    frame (the traction on the indenter, forward slip at the right edge; the lower body carries
+    the negative).  One value at a time, as
+    ``asymslip_gen.edge_stress.edge_shear_amplitude_state2``.
+
+    Implements Eqs. (49), (EA-4) of the paper; derived in
+    ``derivations/stress_edge_asymptote.py``.
+
+    Parameters
+    ----------
+    L_I2 : float
+        Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    mu : float
+        Coefficient of friction, mu > 0.
+
+    Returns
+    -------
+    float
+        [force/length^(5/2)].
+    """
+    return L_I2 * mu
+
+
+def edge_shear_amplitude_state1(L_I1: float, mu: float) -> float:
+    """Coefficient of sqrt(a1 - x)_+: the slip zone's traction at state 1 in the shear change (49) at b from (17).
+
+    (49) with the density (15) on b from (17) is a sum of three square-root loads in the paper's
+    frame (the traction on the indenter, forward slip at the right edge; the lower body carries
+    the negative).  One value at a time, as
+    ``asymslip_gen.edge_stress.edge_shear_amplitude_state1``.
+
+    Implements Eqs. (49), (EA-4) of the paper; derived in
+    ``derivations/stress_edge_asymptote.py``.
+
+    Parameters
+    ----------
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    mu : float
+        Coefficient of friction, mu > 0.
+
+    Returns
+    -------
+    float
+        [force/length^(5/2)].
+    """
+    return L_I1 * mu
+
+
+def edge_shear_amplitude_stick(
+    L_I1: float, L_I2: float, L_II1: float, L_II2: float, mu: float
+) -> float:
+    """Coefficient of sqrt(b - x)_+: the stick boundary's term, -K in the shear change (49) at b from (17).
+
+    (49) with the density (15) on b from (17) is a sum of three square-root loads in the paper's
+    frame (the traction on the indenter, forward slip at the right edge; the lower body carries
+    the negative).  One value at a time, as
+    ``asymslip_gen.edge_stress.edge_shear_amplitude_stick``.
+
+    Implements Eqs. (49), (EA-4) of the paper; derived in
+    ``derivations/stress_edge_asymptote.py``.
+
+    Parameters
+    ----------
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_I2 : float
+        Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    L_II1 : float
+        Shear edge multiplier L_II at load state 1 (5), either sign [force/length^(5/2)].
+    L_II2 : float
+        Shear edge multiplier L_II at load state 2 (5), either sign [force/length^(5/2)].
+    mu : float
+        Coefficient of friction, mu > 0.
+
+    Returns
+    -------
+    float
+        [force/length^(5/2)].
+    """
+    return -L_I1 * mu - L_I2 * mu - L_II1 + L_II2
+
+
+def edge_pressure_next_coefficient(a: float, L_I: float, dL_I_da: float) -> float:
+    """M_I: the pressure near an edge is L_I s^(1/2) + M_I s^(3/2) + ..., s = a - x.
+
+    From Mossakovskii's superposition for any symmetric contact law (Hertz: M_I = -L_I/(4a)):
+    the next term of (4), for the stated accuracy of the edge fields.  One value at a time, as
+    ``asymslip_gen.edge_stress.edge_pressure_next_coefficient``.
+
+    Implements Eqs. (4), (19), (EA-6) of the paper; derived in
+    ``derivations/stress_edge_asymptote.py``.
+
+    Parameters
+    ----------
+    a : float
+        Contact half-width at the load state considered [length].
+    L_I : float
+        Normal edge multiplier L_I of the contact pressure p = L_I sqrt(a - x) (4)
+        [force/length^(5/2)].
+    dL_I_da : float
+        Slope dL_I/da of the normal edge multiplier at a.
+
+    Returns
+    -------
+    float
+        M_I [force/length^(7/2)].
+    """
+    return -1 / 12 * (-L_I + 8 * a * dL_I_da) / a
+
+
+def edge_shear_next_coefficient(
+    a: float, lam: float, eta: float, L_I: float, dL_I_da: float
+) -> float:
+    """M_II: the full-stick shear near an edge is L_II s^(1/2) + M_II s^(3/2) + ....
+
+    On the proportional path dQ = lam dP, dsigma = eta dP (lam, eta as seen from the edge), from
+    Mossakovskii's superposition: the next term of (5), for the stated accuracy of the edge
+    fields; without tension M_II = lam M_I.  One value at a time, as
+    ``asymslip_gen.edge_stress.edge_shear_next_coefficient``.
+
+    Implements Eqs. (5), (21), (EA-6) of the paper; derived in
+    ``derivations/stress_edge_asymptote.py``.
+
+    Parameters
+    ----------
+    a : float
+        Contact half-width at the load state considered [length].
+    lam : float
+        Load-path slope lambda = dQ/dP (18), either sign.
+    eta : float
+        Load-path slope eta = dsigma/dP (18), either sign [1/length].
+    L_I : float
+        Normal edge multiplier L_I of the contact pressure p = L_I sqrt(a - x) (4)
+        [force/length^(5/2)].
+    dL_I_da : float
+        Slope dL_I/da of the normal edge multiplier at a.
+
+    Returns
+    -------
+    float
+        M_II [force/length^(7/2)].
+    """
+    tmp0 = math.pi * eta
+    return (
+        -(
+            (11 / 48) * L_I * a * tmp0
+            - 1 / 12 * L_I * lam
+            + (1 / 6) * a**2 * dL_I_da * tmp0
+            + (2 / 3) * a * dL_I_da * lam
+        )
+        / a
+    )
 
 
 def permanent_stick_load(P1: float, dP: float, lam: float, mu: float) -> float:

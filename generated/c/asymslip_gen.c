@@ -8,7 +8,7 @@
  * derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
  * derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
  * derivations/section3_tractions.py, derivations/solver_influence.py,
- * derivations/stress_half_plane.py.
+ * derivations/stress_edge_asymptote.py, derivations/stress_half_plane.py.
  * Do not edit: change the derivation and run `make generate`.
  */
 
@@ -234,6 +234,149 @@ double asymslip_shear_edge_multiplier(double a, double dQ_da, double dsigma_da)
 double asymslip_shear_edge_multiplier_proportional(double lam, double eta, double a, double L_I)
 {
     return L_I*((1.0/4.0)*asymslip_pi*a*eta + lam);
+}
+
+/* Stress sxx of the pressure (c - t)^lam on t < c, regularised. See asymslip_gen.h. */
+double asymslip_edge_eigenfield_pressure_sxx(
+    double rho_lam,
+    double cos_lam,
+    double sin_lam,
+    double sin_angle,
+    double cos_lam1,
+    double sin_lam1,
+    double lam_e)
+{
+    (void)cos_lam;
+    (void)sin_lam1;
+    const double tmp0 = 1.0/sin(asymslip_pi*lam_e);
+    return -cos_lam1*lam_e*rho_lam*sin_angle*tmp0 + rho_lam*sin_lam*tmp0;
+}
+
+/* Stress syy of the pressure (c - t)^lam on t < c, regularised. See asymslip_gen.h. */
+double asymslip_edge_eigenfield_pressure_syy(
+    double rho_lam,
+    double cos_lam,
+    double sin_lam,
+    double sin_angle,
+    double cos_lam1,
+    double sin_lam1,
+    double lam_e)
+{
+    (void)cos_lam;
+    (void)sin_lam1;
+    const double tmp0 = rho_lam/sin(asymslip_pi*lam_e);
+    return cos_lam1*lam_e*sin_angle*tmp0 + sin_lam*tmp0;
+}
+
+/* Stress sxy of the pressure (c - t)^lam on t < c, regularised. See asymslip_gen.h. */
+double asymslip_edge_eigenfield_pressure_sxy(
+    double rho_lam,
+    double cos_lam,
+    double sin_lam,
+    double sin_angle,
+    double cos_lam1,
+    double sin_lam1,
+    double lam_e)
+{
+    (void)cos_lam;
+    (void)sin_lam;
+    (void)cos_lam1;
+    return -lam_e*rho_lam*sin_angle*sin_lam1/sin(asymslip_pi*lam_e);
+}
+
+/* Stress sxx of the shear (c - t)^lam on t < c, regularised. See asymslip_gen.h. */
+double asymslip_edge_eigenfield_shear_sxx(
+    double rho_lam,
+    double cos_lam,
+    double sin_lam,
+    double sin_angle,
+    double cos_lam1,
+    double sin_lam1,
+    double lam_e)
+{
+    (void)sin_lam;
+    (void)cos_lam1;
+    const double tmp0 = rho_lam/sin(asymslip_pi*lam_e);
+    return 2*cos_lam*tmp0 + lam_e*sin_angle*sin_lam1*tmp0;
+}
+
+/* Stress syy of the shear (c - t)^lam on t < c, regularised. See asymslip_gen.h. */
+double asymslip_edge_eigenfield_shear_syy(
+    double rho_lam,
+    double cos_lam,
+    double sin_lam,
+    double sin_angle,
+    double cos_lam1,
+    double sin_lam1,
+    double lam_e)
+{
+    (void)cos_lam;
+    (void)sin_lam;
+    (void)cos_lam1;
+    return -lam_e*rho_lam*sin_angle*sin_lam1/sin(asymslip_pi*lam_e);
+}
+
+/* Stress sxy of the shear (c - t)^lam on t < c, regularised. See asymslip_gen.h. */
+double asymslip_edge_eigenfield_shear_sxy(
+    double rho_lam,
+    double cos_lam,
+    double sin_lam,
+    double sin_angle,
+    double cos_lam1,
+    double sin_lam1,
+    double lam_e)
+{
+    (void)cos_lam;
+    (void)sin_lam1;
+    const double tmp0 = 1.0/sin(asymslip_pi*lam_e);
+    return -cos_lam1*lam_e*rho_lam*sin_angle*tmp0 + rho_lam*sin_lam*tmp0;
+}
+
+/* Uniform sxx of the amplitude near an edge: half the change of bulk tension. See asymslip_gen.h. */
+double asymslip_edge_uniform_sxx(double dsigma)
+{
+    return (1.0/2.0)*dsigma;
+}
+
+/* Coefficient of sqrt(a2 - x): the slip zone's traction at state 2 in the shear change (49) at b from (17). See asymslip_gen.h. */
+double asymslip_edge_shear_amplitude_state2(double L_I2, double mu)
+{
+    return L_I2*mu;
+}
+
+/* Coefficient of sqrt(a1 - x)_+: the slip zone's traction at state 1 in the shear change (49) at b from (17). See asymslip_gen.h. */
+double asymslip_edge_shear_amplitude_state1(double L_I1, double mu)
+{
+    return L_I1*mu;
+}
+
+/* Coefficient of sqrt(b - x)_+: the stick boundary's term, -K in the shear change (49) at b from (17). See asymslip_gen.h. */
+double asymslip_edge_shear_amplitude_stick(
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2,
+    double mu)
+{
+    return -L_I1*mu - L_I2*mu - L_II1 + L_II2;
+}
+
+/* M_I: the pressure near an edge is L_I s^(1/2) + M_I s^(3/2) + ..., s = a - x. See asymslip_gen.h. */
+double asymslip_edge_pressure_next_coefficient(double a, double L_I, double dL_I_da)
+{
+    return -1.0/12.0*(-L_I + 8*a*dL_I_da)/a;
+}
+
+/* M_II: the full-stick shear near an edge is L_II s^(1/2) + M_II s^(3/2) + .... See asymslip_gen.h. */
+double asymslip_edge_shear_next_coefficient(
+    double a,
+    double lam,
+    double eta,
+    double L_I,
+    double dL_I_da)
+{
+    const double tmp0 = asymslip_pi*eta;
+    return -((11.0/48.0)*L_I*a*tmp0 - 1.0/12.0*L_I*lam + (1.0/6.0)*pow(a, 2)*dL_I_da*tmp0 + (2.0/3.0)*a*dL_I_da*lam)/a;
 }
 
 /* Normal load P_K whose contact is the permanent stick zone (Jaeger-Ciavarella). See asymslip_gen.h. */

@@ -8,7 +8,7 @@
  * derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
  * derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
  * derivations/section3_tractions.py, derivations/solver_influence.py,
- * derivations/stress_half_plane.py.
+ * derivations/stress_edge_asymptote.py, derivations/stress_half_plane.py.
  * Do not edit: change the derivation and run `make generate`.
  */
 
@@ -535,6 +535,359 @@ double asymslip_shear_edge_multiplier(double a, double dQ_da, double dsigma_da);
  *   L_II [force/length^(5/2)].
  */
 double asymslip_shear_edge_multiplier_proportional(double lam, double eta, double a, double L_I);
+
+/* --------------------------------------------------------------------------------------------
+ * edge_stress: The stress amplitude near a contact edge from the edge asymptotes (4) and
+ * (49): the fields of square-root loads on a half-line, whose Flamant integrals diverge,
+ * from the potential of the edge eigenfunction; the uniform term fixed by the stick zone's
+ * strain compatibility; the amplitudes of (49); and the next terms of the edge expansions,
+ * for the stated accuracy (beyond the paper; issue 18).
+ */
+
+/**
+ * Stress sxx of the pressure (c - t)^lam on t < c, regularised.
+ *
+ * The lower half-plane under the pressure (c - t)^lam on the half-line t < c (exerted by
+ * the indenter), whose Flamant integral diverges: the field of the potential -pi w^lam /
+ * sin(pi lam), w = x - c - i y = rho e^(i phi), i.e. up to a uniform sxx (fixed for a
+ * cycle's amplitude by edge_uniform_sxx), from the polar parts of w (computed once per
+ * point and load for all six fields). Tension positive, plane strain; y >= 0, and not at
+ * the edge itself for lam < 0.
+ *
+ * Implements Eqs. (EA-1), (EA-2), (HP-3) of the paper; derived in
+ * derivations/stress_edge_asymptote.py.
+ *
+ * Arguments:
+ *   rho_lam    rho^lam, rho = |x - c - i y| the distance from the load's edge.
+ *   cos_lam    cos(lam phi), phi = atan2(-y, x - c) in [-pi, 0].
+ *   sin_lam    sin(lam phi).
+ *   sin_angle  sin(-phi) = y / rho, in [0, 1] (0 at the edge itself).
+ *   cos_lam1   cos((lam - 1) phi).
+ *   sin_lam1   sin((lam - 1) phi).
+ *   lam_e      Power lam of the load (c - t)^lam on t < c: 1/2 (the edge asymptotes (4),
+ *              (5)), 3/2 (their next terms), -1/2 (a moved boundary); not an integer.
+ *
+ * Returns:
+ *   sxx per unit load amplitude [force/length^2 per force/length^(2 + lam)].
+ */
+double asymslip_edge_eigenfield_pressure_sxx(
+    double rho_lam,
+    double cos_lam,
+    double sin_lam,
+    double sin_angle,
+    double cos_lam1,
+    double sin_lam1,
+    double lam_e);
+
+/**
+ * Stress syy of the pressure (c - t)^lam on t < c, regularised.
+ *
+ * The lower half-plane under the pressure (c - t)^lam on the half-line t < c (exerted by
+ * the indenter), whose Flamant integral diverges: the field of the potential -pi w^lam /
+ * sin(pi lam), w = x - c - i y = rho e^(i phi), i.e. up to a uniform sxx (fixed for a
+ * cycle's amplitude by edge_uniform_sxx), from the polar parts of w (computed once per
+ * point and load for all six fields). Tension positive, plane strain; y >= 0, and not at
+ * the edge itself for lam < 0.
+ *
+ * Implements Eqs. (EA-1), (EA-2), (HP-3) of the paper; derived in
+ * derivations/stress_edge_asymptote.py.
+ *
+ * Arguments:
+ *   rho_lam    rho^lam, rho = |x - c - i y| the distance from the load's edge.
+ *   cos_lam    cos(lam phi), phi = atan2(-y, x - c) in [-pi, 0].
+ *   sin_lam    sin(lam phi).
+ *   sin_angle  sin(-phi) = y / rho, in [0, 1] (0 at the edge itself).
+ *   cos_lam1   cos((lam - 1) phi).
+ *   sin_lam1   sin((lam - 1) phi).
+ *   lam_e      Power lam of the load (c - t)^lam on t < c: 1/2 (the edge asymptotes (4),
+ *              (5)), 3/2 (their next terms), -1/2 (a moved boundary); not an integer.
+ *
+ * Returns:
+ *   syy per unit load amplitude [force/length^2 per force/length^(2 + lam)].
+ */
+double asymslip_edge_eigenfield_pressure_syy(
+    double rho_lam,
+    double cos_lam,
+    double sin_lam,
+    double sin_angle,
+    double cos_lam1,
+    double sin_lam1,
+    double lam_e);
+
+/**
+ * Stress sxy of the pressure (c - t)^lam on t < c, regularised.
+ *
+ * The lower half-plane under the pressure (c - t)^lam on the half-line t < c (exerted by
+ * the indenter), whose Flamant integral diverges: the field of the potential -pi w^lam /
+ * sin(pi lam), w = x - c - i y = rho e^(i phi), i.e. up to a uniform sxx (fixed for a
+ * cycle's amplitude by edge_uniform_sxx), from the polar parts of w (computed once per
+ * point and load for all six fields). Tension positive, plane strain; y >= 0, and not at
+ * the edge itself for lam < 0.
+ *
+ * Implements Eqs. (EA-1), (EA-2), (HP-3) of the paper; derived in
+ * derivations/stress_edge_asymptote.py.
+ *
+ * Arguments:
+ *   rho_lam    rho^lam, rho = |x - c - i y| the distance from the load's edge.
+ *   cos_lam    cos(lam phi), phi = atan2(-y, x - c) in [-pi, 0].
+ *   sin_lam    sin(lam phi).
+ *   sin_angle  sin(-phi) = y / rho, in [0, 1] (0 at the edge itself).
+ *   cos_lam1   cos((lam - 1) phi).
+ *   sin_lam1   sin((lam - 1) phi).
+ *   lam_e      Power lam of the load (c - t)^lam on t < c: 1/2 (the edge asymptotes (4),
+ *              (5)), 3/2 (their next terms), -1/2 (a moved boundary); not an integer.
+ *
+ * Returns:
+ *   sxy per unit load amplitude [force/length^2 per force/length^(2 + lam)].
+ */
+double asymslip_edge_eigenfield_pressure_sxy(
+    double rho_lam,
+    double cos_lam,
+    double sin_lam,
+    double sin_angle,
+    double cos_lam1,
+    double sin_lam1,
+    double lam_e);
+
+/**
+ * Stress sxx of the shear (c - t)^lam on t < c, regularised.
+ *
+ * The lower half-plane under the shear (c - t)^lam on the half-line t < c (exerted by the
+ * indenter), whose Flamant integral diverges: the field of the potential -pi w^lam /
+ * sin(pi lam), w = x - c - i y = rho e^(i phi), i.e. up to a uniform sxx (fixed for a
+ * cycle's amplitude by edge_uniform_sxx), from the polar parts of w (computed once per
+ * point and load for all six fields). Tension positive, plane strain; y >= 0, and not at
+ * the edge itself for lam < 0.
+ *
+ * Implements Eqs. (EA-1), (EA-2), (HP-3) of the paper; derived in
+ * derivations/stress_edge_asymptote.py.
+ *
+ * Arguments:
+ *   rho_lam    rho^lam, rho = |x - c - i y| the distance from the load's edge.
+ *   cos_lam    cos(lam phi), phi = atan2(-y, x - c) in [-pi, 0].
+ *   sin_lam    sin(lam phi).
+ *   sin_angle  sin(-phi) = y / rho, in [0, 1] (0 at the edge itself).
+ *   cos_lam1   cos((lam - 1) phi).
+ *   sin_lam1   sin((lam - 1) phi).
+ *   lam_e      Power lam of the load (c - t)^lam on t < c: 1/2 (the edge asymptotes (4),
+ *              (5)), 3/2 (their next terms), -1/2 (a moved boundary); not an integer.
+ *
+ * Returns:
+ *   sxx per unit load amplitude [force/length^2 per force/length^(2 + lam)].
+ */
+double asymslip_edge_eigenfield_shear_sxx(
+    double rho_lam,
+    double cos_lam,
+    double sin_lam,
+    double sin_angle,
+    double cos_lam1,
+    double sin_lam1,
+    double lam_e);
+
+/**
+ * Stress syy of the shear (c - t)^lam on t < c, regularised.
+ *
+ * The lower half-plane under the shear (c - t)^lam on the half-line t < c (exerted by the
+ * indenter), whose Flamant integral diverges: the field of the potential -pi w^lam /
+ * sin(pi lam), w = x - c - i y = rho e^(i phi), i.e. up to a uniform sxx (fixed for a
+ * cycle's amplitude by edge_uniform_sxx), from the polar parts of w (computed once per
+ * point and load for all six fields). Tension positive, plane strain; y >= 0, and not at
+ * the edge itself for lam < 0.
+ *
+ * Implements Eqs. (EA-1), (EA-2), (HP-3) of the paper; derived in
+ * derivations/stress_edge_asymptote.py.
+ *
+ * Arguments:
+ *   rho_lam    rho^lam, rho = |x - c - i y| the distance from the load's edge.
+ *   cos_lam    cos(lam phi), phi = atan2(-y, x - c) in [-pi, 0].
+ *   sin_lam    sin(lam phi).
+ *   sin_angle  sin(-phi) = y / rho, in [0, 1] (0 at the edge itself).
+ *   cos_lam1   cos((lam - 1) phi).
+ *   sin_lam1   sin((lam - 1) phi).
+ *   lam_e      Power lam of the load (c - t)^lam on t < c: 1/2 (the edge asymptotes (4),
+ *              (5)), 3/2 (their next terms), -1/2 (a moved boundary); not an integer.
+ *
+ * Returns:
+ *   syy per unit load amplitude [force/length^2 per force/length^(2 + lam)].
+ */
+double asymslip_edge_eigenfield_shear_syy(
+    double rho_lam,
+    double cos_lam,
+    double sin_lam,
+    double sin_angle,
+    double cos_lam1,
+    double sin_lam1,
+    double lam_e);
+
+/**
+ * Stress sxy of the shear (c - t)^lam on t < c, regularised.
+ *
+ * The lower half-plane under the shear (c - t)^lam on the half-line t < c (exerted by the
+ * indenter), whose Flamant integral diverges: the field of the potential -pi w^lam /
+ * sin(pi lam), w = x - c - i y = rho e^(i phi), i.e. up to a uniform sxx (fixed for a
+ * cycle's amplitude by edge_uniform_sxx), from the polar parts of w (computed once per
+ * point and load for all six fields). Tension positive, plane strain; y >= 0, and not at
+ * the edge itself for lam < 0.
+ *
+ * Implements Eqs. (EA-1), (EA-2), (HP-3) of the paper; derived in
+ * derivations/stress_edge_asymptote.py.
+ *
+ * Arguments:
+ *   rho_lam    rho^lam, rho = |x - c - i y| the distance from the load's edge.
+ *   cos_lam    cos(lam phi), phi = atan2(-y, x - c) in [-pi, 0].
+ *   sin_lam    sin(lam phi).
+ *   sin_angle  sin(-phi) = y / rho, in [0, 1] (0 at the edge itself).
+ *   cos_lam1   cos((lam - 1) phi).
+ *   sin_lam1   sin((lam - 1) phi).
+ *   lam_e      Power lam of the load (c - t)^lam on t < c: 1/2 (the edge asymptotes (4),
+ *              (5)), 3/2 (their next terms), -1/2 (a moved boundary); not an integer.
+ *
+ * Returns:
+ *   sxy per unit load amplitude [force/length^2 per force/length^(2 + lam)].
+ */
+double asymslip_edge_eigenfield_shear_sxy(
+    double rho_lam,
+    double cos_lam,
+    double sin_lam,
+    double sin_angle,
+    double cos_lam1,
+    double sin_lam1,
+    double lam_e);
+
+/**
+ * Uniform sxx of the amplitude near an edge: half the change of bulk tension.
+ *
+ * The amplitude (state 2 minus state 1) of the surface-parallel stress that the
+ * regularised edge eigenfields leave undetermined, fixed by the strain compatibility of
+ * the two bodies in the stick zone.
+ *
+ * Implements Eq. (EA-3) of the paper; derived in derivations/stress_edge_asymptote.py.
+ *
+ * Arguments:
+ *   dsigma  Change sigma2 - sigma1 of the lower body's bulk tension.
+ *
+ * Returns:
+ *   sxx [force/length^2].
+ */
+double asymslip_edge_uniform_sxx(double dsigma);
+
+/**
+ * Coefficient of sqrt(a2 - x): the slip zone's traction at state 2 in the shear change
+ * (49) at b from (17).
+ *
+ * (49) with the density (15) on b from (17) is a sum of three square-root loads in the
+ * paper's frame (the traction on the indenter, forward slip at the right edge; the lower
+ * body carries the negative).
+ *
+ * Implements Eqs. (49), (EA-4) of the paper; derived in
+ * derivations/stress_edge_asymptote.py.
+ *
+ * Arguments:
+ *   L_I2  Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+ *   mu    Coefficient of friction, mu > 0.
+ *
+ * Returns:
+ *   [force/length^(5/2)].
+ */
+double asymslip_edge_shear_amplitude_state2(double L_I2, double mu);
+
+/**
+ * Coefficient of sqrt(a1 - x)_+: the slip zone's traction at state 1 in the shear change
+ * (49) at b from (17).
+ *
+ * (49) with the density (15) on b from (17) is a sum of three square-root loads in the
+ * paper's frame (the traction on the indenter, forward slip at the right edge; the lower
+ * body carries the negative).
+ *
+ * Implements Eqs. (49), (EA-4) of the paper; derived in
+ * derivations/stress_edge_asymptote.py.
+ *
+ * Arguments:
+ *   L_I1  Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   mu    Coefficient of friction, mu > 0.
+ *
+ * Returns:
+ *   [force/length^(5/2)].
+ */
+double asymslip_edge_shear_amplitude_state1(double L_I1, double mu);
+
+/**
+ * Coefficient of sqrt(b - x)_+: the stick boundary's term, -K in the shear change (49) at
+ * b from (17).
+ *
+ * (49) with the density (15) on b from (17) is a sum of three square-root loads in the
+ * paper's frame (the traction on the indenter, forward slip at the right edge; the lower
+ * body carries the negative).
+ *
+ * Implements Eqs. (49), (EA-4) of the paper; derived in
+ * derivations/stress_edge_asymptote.py.
+ *
+ * Arguments:
+ *   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   L_I2   Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+ *   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+ *          [force/length^(5/2)].
+ *   L_II2  Shear edge multiplier L_II at load state 2 (5), either sign
+ *          [force/length^(5/2)].
+ *   mu     Coefficient of friction, mu > 0.
+ *
+ * Returns:
+ *   [force/length^(5/2)].
+ */
+double asymslip_edge_shear_amplitude_stick(
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2,
+    double mu);
+
+/**
+ * M_I: the pressure near an edge is L_I s^(1/2) + M_I s^(3/2) + ..., s = a - x.
+ *
+ * From Mossakovskii's superposition for any symmetric contact law (Hertz: M_I =
+ * -L_I/(4a)): the next term of (4), for the stated accuracy of the edge fields.
+ *
+ * Implements Eqs. (4), (19), (EA-6) of the paper; derived in
+ * derivations/stress_edge_asymptote.py.
+ *
+ * Arguments:
+ *   a        Contact half-width at the load state considered [length].
+ *   L_I      Normal edge multiplier L_I of the contact pressure p = L_I sqrt(a - x) (4)
+ *            [force/length^(5/2)].
+ *   dL_I_da  Slope dL_I/da of the normal edge multiplier at a.
+ *
+ * Returns:
+ *   M_I [force/length^(7/2)].
+ */
+double asymslip_edge_pressure_next_coefficient(double a, double L_I, double dL_I_da);
+
+/**
+ * M_II: the full-stick shear near an edge is L_II s^(1/2) + M_II s^(3/2) + ....
+ *
+ * On the proportional path dQ = lam dP, dsigma = eta dP (lam, eta as seen from the edge),
+ * from Mossakovskii's superposition: the next term of (5), for the stated accuracy of the
+ * edge fields; without tension M_II = lam M_I.
+ *
+ * Implements Eqs. (5), (21), (EA-6) of the paper; derived in
+ * derivations/stress_edge_asymptote.py.
+ *
+ * Arguments:
+ *   a        Contact half-width at the load state considered [length].
+ *   lam      Load-path slope lambda = dQ/dP (18), either sign.
+ *   eta      Load-path slope eta = dsigma/dP (18), either sign [1/length].
+ *   L_I      Normal edge multiplier L_I of the contact pressure p = L_I sqrt(a - x) (4)
+ *            [force/length^(5/2)].
+ *   dL_I_da  Slope dL_I/da of the normal edge multiplier at a.
+ *
+ * Returns:
+ *   M_II [force/length^(7/2)].
+ */
+double asymslip_edge_shear_next_coefficient(
+    double a,
+    double lam,
+    double eta,
+    double L_I,
+    double dL_I_da);
 
 /* --------------------------------------------------------------------------------------------
  * exact_solution: Section 3.1 of the paper: the exact steady-state stick zone of a

@@ -351,3 +351,165 @@ for _load in ("pressure", "shear"):
                 costly=True,
             )
         )
+
+
+# ---------------------------------------------------------------------------------------------
+# The edge asymptote (derivations/stress_edge_asymptote.py).  The eigenfields against the
+# potential of a square-root load, -pi w^lam / sin(pi lam), put through the potential relations
+# (Muskhelishvili's, for a half-plane loaded on its surface: sxx + syy = -(2/pi) Re(Q - i P),
+# syy - sxx + 2 i sxy = (2/pi) (i y conj(Q' - i P') + conj(Q))) in mpmath; the amplitudes of
+# (49) as the paper's slip-zone tractions; the next coefficients of the edge expansions by
+# quadrature of Mossakovskii's superposition and numerical differentiation in s = a - x.
+# ---------------------------------------------------------------------------------------------
+
+
+def _edge_point(x, a1, a2):
+    """An offset from a load's edge and a depth, both up to the problem's scale."""
+    return x - a2 + (a2 - x) / 3, a2 - x
+
+
+def _edge_parts(offset, y, power):
+    """The polar parts of w = offset - i y (the generated fields' arguments), in doubles."""
+    rho = np.hypot(offset, y)
+    phi = np.arctan2(-y, offset)
+    sine = np.divide(y, rho, out=np.zeros_like(rho), where=rho > 0)
+    angle, slope = power * phi, (power - 1) * phi
+    return rho**power, np.cos(angle), np.sin(angle), sine, np.cos(slope), np.sin(slope)
+
+
+def _potential_stress(component, Q, dQ, P, dP, y):
+    """The stress from the potentials (Muskhelishvili), in mpmath."""
+    F, dF = Q - 1j * P, dQ - 1j * dP
+    trace = -2 / pi * F.real
+    deviator = 2 / pi * (1j * y * mpmath.conj(dF) + mpmath.conj(Q))
+    return {
+        "sxx": (trace - deviator.real) / 2,
+        "syy": (trace + deviator.real) / 2,
+        "sxy": deviator.imag / 2,
+    }[component]
+
+
+def _eigenfield(load: str, component: str, power: float):
+    def compose(x, a1, a2):
+        from asymslip_gen import edge_stress
+
+        offset, y = _edge_point(x, a1, a2)
+        function = getattr(edge_stress, f"edge_eigenfield_{load}_{component}")
+        return function(*_edge_parts(offset, y, power), power)
+
+    def reference(x, a1, a2):
+        offset, y = _edge_point(x, a1, a2)
+        lam = mpmath.mpf(power)
+        w = mpmath.mpc(offset, -y)
+        F = -pi * w**lam / mpmath.sin(pi * lam)
+        dF = -pi * lam * w ** (lam - 1) / mpmath.sin(pi * lam)
+        zero = mpmath.mpc(0)
+        if load == "pressure":
+            return _potential_stress(component, zero, zero, F, dF, y)
+        return _potential_stress(component, F, dF, zero, zero, y)
+
+    return compose, reference
+
+
+for _load in ("pressure", "shear"):
+    for _component in COMPONENTS:
+        for _power, _label in ((0.5, ""), (1.5, " (lam = 3/2)")):
+            _compose, _reference = _eigenfield(_load, _component, _power)
+            register_quantity(
+                Quantity(
+                    f"edge_stress.edge_eigenfield_{_load}_{_component}",
+                    ARGS,
+                    _reference,
+                    ("EA-1", "EA-2"),
+                    compose=_compose,
+                    label=f"edge_eigenfield_{_load}_{_component}{_label}",
+                )
+            )
+
+register_quantity(
+    Quantity(
+        "edge_stress.edge_uniform_sxx",
+        ("dsigma",),
+        lambda dsigma: dsigma / 2,  # half the bulk change is left where the bodies stick
+        ("EA-3",),
+    )
+)
+register_quantity(
+    Quantity(
+        "edge_stress.edge_shear_amplitude_state2",
+        ("L_I2", "mu"),
+        lambda L_I2, mu: mu * L_I2,  # (8): q2 = mu p2 in the slip zone
+        ("49", "EA-4"),
+    )
+)
+register_quantity(
+    Quantity(
+        "edge_stress.edge_shear_amplitude_state1",
+        ("L_I1", "mu"),
+        lambda L_I1, mu: mu * L_I1,  # (11): q1 = -mu p1 in the slip zone
+        ("49", "EA-4"),
+    )
+)
+register_quantity(
+    Quantity(
+        "edge_stress.edge_shear_amplitude_stick",
+        ("L_I1", "L_I2", "L_II1", "L_II2", "mu"),
+        # Far inside the stick zone (49) is the full-stick change (6): the three amplitudes
+        # sum to L_II2 - L_II1.
+        lambda L_I1, L_I2, L_II1, L_II2, mu: L_II2 - L_II1 - mu * (L_I1 + L_I2),
+        ("49", "EA-4"),
+    )
+)
+
+
+def _next_coefficient(kernel, a, slope, curvature):
+    """d/ds at s = 0 of int_{a-s}^a kernel(c, x) dc / sqrt(c^2 - x^2) / sqrt(s), x = a - s,
+    with P'(c) = slope + curvature (c - a): the s^(3/2) coefficient of the edge expansion."""
+
+    def scaled(s):
+        x = a - s
+
+        def integrand(v):  # c = x + s v^2
+            c = x + s * v * v
+            return 2 * kernel(slope + curvature * (c - a), x) / mpmath.sqrt(2 * x + s * v * v)
+
+        return mpmath.quad(integrand, [0, 1])
+
+    return mpmath.diff(scaled, 0)
+
+
+def _law_slopes(dP_da1, d2a_dP2):
+    """P'(a1) and P''(a1) from the problem (a'' = -P''/P'^3)."""
+    return dP_da1, -d2a_dP2 * dP_da1**3
+
+
+register_quantity(
+    Quantity(
+        "edge_stress.edge_pressure_next_coefficient",
+        ("a=a1", "L_I=L_I1", "dL_I_dP", "dP_da1", "d2a_dP2"),
+        lambda a, L_I, dL_I_dP, dP_da1, d2a_dP2: _next_coefficient(
+            lambda Pp, x: Pp / pi, a, *_law_slopes(dP_da1, d2a_dP2)
+        ),
+        ("4", "EA-6"),
+        compose=lambda a, L_I, dL_I_dP, dP_da1, d2a_dP2: __import__(
+            "asymslip_gen.edge_stress", fromlist=["_"]
+        ).edge_pressure_next_coefficient(a, L_I, dL_I_dP * dP_da1),
+        every=4,
+        costly=True,
+    )
+)
+register_quantity(
+    Quantity(
+        "edge_stress.edge_shear_next_coefficient",
+        ("a=a1", "lam", "eta", "L_I=L_I1", "dL_I_dP", "dP_da1", "d2a_dP2"),
+        lambda a, lam, eta, L_I, dL_I_dP, dP_da1, d2a_dP2: _next_coefficient(
+            lambda Pp, x: lam * Pp / pi + eta * Pp * x / 4, a, *_law_slopes(dP_da1, d2a_dP2)
+        ),
+        ("5", "21", "EA-6"),
+        compose=lambda a, lam, eta, L_I, dL_I_dP, dP_da1, d2a_dP2: __import__(
+            "asymslip_gen.edge_stress", fromlist=["_"]
+        ).edge_shear_next_coefficient(a, lam, eta, L_I, dL_I_dP * dP_da1),
+        every=4,
+        costly=True,
+    )
+)

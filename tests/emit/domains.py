@@ -316,6 +316,34 @@ def _semi_ellipse(draw: Draw) -> Points:
     return {"x": draw.uniform(-20.0, 20.0), "y": y, "a": draw.log_uniform(0.1, 10.0)}
 
 
+def _edge_eigenfield(draw: Draw) -> Points:
+    """The polar parts of a point below the surface (y > 0) seen from a load's edge, for the
+    powers 1/2 and 3/2 of the edge expansions."""
+    X = draw.uniform(-5.0, 5.0)
+    y = draw.log_uniform(1e-4, 5.0)
+    lam = np.where(draw.uniform(0.0, 1.0) < 0.5, 0.5, 1.5)
+    rho, phi = np.hypot(X, y), np.arctan2(-y, X)
+    return {
+        "rho_lam": rho**lam,
+        "cos_lam": np.cos(lam * phi),
+        "sin_lam": np.sin(lam * phi),
+        "sin_angle": y / rho,
+        "cos_lam1": np.cos((lam - 1) * phi),
+        "sin_lam1": np.sin((lam - 1) * phi),
+        "lam_e": lam,
+    }
+
+
+def _edge_law(draw: Draw) -> Points:
+    """A cycle's multipliers, a slope of L_I and a bulk-tension change."""
+    points = draw.cycle()
+    points["a"] = points["a1"]
+    points["L_I"] = points["L_I1"]
+    points["dL_I_da"] = points["L_I1"] / points["a1"] * draw.uniform(-2.0, 2.0)
+    points["dsigma"] = draw.uniform(-1e3, 1e3)
+    return points
+
+
 #: Function name -> how to draw points inside its documented domain.
 DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     # corrective_slip, validity: one steady partial-slip cycle
@@ -419,6 +447,17 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "half_plane_node_sum_real": _half_plane_node,
     "half_plane_node_sum_imag": _half_plane_node,
     "half_plane_node_series_factor": _half_plane_node,
+    **{
+        f"edge_eigenfield_{load}_{c}": _edge_eigenfield
+        for load in ("pressure", "shear")
+        for c in ("sxx", "syy", "sxy")
+    },
+    "edge_uniform_sxx": _edge_law,
+    "edge_shear_amplitude_state2": _edge_law,
+    "edge_shear_amplitude_state1": _edge_law,
+    "edge_shear_amplitude_stick": _edge_law,
+    "edge_pressure_next_coefficient": _edge_law,
+    "edge_shear_next_coefficient": _edge_law,
     **{
         f"semi_ellipse_{load}_{c}": _semi_ellipse
         for load in ("pressure", "shear")
