@@ -513,3 +513,108 @@ register_quantity(
         costly=True,
     )
 )
+
+
+# ---------------------------------------------------------------------------------------------
+# Crack nucleation (derivations/nucleation_criteria.py): the traction on a plane by rotating
+# the stress tensor, plane-strain Hooke's law in three dimensions, the criteria as defined.
+# The harness feeds a stress state and a plane from the problem's numbers.
+# ---------------------------------------------------------------------------------------------
+
+PLANE = ("sxx=L_I1", "syy=L_II1", "sxy=L_II2", "theta=mu")
+
+
+def _rotated(sxx, syy, sxy, theta):
+    s = mpmath.matrix([[sxx, sxy], [sxy, syy]])
+    n = mpmath.matrix([mpmath.cos(theta), mpmath.sin(theta)])
+    t = mpmath.matrix([-mpmath.sin(theta), mpmath.cos(theta)])
+    return (n.T * s * n)[0], (t.T * s * n)[0]
+
+
+def _strained(sxx, syy, sxy, theta, E, nu):
+    szz = nu * (sxx + syy)
+    trace = sxx + syy + szz
+    eps = mpmath.matrix(
+        [
+            [((1 + nu) * sxx - nu * trace) / E, (1 + nu) * sxy / E],
+            [(1 + nu) * sxy / E, ((1 + nu) * syy - nu * trace) / E],
+        ]
+    )
+    n = mpmath.matrix([mpmath.cos(theta), mpmath.sin(theta)])
+    t = mpmath.matrix([-mpmath.sin(theta), mpmath.cos(theta)])
+    return (n.T * eps * n)[0], 2 * (t.T * eps * n)[0]
+
+
+def _with_nu(function):
+    """Feed nu = 0.3 (the problems carry no Poisson's ratio)."""
+
+    def compose(**kwargs):
+        import asymslip_gen.nucleation as g
+
+        kwargs["nu"] = np.full_like(kwargs["E"], 0.3)
+        return getattr(g, function)(**kwargs)
+
+    return compose
+
+
+for _name, _index in (("plane_normal_stress", 0), ("plane_shear_stress", 1)):
+    register_quantity(
+        Quantity(
+            f"nucleation.{_name}",
+            PLANE,
+            lambda sxx, syy, sxy, theta, i=_index: _rotated(sxx, syy, sxy, theta)[i],
+            ("NC-1",),
+        )
+    )
+for _name, _index in (("plane_normal_strain", 0), ("plane_shear_strain", 1)):
+    register_quantity(
+        Quantity(
+            f"nucleation.{_name}",
+            (*PLANE, "E=E_star"),
+            lambda sxx, syy, sxy, theta, E, i=_index: _strained(
+                sxx, syy, sxy, theta, E, mpmath.mpf("0.3")
+            )[i],
+            ("NC-2",),
+            compose=_with_nu(_name),
+        )
+    )
+register_quantity(
+    Quantity(
+        "nucleation.findley_parameter",
+        ("tau_a=L_I1", "sigma_n_max=L_II1", "k=mu"),
+        lambda tau_a, sigma_n_max, k: tau_a + k * sigma_n_max,  # Findley (1959)
+        ("NC-3",),
+    )
+)
+register_quantity(
+    Quantity(
+        "nucleation.fatemi_socie_parameter",
+        ("gamma_a=mu", "sigma_n_max=L_II1", "k=mu", "sigma_y=L_I2"),
+        lambda gamma_a, sigma_n_max, k, sigma_y: gamma_a * (1 + k * sigma_n_max / sigma_y),
+        ("NC-3",),
+    )
+)
+register_quantity(
+    Quantity(
+        "nucleation.smith_watson_topper_parameter",
+        ("sigma_n_max=L_II1", "eps_a=mu"),
+        lambda sigma_n_max, eps_a: max(sigma_n_max, 0) * eps_a,  # SWT (1970)
+        ("NC-3",),
+    )
+)
+register_quantity(
+    Quantity(
+        "nucleation.ruiz_frictional_work",
+        ("tau=L_I1", "delta=da"),
+        lambda tau, delta: tau * delta,  # Ruiz et al. (1984)
+        ("NC-3",),
+    )
+)
+register_quantity(
+    Quantity(
+        "nucleation.ruiz_parameter",
+        ("sigma_T=L_II1", "tau=L_I1", "delta=da"),
+        lambda sigma_T, tau, delta: max(sigma_T, 0) * tau * delta,
+        ("NC-3",),
+    )
+)

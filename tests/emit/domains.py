@@ -344,6 +344,25 @@ def _edge_law(draw: Draw) -> Points:
     return points
 
 
+def _plane(draw: Draw) -> Points:
+    """A stress state, a plane, a material and a criterion's inputs."""
+    return {
+        **{name: draw.uniform(-1e3, 1e3) for name in ("sxx", "syy", "sxy")},
+        "theta": draw.uniform(0.0, math.pi),
+        "E": draw.log_uniform(1e3, 1e6),
+        "nu": draw.uniform(0.05, 0.49),
+        "tau_a": draw.log_uniform(1.0, 1e3),
+        "sigma_n_max": draw.uniform(-1e3, 1e3),
+        "k": draw.log_uniform(0.05, 2.0),
+        "gamma_a": draw.log_uniform(1e-6, 1e-2),
+        "sigma_y": draw.log_uniform(100.0, 2e3),
+        "eps_a": draw.log_uniform(1e-6, 1e-2),
+        "tau": draw.log_uniform(1.0, 1e3),
+        "delta": draw.log_uniform(1e-6, 1e-1),
+        "sigma_T": draw.uniform(-1e3, 1e3),
+    }
+
+
 #: Function name -> how to draw points inside its documented domain.
 DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     # corrective_slip, validity: one steady partial-slip cycle
@@ -453,6 +472,20 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
         for c in ("sxx", "syy", "sxy")
     },
     "edge_uniform_sxx": _edge_law,
+    **{
+        name: _plane
+        for name in (
+            "plane_normal_stress",
+            "plane_shear_stress",
+            "plane_normal_strain",
+            "plane_shear_strain",
+            "findley_parameter",
+            "fatemi_socie_parameter",
+            "smith_watson_topper_parameter",
+            "ruiz_frictional_work",
+            "ruiz_parameter",
+        )
+    },
     "edge_shear_amplitude_state2": _edge_law,
     "edge_shear_amplitude_state1": _edge_law,
     "edge_shear_amplitude_stick": _edge_law,
