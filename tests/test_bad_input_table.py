@@ -1419,6 +1419,100 @@ def calibrate_cases() -> list[Bad]:
     ]
 
 
+def stress_cases() -> list[Bad]:
+    """The stress field and the crack-nucleation parameters (issue 18)."""
+    near = ("--x", "11.5", "--depth", "0")
+    asymptote = ("stress", *hertz(), *near, "--source", "asymptote")
+    nucleation = ("nucleation", *hertz(), "--elements", "100", "--E", "1.82", "--nu", "0.3")
+    return [
+        Bad(
+            "stress --depth -1",
+            ("stress", *hertz(), "--x", "11.5", "--depth", "-1", "--source", "asymptote"),
+            "--depth",
+            r"must be >= 0",
+        ),
+        Bad(
+            "stress --depth nan",
+            ("stress", *hertz(), "--x", "11.5", "--depth", "nan"),
+            "--depth",
+            FINITE,
+        ),
+        Bad("stress --x text", ("stress", *hertz(), "--x", "abc", "--depth", "0"), "--x", TEXT),
+        Bad("stress --depth missing", ("stress", *hertz(), "--x", "11.5"), "--depth", r"required"),
+        Bad(
+            "stress: the asymptote at the centre",
+            ("stress", *hertz(), "--x", "0", "--depth", "0", "--source", "asymptote"),
+            "--x",
+            r"must lie within 0\.5 a1",
+        ),
+        Bad(
+            "stress: --elements with the asymptote",
+            (*asymptote, "--elements", "100"),
+            "--elements",
+            r"applies to --source solver only",
+        ),
+        Bad("stress --nu 0.5", (*asymptote, "--nu", "0.5"), "--nu", r"0 < nu < 0\.5"),
+        Bad(
+            "stress --out with another extension",
+            (*asymptote, "--out", "{d}/field.txt"),
+            "--out",
+            r"must end in \.csv or \.parquet",
+        ),
+        Bad(
+            "stress --source bogus",
+            ("stress", *hertz(), *near, "--source", "fem"),
+            "--source",
+            r"invalid choice",
+        ),
+        Bad(
+            "stress: a table law has no profile for the solver",
+            ("stress", "--law", "table", "--table", "{d}/hertz.csv", *cycle(), *near),
+            "--law",
+            r"has no profile for the solver",
+        ),
+        Bad(
+            "stress: gross sliding",
+            ("stress", *hertz(Q2="11"), *near, "--elements", "100"),
+            "--Q2",
+            r"must be < mu P2",
+        ),
+        Bad("nucleation --nu 0.5", _swap(nucleation, "--nu", "0.5"), "--nu", r"0 < nu < 0\.5"),
+        Bad("nucleation --E 0", _swap(nucleation, "--E", "0"), "--E", r"Young's modulus > 0"),
+        Bad("nucleation --E text", _swap(nucleation, "--E", "abc"), "--E", TEXT),
+        Bad("nucleation --L -1", (*nucleation, "--L", "-1"), "--L", r"must be finite and > 0"),
+        Bad(
+            "nucleation: findley without k",
+            (*nucleation, "--criteria", "findley"),
+            "--criteria",
+            r"findley needs its constant k",
+        ),
+        Bad(
+            "nucleation: fs without sigma-y",
+            (*nucleation, "--criteria", "fs", "--k", "0.5"),
+            "--criteria",
+            r"fs \(Fatemi-Socie\) needs",
+        ),
+        Bad(
+            "nucleation: an unknown criterion",
+            (*nucleation, "--criteria", "swt,miner"),
+            "--criteria",
+            r"unknown criterion 'miner'",
+        ),
+        Bad(
+            "nucleation --elements 10",
+            _swap(nucleation, "--elements", "10"),
+            "--elements",
+            r"must be at least 64",
+        ),
+        Bad(
+            "nucleation --out a file",
+            (*nucleation, "--criteria", "swt", "--out", "{d}/hertz.csv"),
+            "--out",
+            r"not a folder",
+        ),
+    ]
+
+
 BAD: list[Bad] = [
     *number_option_cases(),
     *physics_cases(),
@@ -1428,6 +1522,7 @@ BAD: list[Bad] = [
     *command_line_cases(),
     *solve_cases(),
     *calibrate_cases(),
+    *stress_cases(),
 ]
 
 
@@ -2095,6 +2190,8 @@ def test_the_table_has_at_least_80_cases_across_every_command():
         "sweep",
         "solve",
         "calibrate",
+        "stress",
+        "nucleation",
     } <= commands
     assert len(BAD) + len(VALID) + len(ROW_ERRORS) >= 80
 

@@ -119,6 +119,16 @@ OPTION_OF = {
     "steps": "--steps",
     "profile_table": "--profile-table",
     "data": "--data",
+    "depth": "--depth",
+    "source": "--source",
+    "nu": "--nu",
+    "E": "--E",
+    "sigma_y": "--sigma-y",
+    "k_findley": "--k",
+    "k_fatemi_socie": "--k-fs",
+    "L": "--L",
+    "criteria": "--criteria",
+    "solver": "the reference solver",
 }
 
 
