@@ -31,11 +31,18 @@ EA-5  Checked against the exact amplitude field of a Hertz cycle without tension
 EA-6  The next terms of the edge expansions, for the stated accuracy: p = L_I s^(1/2) (1 +
       k_p s + ...) and the full-stick shear q = L_II s^(1/2) (1 + k_q s + ...), s = a - x,
       from Mossakovskii's superposition (section2_calibrations) on a generic law.
+EA-7  The near-edge error map: the committed ``generated/report/stress_error_map.csv``
+      (``asymslip.stress.error_map``, ``make stress-error-map``) summarised -- the asymptote
+      against the solver and the exact field over four laws, three contact growths, five
+      load paths, both edges and six distances from the edge.
 """
 
 from __future__ import annotations
 
+import csv
 import functools
+import io
+from pathlib import Path
 
 import mpmath
 import sympy
@@ -257,6 +264,52 @@ def next_term_ratios() -> tuple[sympy.Expr, sympy.Expr]:
     return tuple(sympy.simplify(r.subs(curvature, curvature_of)) for r in ratios)
 
 
+ERROR_MAP = Path(__file__).resolve().parents[1] / "generated" / "report" / "stress_error_map.csv"
+
+
+def error_map_summary(text: str) -> list[str]:
+    """The report's lines on the committed near-edge error map (its CSV text)."""
+    body = "\n".join(line for line in text.splitlines() if line and not line.startswith("#"))
+    rows = list(csv.DictReader(io.StringIO(body)))
+    if not rows:
+        return ["the committed near-edge error map is empty: run `make stress-error-map`"]
+    quiet = [r for r in rows if r["near_edge"] == "1" and r["warned"] == "0"]
+    loud = [r for r in rows if r not in quiet]
+
+    def worst(chosen: list[dict[str, str]], column: str) -> str:
+        values = [float(r[column]) for r in chosen]
+        return f"{max(values):.3g}" if values else "-"
+
+    laws = ", ".join(dict.fromkeys(r["law"] for r in rows))
+    cycles = len({(r["law"], r["a2_a1"], r["lam_mu"], r["tau"]) for r in rows})
+    lines = [
+        f"{len(rows)} rows: {cycles} cycles ({laws}), both edges, r/a1 = "
+        + ", ".join(dict.fromkeys(r["r_a1"] for r in rows))
+        + f"; {sum(int(r['excluded']) for r in rows)} of {sum(int(r['points']) for r in rows)} "
+        "points left out of the solver rows (the solver's unresolved surface next to a1, a2, b)",
+        "largest error / stated accuracy without a warning (near_edge, no validity warning): "
+        f"{worst([r for r in quiet if r['reference'] == 'solver'], 'error_over_stated')} against "
+        f"the solver ({sum(r['reference'] == 'solver' for r in quiet)} rows), "
+        f"{worst([r for r in quiet if r['reference'] == 'exact'], 'error_over_stated')} against "
+        f"the exact Hertz field ({sum(r['reference'] == 'exact' for r in quiet)} rows); with a "
+        f"warning: {worst(loud, 'error_over_stated')} ({len(loud)} rows)",
+    ]
+    for reference in ("solver", "exact"):
+        chosen = [r for r in rows if r["reference"] == reference]
+        if not chosen:
+            continue
+        by_distance = []
+        for radius in dict.fromkeys(r["r_a1"] for r in chosen):
+            at = [r for r in chosen if r["r_a1"] == radius]
+            median = sorted(float(r["error_fraction"]) for r in at)[len(at) // 2]
+            by_distance.append(f"{radius}: {median:.3g} / {worst(at, 'error_fraction')}")
+        lines.append(
+            f"error / largest amplitude against the {reference}, median / worst, by r/a1 -- "
+            + "; ".join(by_distance)
+        )
+    return lines
+
+
 def derive() -> Derivation:
     d = Derivation(__file__)
     d.describe_module(
@@ -407,6 +460,18 @@ def derive() -> Derivation:
             "semi-elliptic loads) by about the field of the next terms k A_c (c - t)^(3/2) of "
             "its loads (EA-6): near the edge their constant part, from the stick boundary's "
             "load k K (a2 - b)^(3/2), beyond it their growth with r",
+        )
+    with d.equation("EA-7", "Near-edge error map of the asymptotic amplitude") as eq:
+        if ERROR_MAP.is_file():
+            eq.details.extend(error_map_summary(ERROR_MAP.read_text(encoding="utf-8")))
+            measured = "measured"
+        else:
+            eq.details.append("not measured yet: run `make stress-error-map`")
+            measured = "to be measured"
+        eq.beyond_paper(
+            f"the asymptote against the reference solver and the exact Hertz field near both "
+            f"edges ({measured}: generated/report/stress_error_map.csv, drawn in "
+            "generated/figures/stress_error_map.png)",
         )
     kappa_p, kappa_q = next_term_ratios()
     with d.equation("EA-6", "Next terms of the edge expansions") as eq:

@@ -173,7 +173,8 @@ def critical_plane(
         coarse = grid[np.arange(part.points), best]
         use = refined >= coarse
         values[window] = np.where(use, refined, coarse)
-        angles[window] = np.mod(np.where(use, middle, COARSE[best]), np.pi)
+        folded = np.mod(np.where(use, middle, COARSE[best]), np.pi)
+        angles[window] = np.where(np.pi - folded < 1e-9, 0.0, folded)  # pi is the plane 0
     return values, angles
 
 
