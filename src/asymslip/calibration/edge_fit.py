@@ -598,6 +598,16 @@ def _right_edge(
             f"the fit alone would put the edge beyond the first node out of contact (x = "
             f"{x[last + 1]:.6g}); it is placed between the last node in contact and that node"
         )
+    # A node with pressure is in contact: the edge is not before it.  A fit that puts it
+    # there (an FE trace whose pressure falls short of the square root in the last element)
+    # is moved to that node, and keeps its distance from it as error.
+    if chosen.a < x[last]:
+        shortfall = x[last] - chosen.a
+        chosen = replace(chosen, a=float(x[last]), a_error=max(chosen.a_error, shortfall))
+        notes.append(
+            f"the fit put the edge {shortfall:.3g} before the last node in contact (x = "
+            f"{x[last]:.6g}); it is placed at that node"
+        )
     return chosen, scatter, keep, notes
 
 
