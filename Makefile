@@ -5,7 +5,7 @@ PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
-EXTRAS := derive,dev,plot,bench,dask,special,parquet
+EXTRAS := derive,dev,plot,bench,dask,special,parquet,fe
 
 .DEFAULT_GOAL := all
 .PHONY: all env demo generate check-generated check-wheel verify test test-languages toolchains bench \

@@ -115,6 +115,8 @@ LAST_NODE_RESOLUTION = 0.25
 #: Points whose slope changes by less than this fraction of the peak pressure over the spacing
 #: are taken as linearly interpolated between nodes (see :func:`nodal_points`).
 COLLINEAR = 1e-6
+#: ... and whose bend is below this fraction of the trace's kinks (see :func:`nodal_points`).
+FLAT_BEND = 1e-3
 _GRID = 48
 _ROUNDS = 4
 _PROFILE_GRID = 120
@@ -294,17 +296,23 @@ def nodal_points(x: FloatArray, p: FloatArray) -> NDArray[np.bool_]:
 
     A finite-element path report may add points between the nodes, interpolated linearly
     (Abaqus: "include intersections"); they are collinear with their neighbours to the
-    printed digits.  The nodes themselves are kinks of the piecewise-linear trace.  The test is
-    the second divided difference against :data:`COLLINEAR` times the peak pressure over the
-    spacing (6 printed digits give about 1e-6); the ends are always kept.
+    printed digits, while the nodes are kinks of the piecewise-linear trace.  A point is taken
+    as interpolated when its bend (the change of slope across it) is both below
+    :data:`COLLINEAR` times the peak pressure over the spacing (6 printed digits give about
+    1e-6) and below :data:`FLAT_BEND` times the bends of the trace's kinks (their 90th
+    percentile).  The second condition keeps a smooth trace sampled finely: there every point
+    bends about as much as its neighbours (by p'' h), however small h makes that, while in a
+    path report the interpolated points bend by rounding only, far less than the nodes.  The
+    ends are always kept.
     """
     keep = np.ones(x.size, dtype=bool)
     if x.size < 3:
         return keep
     h_left, h_right = x[1:-1] - x[:-2], x[2:] - x[1:-1]
-    bend = (p[2:] - p[1:-1]) / h_right - (p[1:-1] - p[:-2]) / h_left
+    bend = np.abs((p[2:] - p[1:-1]) / h_right - (p[1:-1] - p[:-2]) / h_left)
     scale = COLLINEAR * max(float(np.max(np.abs(p))), 1e-300) / np.minimum(h_left, h_right)
-    keep[1:-1] = np.abs(bend) > scale
+    kinks = float(np.percentile(bend, 90))
+    keep[1:-1] = (bend > scale) | (bend > FLAT_BEND * kinks)
     return keep
 
 

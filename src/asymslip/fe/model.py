@@ -125,7 +125,8 @@ class CylinderOnBlock:
             raise InputError(
                 "R",
                 f"the contact half-width a(P2) = {self.a2:.4g} is not small beside "
-                f"R = {self.R:.4g} (a/R must be <= {MAX_HALF_WIDTH_OVER_R}, the half-plane idealisation)",
+                f"R = {self.R:.4g} (a/R must be <= {MAX_HALF_WIDTH_OVER_R}, the half-plane "
+                "idealisation)",
             )
 
     @property
