@@ -22,7 +22,8 @@ def register(commands: argparse._SubParsersAction) -> None:
         "reads (.vtu, .vtk, .xdmf, ...; the pressure field named by --field), fit each "
         "edge's position a and multiplier L_I of (4) near the edge with the next term of "
         "the expansion, and build each edge's law a(P), L_I(P) with error estimates.  Use the "
-        "saved calibration with --law calibrated --calibration FILE.json in slip-zone, traction and sweep.",
+        "saved calibration with --law calibrated --calibration FILE.json in slip-zone, "
+        "traction and sweep.",
     )
     calibrate.add_argument("traces", type=Path, metavar="TRACES", help="the pressure traces")
     calibrate.add_argument(
