@@ -12,8 +12,8 @@ contact), and the array core ``slip_zone``, which takes the law through ``cycle_
 from __future__ import annotations
 
 import functools
-import re
 import itertools
+import re
 
 import numpy as np
 import pytest
