@@ -61,7 +61,7 @@ report: $(STAMP) ## write generated/report/derivation.md from the derivation rec
 check-wheel: ## build sdist and wheel, install the wheel with no extras, run the README example
 	.ci/check-wheel
 
-toolchains: ## install gfortran and Octave where missing (Debian, as root; quiet, idempotent)
+toolchains: ## install gfortran, Octave and CalculiX where missing (Debian, as root; quiet, idempotent)
 	@.ci/install-toolchains
 
 test-languages: $(STAMP) toolchains ## compile the C and Fortran, run the MATLAB files, compare with NumPy
