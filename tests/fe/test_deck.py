@@ -24,7 +24,7 @@ def test_the_steps_seat_preload_and_cycle_twice():
     assert (
         kinds == ["seat", "preload", "preload", "preload", "state 1"] + ["state 2", "state 1"] * 2
     )
-    assert [step.P for step in steps(MODEL)][1:4] == [800.0, 900.0, 1000.0]
+    assert [step.P for step in steps(MODEL)][1:4] == [600.0, 800.0, 1000.0]
 
 
 def test_the_mesh_is_uniform_over_the_contact_with_no_node_on_the_hertz_edge():
@@ -40,13 +40,15 @@ def test_the_mesh_is_uniform_over_the_contact_with_no_node_on_the_hertz_edge():
 def test_the_block_carries_the_tension_and_balances_Q_at_its_ends():
     deck = write_deck(CylinderOnBlock(**{**MODEL.__dict__, "sigma2": 150.0}))
     depth = Mesh.of(MODEL).depth
-    # The first state-2 step: left end sigma + Q/(2H), right end sigma - Q/(2H), as tension.
+    # The first state-2 step: Q (the block's force on the cylinder, as slip-zone's) = 150, so
+    # the cylinder's top is loaded by -150 and the block receives -150 through the contact,
+    # which its ends balance: left sigma - Q/(2H), right sigma + Q/(2H), as tension.
     step = deck.split("** step 6: state 2")[1].split("*END STEP")[0]
     left = float(step.split("LEFTEND, P4, ")[1].split()[0])
     right = float(step.split("RIGHTEND, P2, ")[1].split()[0])
-    assert left == pytest.approx(-(150.0 + 150.0 / (2 * depth)), rel=1e-12)
-    assert right == pytest.approx(-(150.0 - 150.0 / (2 * depth)), rel=1e-12)
-    assert "REF, 1, 150" in step and "REF, 2, -1100" in step
+    assert left == pytest.approx(-(150.0 - 150.0 / (2 * depth)), rel=1e-12)
+    assert right == pytest.approx(-(150.0 + 150.0 / (2 * depth)), rel=1e-12)
+    assert "REF, 1, -150" in step and "REF, 2, -1100" in step
 
 
 @pytest.mark.parametrize(

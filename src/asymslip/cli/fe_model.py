@@ -99,6 +99,7 @@ def run(args: argparse.Namespace) -> int:
                     "deck": str(outcome.deck),
                     "run": True,
                     "seconds": outcome.seconds,
+                    "cpu_seconds": outcome.cpu_seconds,
                     **outcome.result.to_dict(),
                     "slip_zone": comparison,
                 },
@@ -107,7 +108,10 @@ def run(args: argparse.Namespace) -> int:
         )
         return 0
     h = model.element_size
-    print(f"deck {outcome.deck}; ccx ran in {outcome.seconds:.1f} s; element size {h:.6g}")
+    print(
+        f"deck {outcome.deck}; ccx ran in {outcome.seconds:.1f} s ({outcome.cpu_seconds:.1f} s "
+        f"CPU); element size {h:.6g}"
+    )
     print(
         f"{'edge':>6} {'FE b':>10} {'+-':>8} {'slip-zone b':>12} {'(FE - b)/h':>11} "
         f"{'FE a1':>10} {'Hertz a1':>10} {'FE a2':>10} {'Hertz a2':>10}"

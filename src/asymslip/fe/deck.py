@@ -11,10 +11,14 @@ What the deck holds (``*HEADING`` repeats the essentials):
   ``calibrate`` clips and counts), contact elements generated for every slave node of the
   fine zone; Coulomb friction with a stick slope ``stick_penalty`` E/h;
 * the cylinder's top held rigid by equations (every top node moves with the reference node
-  ``REF``, which carries P and Q): no rotation, so the contact carries no moment;
+  ``REF``, which carries the loads): no rotation, so the contact carries no moment;
+* Q and sigma as ``slip-zone`` and ``solve`` take them, so that (38) holds with both positive
+  at the right edge: Q is the shear force the block exerts on the cylinder through the
+  contact (``REF`` is loaded by -Q), sigma the block's bulk tension;
 * the block on rollers at its base (one node also held in x) and its ends loaded by the bulk
-  tension: sigma + Q/(2 H) on the left end, sigma - Q/(2 H) on the right (H its depth), which
-  balances Q symmetrically and leaves the mean bulk stress at the contact sigma;
+  tension: sigma - Q/(2 H) on the left end, sigma + Q/(2 H) on the right (H its depth), which
+  balances the contact's -Q on the block symmetrically and leaves the mean bulk stress at the
+  contact sigma;
 * the steps of :func:`steps`: the cylinder seated by a small prescribed displacement, the
   normal load in steps to P1 (frictionless and Q = sigma = 0, the cylinder held in x: for
   similar bodies normal loading makes no shear), then the cycle: state 1, and ``cycles`` times
@@ -222,11 +226,12 @@ def write_deck(model: CylinderOnBlock, mesh: Mesh | None = None) -> str:
         elif number == len(model.preload_fractions) + 2:  # the first step of the cycle
             out += [*held, "*CHANGE FRICTION, INTERACTION=CONTACT", "*FRICTION"]
             out.append(f"{_number(model.mu)}, {_number(stick)}")
-        left = step.sigma + step.Q / (2 * depth)
-        right = step.sigma - step.Q / (2 * depth)
+        # The block receives -Q from the cylinder: its ends balance it, half each.
+        left = step.sigma - step.Q / (2 * depth)
+        right = step.sigma + step.Q / (2 * depth)
         out += [
             "*CLOAD",
-            f"REF, 1, {_number(step.Q)}",
+            f"REF, 1, {_number(-step.Q)}",
             f"REF, 2, {_number(-step.P)}",
             "*DLOAD",
             f"LEFTEND, P4, {_number(-left)}",

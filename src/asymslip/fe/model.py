@@ -2,10 +2,12 @@
 
 A cylinder of radius R pressed on a block of the same material (plane strain, so E* = E /
 (2 (1 - nu^2)) of (29) for two elastically similar bodies), loaded by the paper's steady cycle:
-the normal load P and the shear force Q on the cylinder (through its top, held rigid and
-prevented from rotating, so that the contact carries no moment), and the differential bulk
-tension sigma in the block.  :mod:`.deck` writes it as a CalculiX input deck; :mod:`.results`
-reads its steady stick boundaries back.
+the normal load P and the shear force Q (through the cylinder's top, held rigid and prevented
+from rotating, so that the contact carries no moment), and the differential bulk tension sigma
+in the block.  Q and sigma mean what they mean to ``slip-zone`` and ``solve``: Q is the shear
+force that the block exerts on the cylinder (q and Q act on the indenter), sigma the block's
+bulk tension, so that (38) adds both at the right edge.  :mod:`.deck` writes it as a CalculiX
+input deck; :mod:`.results` reads its steady stick boundaries back.
 
 Sizes are chosen from the Hertz half-width a2 = a(P2) of (29): elements of ``a2 /
 elements_per_half_width`` over the fine zone |x| <= ``fine_zone`` a2, growing geometrically
@@ -33,7 +35,7 @@ from ..laws.hertz import HertzLaw
 
 #: The normal load is applied in steps to these fractions of P1 (frictionless, Q = sigma = 0)
 #: before the cycle starts; each step's end is a trace for ``asymslip calibrate``.
-PRELOAD_FRACTIONS = (0.8, 0.9, 1.0)
+PRELOAD_FRACTIONS = (0.6, 0.8, 1.0)
 #: The model is a half-plane idealisation only while the contact is small beside the cylinder.
 MAX_HALF_WIDTH_OVER_R = 0.05
 

@@ -11,6 +11,7 @@ Runtime needs NumPy only (and ccx to run).
 from __future__ import annotations
 
 import os
+import resource
 import shutil
 import subprocess
 import time
@@ -38,7 +39,8 @@ class FeRun:
     deck: Path
     frd: Path | None
     dat: Path | None
-    seconds: float | None
+    seconds: float | None  # wall clock of the ccx run
+    cpu_seconds: float | None  # its CPU time (user + system): what a quiet machine would take
     result: FeResult | None
 
 
@@ -59,11 +61,12 @@ def run_model(
     deck = write_model(model, folder)
     solver = ccx or find_ccx()
     if solver is None:
-        return FeRun(deck, None, None, None, None)
+        return FeRun(deck, None, None, None, None, None)
     # One thread: the machine's other work, and results that do not depend on the thread count.
     environment = {**os.environ, "OMP_NUM_THREADS": "1", "CCX_NPROC_EQUATION_SOLVER": "1"}
     log = deck.with_suffix(".log")
     start = time.perf_counter()
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     with log.open("w") as handle:
         try:
             completed = subprocess.run(
@@ -78,10 +81,12 @@ def run_model(
         except subprocess.TimeoutExpired:
             raise InputError("ccx", f"did not finish within {timeout:g} s (log: {log})") from None
     seconds = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     text = log.read_text(errors="replace")
     errors = [line.strip() for line in text.splitlines() if "*ERROR" in line]
     if errors or completed.returncode != 0:
         reason = errors[0] if errors else f"exit status {completed.returncode}"
         raise InputError("ccx", f"CalculiX failed: {reason} (log: {log})")
     frd, dat = deck.with_suffix(".frd"), deck.with_suffix(".dat")
-    return FeRun(deck, frd, dat, seconds, read_result(frd, model))
+    return FeRun(deck, frd, dat, seconds, cpu, read_result(frd, model))
