@@ -93,6 +93,8 @@ Side = Literal["right", "left"]
 
 #: Width of the reported error, in standard deviations of the pressure noise.
 KAPPA = 4.0
+#: The jackknife's standard deviation is widened by this factor.
+JACKKNIFE_KAPPA = 4.0
 #: The truncation error is taken as this many times the larger of the two estimates (the next
 #: term, and a window twice as wide): on exact traces the next term alone was within a factor
 #: 1-2.3 of the true error, the factor 2 covers what the comparisons see only in part.
@@ -496,8 +498,8 @@ def _choose(fits: _WindowFits, x: FloatArray, p: FloatArray, low: float, high: f
         a=float(fits.a[k]),
         L=float(fits.L[k]),
         c=float(fits.c[k]),
-        a_error=float(max(fits.noise_a[k], KAPPA * jack_a) + truncation_a[k]),
-        L_error=float(max(fits.noise_L[k], KAPPA * jack_L) + truncation_L[k]),
+        a_error=float(max(fits.noise_a[k], JACKKNIFE_KAPPA * jack_a) + truncation_a[k]),
+        L_error=float(max(fits.noise_L[k], JACKKNIFE_KAPPA * jack_L) + truncation_L[k]),
         row=contact,
         size=int(fits.sizes[k]),
     )
