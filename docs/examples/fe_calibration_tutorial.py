@@ -2,7 +2,8 @@
 ======================================
 
 **Needs CalculiX** (``ccx``; Debian: ``apt-get install calculix-ccx``, or ``make toolchains``):
-without it this script stops with that message.  It runs one small model (about a minute).
+without it this script stops with that message.  It runs one small model: about a minute of
+CPU time (several minutes of wall clock on a busy machine).
 
 A cylinder pressed on a block of the same steel (plane strain) is loaded by the paper's cycle
 in a finite-element model; ``asymslip calibrate`` reads the contact pressures straight from
@@ -32,7 +33,7 @@ if find_ccx() is None:
 
 E_STAR = 210000.0 / (2 * (1 - 0.3**2))  # steel on steel, plane strain [MPa]
 R, MU = 50.0, 0.5  # cylinder radius [mm], friction
-CYCLE = dict(P1=1000.0, Q1=-100.0, P2=1100.0, Q2=150.0)  # [N/mm]
+CYCLE = dict(P1=1000.0, Q1=-150.0, P2=1200.0, Q2=350.0)  # [N/mm]; lambda/mu = 5
 model = CylinderOnBlock(R=R, E_star=E_STAR, mu=MU, **CYCLE, elements_per_half_width=16)
 
 # %%

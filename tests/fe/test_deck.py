@@ -64,3 +64,37 @@ def test_the_block_carries_the_tension_and_balances_Q_at_its_ends():
 def test_a_model_outside_its_range_is_refused_by_name(change, words):
     with pytest.raises(InputError, match=words):
         CylinderOnBlock(**{**MODEL.__dict__, **change})
+
+
+def test_fe_model_deck_only_writes_the_deck_and_says_it_was_not_run(tmp_path, capsys):
+    from asymslip.cli import main
+
+    status = main(
+        [
+            "fe-model",
+            "--R",
+            "50",
+            "--E-star",
+            repr(E_STAR),
+            "--mu",
+            "0.5",
+            "--P1",
+            "1000",
+            "--Q1",
+            "-100",
+            "--P2",
+            "1100",
+            "--Q2",
+            "150",
+            "--out",
+            str(tmp_path / "run"),
+            "--deck-only",
+            "--json",
+        ]
+    )
+    captured = capsys.readouterr()
+    assert status == 0
+    assert "not run" in captured.err
+    deck = tmp_path / "run" / "cylinder_on_block.inp"
+    assert deck.read_text() == write_deck(MODEL)
+    assert f'"deck": "{deck}"' in captured.out
