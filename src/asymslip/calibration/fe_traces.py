@@ -21,6 +21,27 @@ The rules, each reported in the traces' notes (what ``asymslip calibrate`` print
   method's overclosure moves the edge by about that much.
 
 Runtime needs NumPy only; mesh files need meshio (the ``fe`` extra).
+
+Examples
+--------
+Two steps of a cyclic run at the same load and one at another, on four nodes along y = 0:
+
+>>> import numpy as np
+>>> nodes = np.array([1, 2, 3, 4])
+>>> coordinates = {n: np.array([float(n), 0.0]) for n in (1, 2, 3, 4)}
+>>> def state(label, load, p):
+...     return FeState(label, load, nodes, np.array(p), np.full(4, np.nan))
+>>> found = assemble("run.frd", [state("step 2", 10.0, [0, 1, 2, -1e-4]),
+...                              state("step 3", 20.0, [1, 2, 3, 0]),
+...                              state("step 4", 10.0, [0, 1, 2, -1e-4])], coordinates, None)
+>>> found.loads.tolist(), found.labels
+([10.0, 20.0], ('step 4', 'step 3'))
+>>> for note in found.notes:
+...     print(note)
+steps used: step 4 (P = 10), step 3 (P = 20)
+loads from the file's reaction forces (their component along the normal)
+P = 10 at step 2, step 4: the last, step 4, used
+1 negative pressures (down to 5e-05 of the peak) at nodes beyond the edge clipped to 0
 """
 
 from __future__ import annotations

@@ -12,6 +12,25 @@ largest node number is N belongs to node (m - N - 1) // 3 + 1 (three expanded no
 numbered in order after N).  :meth:`FrdFile.model_node` applies that rule.
 
 Runtime needs NumPy only.
+
+Examples
+--------
+A file with two nodes and one result block (the fixed columns CalculiX writes):
+
+>>> import tempfile, pathlib
+>>> e = "{:12.5E}".format
+>>> text = chr(10).join(["    1C", f"    2C{2:30d}{'':37}1",
+...     f" -1{1:10d}{e(0.0)}{e(0.0)}{e(0.0)}", f" -1{2:10d}{e(1.0)}{e(0.0)}{e(0.0)}", " -3",
+...     f"    1PSTEP{1:25d}{1:12d}{3:12d}", f"  100CL  101{3.0:12.9f}{2:12d}{'':20} 0    1",
+...     " -4  CONTACT     2    1", " -5  COPEN       1    4    1    1",
+...     " -5  CPRESS      1    4    1    2",
+...     f" -1{1:10d}{e(-1e-6)}{e(5.0)}", f" -1{2:10d}{e(1e-4)}{e(0.0)}", " -3", "9999"])
+>>> path = pathlib.Path(tempfile.mkdtemp()) / "run.frd"
+>>> _ = path.write_text(text + chr(10))
+>>> frd = read_frd(path)
+>>> block = frd.named("CONTACT")[0]
+>>> block.step, block.increment, block.components, block.column("CPRESS").tolist()
+(3, 1, ('COPEN', 'CPRESS'), [5.0, 0.0])
 """
 
 from __future__ import annotations

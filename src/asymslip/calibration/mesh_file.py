@@ -10,6 +10,13 @@ surface follow :mod:`.surface`, and the rules of :mod:`.fe_traces` apply (negati
 clipped and counted, repeated loads).
 
 Runtime needs NumPy and meshio.
+
+Examples
+--------
+Which point-data fields are pressures, and the loads their names give:
+
+>>> pressure_fields(["CPRESS_1", "CPRESS P=1000", "CPRESSURE", "S"], "CPRESS")
+[('CPRESS_1', None), ('CPRESS P=1000', 1000.0)]
 """
 
 from __future__ import annotations
@@ -26,6 +33,17 @@ from .fe_traces import FeState, FeTraces, assemble
 #: The field name used when none is given.
 DEFAULT_FIELD = "CPRESS"
 _LOAD_IN_NAME = re.compile(r"P\s*=\s*([-+0-9.eE]+)")
+
+
+def pressure_fields(keys: Sequence[str], name: str) -> list[tuple[str, float | None]]:
+    """The fields named ``name`` or ``name`` and a label, with the load a label says."""
+    pattern = re.compile(rf"^{re.escape(name)}(?:$|[\s_\-:.,(\[].*)")
+    found = []
+    for key in keys:
+        if pattern.match(key):
+            load = _LOAD_IN_NAME.search(key)
+            found.append((key, float(load.group(1)) if load else None))
+    return found
 
 
 def mesh_traces(
@@ -46,8 +64,8 @@ def mesh_traces(
     except Exception as error:  # meshio raises many kinds; the message is what matters
         reason = str(error).splitlines()[0] if str(error) else type(error).__name__
         raise InputError("traces", f"{path}: meshio cannot read it: {reason}") from None
-    pattern = re.compile(rf"^{re.escape(name)}(?:$|[\s_\-:.,(\[].*)")
-    fields = [key for key in mesh.point_data if pattern.match(key)]
+    named = pressure_fields(list(mesh.point_data), name)
+    fields = [key for key, _ in named]
     if not fields:
         raise InputError(
             "field",
@@ -60,10 +78,7 @@ def mesh_traces(
         if lines
         else np.arange(mesh.points.shape[0])
     )
-    named_loads = []
-    for key in fields:
-        found = _LOAD_IN_NAME.search(key)
-        named_loads.append(float(found.group(1)) if found else None)
+    named_loads = [load for _, load in named]
     if loads is not None and any(value is not None for value in named_loads):
         raise InputError(
             "loads", f"{path}: the fields' names give the loads: --loads is not needed"

@@ -60,7 +60,7 @@ def surface_positions(coordinates: FloatArray) -> Positions:
     tangent = vt[0]
     if tangent[0] < 0 or (tangent[0] == 0 and tangent[1] < 0):
         tangent = -tangent
-    normal = np.array([-tangent[1], tangent[0]])
+    normal = np.array([-tangent[1], tangent[0]]) + 0.0  # + 0.0: no negative zero
     along = points @ tangent
     across = (points - centre) @ normal
     span = float(np.ptp(along))

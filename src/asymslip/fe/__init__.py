@@ -7,6 +7,14 @@ as for ``slip-zone``, the mesh; :func:`write_deck` (:mod:`.deck`) writes its Cal
 both edges from the run.  The run's .frd and .dat are what ``asymslip calibrate`` reads.
 
 Runtime needs NumPy only (and CalculiX's ``ccx`` to run a deck).
+
+Examples
+--------
+>>> model = CylinderOnBlock(R=50.0, E_star=115384.6, mu=0.5, P1=1000.0, Q1=-100.0,
+...                         P2=1100.0, Q2=150.0)
+>>> deck = write_deck(model)
+>>> deck.splitlines()[1], deck.count("*STEP")
+('asymslip: plane-strain cylinder on block, the steady partial-slip cycle', 9)
 """
 
 from .deck import write_deck

@@ -29,6 +29,15 @@ What the deck holds (``*HEADING`` repeats the essentials):
   ``calibrate`` takes as each step's load).
 
 Runtime needs NumPy only.
+
+Examples
+--------
+>>> from asymslip.fe.model import CylinderOnBlock
+>>> model = CylinderOnBlock(R=50.0, E_star=115384.6, mu=0.5, P1=1000.0, Q1=-100.0,
+...                         P2=1100.0, Q2=150.0, sigma2=20.0)
+>>> [(step.kind, step.P, step.sigma) for step in steps(model)][3:7]
+[('preload', 1000.0, 0.0), ('state 1', 1000.0, 0.0), ('state 2', 1100.0, 20.0),
+ ('state 1', 1000.0, 0.0)]
 """
 
 from __future__ import annotations

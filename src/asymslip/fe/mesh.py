@@ -17,8 +17,8 @@ Runtime needs NumPy only.
 Examples
 --------
 >>> grid = Grid.build(h=0.1, fine=1.0, extent=3.0, depth=3.0, growth=1.2)
->>> bool(grid.x[0] == -grid.x[-1]), float(grid.x[grid.x.size // 2])
-(True, 0.0)
+>>> bool(grid.x[0] == -grid.x[-1]), round(float(grid.x[grid.x.size // 2]), 12)
+(True, 0.05)
 >>> float(grid.depths[1]), bool(grid.depths[-1] >= 3.0)
 (0.1, True)
 """

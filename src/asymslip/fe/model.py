@@ -22,7 +22,7 @@ Examples
 >>> model = CylinderOnBlock(R=50.0, E_star=115384.6, mu=0.5, P1=1000.0, Q1=-100.0,
 ...                         P2=1100.0, Q2=150.0)
 >>> round(model.a2, 4), round(model.element_size, 5)
-(0.7791, 0.02597)
+(0.779, 0.02597)
 """
 
 from __future__ import annotations

@@ -19,6 +19,21 @@ last increment of each step, at the block's surface nodes (the slave nodes), in 
   same node each time.
 
 Runtime needs NumPy only.
+
+Examples
+--------
+Five nodes, the outer two slipping between two states (their slip grows beyond the stick
+penalty's elastic part, which is 1e-6 per unit of shear here):
+
+>>> import numpy as np
+>>> x = np.array([-0.2, -0.1, 0.0, 0.1, 0.2, 0.3, 0.4])
+>>> shear = np.array([1.0, 1.0, 1.0, 1.0, 1.0, 2.0, 2.0])
+>>> zero = np.zeros(7)
+>>> start = SurfaceState(x, zero, zero, zero, zero)
+>>> end = SurfaceState(x, zero, shear, 1e-6 * shear + [0, 0, 0, 0, 0, 1e-4, 3e-4], zero)
+>>> b, half_spacing = _stick_boundary(start, end, a1=0.45, side="right")
+>>> round(b, 12), round(half_spacing, 12)
+(0.25, 0.05)
 """
 
 from __future__ import annotations

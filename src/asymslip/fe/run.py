@@ -6,6 +6,15 @@ ends with an error (no convergence, a bad card) is one :class:`~asymslip.errors.
 quoting CalculiX's own error line; its log stays in the folder.
 
 Runtime needs NumPy only (and ccx to run).
+
+Examples
+--------
+>>> import tempfile
+>>> from asymslip.fe.model import CylinderOnBlock
+>>> model = CylinderOnBlock(R=50.0, E_star=115384.6, mu=0.5, P1=1000.0, Q1=-100.0,
+...                         P2=1100.0, Q2=150.0)
+>>> write_model(model, tempfile.mkdtemp()).name
+'cylinder_on_block.inp'
 """
 
 from __future__ import annotations
