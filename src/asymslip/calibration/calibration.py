@@ -340,7 +340,9 @@ def calibrate(
                 )
             seen[key] = trace.where()
             try:
-                fit = fit_edge(trace.x, trace.p, side, trace.P, noise)
+                fit = fit_edge(
+                    trace.x, trace.p, side, trace.P, noise, fe_nodes=trace.unit == "node"
+                )
             except EdgeFitError as error:
                 raise InputError(
                     "traces", f"{trace.where(error.node)}: {side} edge: {error.rule}"
