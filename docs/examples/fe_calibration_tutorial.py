@@ -58,14 +58,18 @@ for fit in calibration.right:
     )
 
 # %%
-# The slip zone from the calibrated law, from Hertz, and the FE model's own.
+# The slip zone from the calibrated law (with the error its data propagate to it), from Hertz,
+# and the FE model's own.  Four loads of a coarse mesh fix a(P) only roughly, and the slope
+# a'(P) that (17) needs through L_II even less: the calibrated b says how far it can be trusted.
 cycle = LoadCycle(**CYCLE)
-from_data = slip_zone(calibration.law(), cycle, MU, edge="both")
+law = calibration.law()
+from_data = slip_zone(law, cycle, MU, edge="both")
+error = float(law.error_of(lambda fitted: slip_zone(fitted, cycle, MU, edge="right").b))
 from_hertz = slip_zone(hertz, cycle, MU, edge="both")
 fe = run.result
 print(
-    f"stick boundary b (right edge): calibrated {from_data.b:.4f}, Hertz {from_hertz.b:.4f}, "
-    f"FE {fe.right.b:.4f} +- {fe.right.resolution:.4f}"
+    f"stick boundary b (right edge): calibrated {from_data.b:.4f} +- {error:.4f}, "
+    f"Hertz {from_hertz.b:.4f}, FE {fe.right.b:.4f} +- {fe.right.resolution:.4f}"
 )
 
 # %%
