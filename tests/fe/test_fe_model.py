@@ -1,6 +1,6 @@
 """The CalculiX cylinder-on-block model against Hertz, slip-zone, the reference solver and
 calibrate (issue 23).  Slow: two ccx runs of a coarse mesh (a(P2)/30 at the contact, about
-5,000 CPE4 elements, 9 steps), about 1-4 minutes each on the 2-core machine.
+5,000 CPE4 elements, 9 steps), side by side, one per core.
 
 The cycle: steel (E* = 115,385 MPa, nu = 0.3), R = 50 mm, mu = 0.5, P 1000 -> 1100 N/mm,
 Q -100 -> 150 N/mm (lambda/mu = 5, slip zones of about three elements at each edge), without
@@ -12,6 +12,7 @@ b with its stated accuracy, and the reference solver's b with its bound.
 from __future__ import annotations
 
 import math
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 import pytest
@@ -40,13 +41,23 @@ def hertz_L_I(P: float) -> float:
     return 2 * P / math.pi * math.sqrt(2 / hertz_a(P) ** 3)
 
 
-@pytest.fixture(scope="module", params=list(TENSIONS))
-def run(request, tmp_path_factory):
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    """Both models, run side by side (one ccx each: the machine's two cores)."""
     require_ccx()
-    sigma2 = TENSIONS[request.param]
-    model = CylinderOnBlock(R=R, E_star=E_STAR, mu=MU, **CYCLE, sigma2=sigma2)
-    outcome = run_model(model, tmp_path_factory.mktemp(request.param.replace(" ", "_")))
-    return model, outcome
+    models = {
+        name: CylinderOnBlock(R=R, E_star=E_STAR, mu=MU, **CYCLE, sigma2=sigma2)
+        for name, sigma2 in TENSIONS.items()
+    }
+    folders = {name: tmp_path_factory.mktemp(name.replace(" ", "_")) for name in models}
+    with ThreadPoolExecutor(max_workers=len(models)) as pool:
+        futures = {name: pool.submit(run_model, models[name], folders[name]) for name in models}
+        return {name: (models[name], future.result()) for name, future in futures.items()}
+
+
+@pytest.fixture(params=list(TENSIONS))
+def run(request, runs):
+    return runs[request.param]
 
 
 def test_the_model_is_the_coarse_mesh_the_docstring_says(run):

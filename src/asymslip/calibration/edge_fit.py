@@ -105,6 +105,11 @@ JACKKNIFE_KAPPA = 2.0
 #: is the true error to a median factor 0.98, the wider window about 2.5 times it; their larger
 #: is enough (factor 2 before: the errors were 7-13 times the true ones).
 TRUNCATION_SAFETY = 1.0
+#: ... and this many times for an FE solution's nodal pressures, which are not samples of the
+#: edge expansion: their shortfall in the last element or two (linear elements) biases every
+#: window alike, so the comparisons of windows see it only in part (measured: the fitted L_I of
+#: the CalculiX model 1-2 % from Hertz's, the windows' spread about 1 %).
+TRUNCATION_SAFETY_FE = 2.0
 #: The smallest window: three parameters and one degree of freedom to spare.
 MIN_WINDOW = 4
 #: Windows reach at most this fraction of the contact width from the edge (the comparison
@@ -476,7 +481,14 @@ class _Choice:
     size: int
 
 
-def _choose(fits: _WindowFits, x: FloatArray, p: FloatArray, low: float, high: float) -> _Choice:
+def _choose(
+    fits: _WindowFits,
+    x: FloatArray,
+    p: FloatArray,
+    low: float,
+    high: float,
+    safety: float = TRUNCATION_SAFETY,
+) -> _Choice:
     """The window of least relative error of L_I; errors = noise + truncation + jackknife."""
     count = fits.sizes.size
     truncation_a = np.full(count, np.inf)
@@ -485,8 +497,8 @@ def _choose(fits: _WindowFits, x: FloatArray, p: FloatArray, low: float, high: f
         wider = np.flatnonzero(fits.reach >= 2 * fits.reach[k])
         if wider.size:
             m = wider[0]
-            truncation_a[k] = TRUNCATION_SAFETY * max(abs(fits.a[m] - fits.a[k]), fits.next_a[k])
-            truncation_L[k] = TRUNCATION_SAFETY * max(abs(fits.L[m] - fits.L[k]), fits.next_L[k])
+            truncation_a[k] = safety * max(abs(fits.a[m] - fits.a[k]), fits.next_a[k])
+            truncation_L[k] = safety * max(abs(fits.L[m] - fits.L[k]), fits.next_L[k])
     error_L = fits.noise_L + truncation_L
     relative = np.where(np.isfinite(error_L), error_L / np.maximum(np.abs(fits.L), 1e-300), np.inf)
     k = int(np.argmin(relative))
@@ -555,7 +567,8 @@ def _right_edge(
         fits = _fit_windows(x, p, end, beyond, sizes, low, high, scatter)
         if not np.any(fits.reach >= 2 * fits.reach[0]):
             return None
-        return _choose(fits, x, p, low, high)
+        safety = TRUNCATION_SAFETY_FE if fe_nodes else TRUNCATION_SAFETY
+        return _choose(fits, x, p, low, high, safety)
 
     without = variant(last - 1)
     if without is None:
@@ -625,6 +638,7 @@ def _right_edge(
             f"{x[last]:.6g}); it is placed at that node"
         )
     if fe_nodes:
+        # The FE's resolution: its edge is known to half the node spacing there.
         chosen = replace(chosen, a_error=max(chosen.a_error, 0.5 * (x[last + 1] - x[last])))
     return chosen, scatter, keep, notes
 
@@ -656,7 +670,7 @@ def fit_edge(
         edge is resolved only to the element that holds it, so the error of a is at least half
         the spacing between the last node in contact and the next (linear elements cannot
         follow the square root there; the FE's pressure falls short of it in the last element
-        or two).
+        or two); the truncation part of the error is doubled (``TRUNCATION_SAFETY_FE``).
 
     Raises
     ------
