@@ -306,7 +306,7 @@ def _dat_tables(
             found = pattern.search(line)
             if not found:
                 continue
-            time = float(found.group(found.lastindex))
+            time = float(found.group(found.lastindex or 0))
             rows = []
             k += 1
             while k < len(lines) and not lines[k].strip():
@@ -400,7 +400,7 @@ def dat_traces(path: str | Path, loads: Sequence[float] | None) -> FeTraces:
                 "keep only the one whose reaction force is the normal load",
             )
         per_set = totals
-    states = []
+    rows: list[tuple[str, FloatArray | None, IntArray, FloatArray, FloatArray]] = []
     model_nodes_all = []
     for time in times:
         table = stresses[time]
@@ -413,7 +413,7 @@ def dat_traces(path: str | Path, loads: Sequence[float] | None) -> FeTraces:
             opening = opening_table[:, 1]
         unique, means, _ = _pairs(nodes, np.column_stack([table[:, 1], opening]))
         model_nodes_all.append(unique)
-        states.append([f"time {time:g}", per_set.get(time), unique, means[:, 0], means[:, 1]])
+        rows.append((f"time {time:g}", per_set.get(time), unique, means[:, 0], means[:, 1]))
     nodes = np.unique(np.concatenate(model_nodes_all))
     missing = [int(n) for n in nodes if int(n) not in coordinates]
     if missing:
@@ -421,7 +421,7 @@ def dat_traces(path: str | Path, loads: Sequence[float] | None) -> FeTraces:
     normal = surface_positions(np.array([coordinates[int(n)][:2] for n in nodes])).normal
     built = [
         FeState(label, None if total is None else float(abs(total[:2] @ normal)), n, p, o)
-        for label, total, n, p, o in states
+        for label, total, n, p, o in rows
     ]
     return assemble(str(path), built, {k: v[:2] for k, v in coordinates.items()}, loads)
 

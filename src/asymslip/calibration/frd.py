@@ -132,7 +132,7 @@ def read_frd(path: str | Path) -> FrdFile:
     except OSError as error:
         raise InputError("traces", f"cannot read {source}: {error.strerror}") from None
     numbers: list[int] = []
-    coordinates: list[tuple[float, float, float]] = []
+    coordinates: list[list[float]] = []
     element_types: set[int] = set()
     blocks: list[ResultBlock] = []
     step = increment = 0
@@ -151,7 +151,7 @@ def read_frd(path: str | Path) -> FrdFile:
                     numbers.append(int(row[3 : 3 + width]))
                     base = 3 + width
                     coordinates.append(
-                        tuple(float(row[base + 12 * j : base + 12 * (j + 1)]) for j in range(3))
+                        [float(row[base + 12 * j : base + 12 * (j + 1)]) for j in range(3)]
                     )
                 except ValueError:
                     raise _fail(source, k + 1, "a node record that is not numbers") from None

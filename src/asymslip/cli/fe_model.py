@@ -11,12 +11,16 @@ import argparse
 import json
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from .cycle_options import add_cycle_options
 from .parser import number, whole_number
 
+if TYPE_CHECKING:
+    from ..fe import CylinderOnBlock
 
-def register(commands: argparse._SubParsersAction) -> None:
+
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     command = commands.add_parser(
         "fe-model",
         help="write (and run, with CalculiX) a finite-element model of a cylinder on a block",
@@ -91,7 +95,7 @@ def run(args: argparse.Namespace) -> int:
         return 0
     outcome = run_model(model, args.out)
     assert outcome.result is not None
-    comparison = _comparison(model, outcome.result)
+    comparison = _comparison(model)
     if args.json:
         print(
             json.dumps(
@@ -127,20 +131,14 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _comparison(model: object, result: object) -> dict[str, dict[str, float]]:
+def _comparison(model: CylinderOnBlock) -> dict[str, dict[str, float]]:
     """slip-zone's headline b and its stated accuracy at both edges, for the same cycle."""
     from ..cycle import LoadCycle
     from ..slip_zones import slip_zone
 
-    cycle = LoadCycle(
-        model.P1,
-        model.Q1,
-        model.P2,
-        model.Q2,
-        model.sigma1,
-        model.sigma2,  # type: ignore[attr-defined]
-    )
-    found = slip_zone(model.law, cycle, model.mu, edge="both")  # type: ignore[attr-defined]
+    cycle = LoadCycle(model.P1, model.Q1, model.P2, model.Q2, model.sigma1, model.sigma2)
+    found = slip_zone(model.law, cycle, model.mu, edge="both")
+    assert found.left is not None  # edge="both" gives the left edge
     return {
         "right": {"b": float(found.b), "b_accuracy": float(found.b_accuracy)},
         "left": {"b": float(found.left.b), "b_accuracy": float(found.left.b_accuracy)},

@@ -48,7 +48,7 @@ from typing import Literal
 
 import numpy as np
 
-from .mesh import Body, Grid, block, cylinder
+from .mesh import Body, Grid, IntArray, block, cylinder
 from .model import CylinderOnBlock
 
 StepKind = Literal["seat", "preload", "state 1", "state 2"]
@@ -113,9 +113,9 @@ class Mesh:
         return float(self.grid.depths[-1])
 
     @property
-    def surface_nodes(self) -> np.ndarray:
+    def surface_nodes(self) -> IntArray:
         """The block's surface nodes (the slave nodes), left to right."""
-        return self.block.ids[0]
+        return np.asarray(self.block.ids[0], dtype=np.int64)
 
 
 def _number(value: float) -> str:
@@ -123,7 +123,7 @@ def _number(value: float) -> str:
     return f"{value:.14g}"
 
 
-def _lines(values: np.ndarray, per_line: int = 8) -> list[str]:
+def _lines(values: IntArray | list[int], per_line: int = 8) -> list[str]:
     """Integers as CalculiX list lines (at most 16 entries a line; 8 is readable)."""
     flat = [str(int(v)) for v in np.ravel(values)]
     return [", ".join(flat[k : k + per_line]) + "," for k in range(0, len(flat), per_line)]

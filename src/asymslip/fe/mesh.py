@@ -88,8 +88,8 @@ class Body:
 
     def element_number(self, row: int, column: int) -> int:
         """The element between depth rows row, row + 1 and columns column, column + 1."""
-        columns = self.ids.shape[1] - 1
-        return self.first_element + row * columns + column
+        columns = int(self.ids.shape[1]) - 1
+        return int(self.first_element + row * columns + column)
 
 
 def block(grid: Grid) -> Body:
