@@ -590,8 +590,28 @@ def physics_cases() -> list[Bad]:
         Bad(
             "bulk tension that overflows the denominator of (17)",
             ("slip-zone", *hertz(R="1e300", P1="1e-300", sigma2="1.7e308")),
-            "--mu",
-            r"is not positive \(a negative number beyond double precision\)",
+            "--sigma2",
+            r"bulk-tension change sigma2 - sigma1 is too large for mu = 0\.1: .* is not "
+            r"positive \(a negative number beyond double precision\)",
+        ),
+        Bad(
+            "--sigma2 1e300 names the tension, not --mu",
+            ("slip-zone", *hertz(sigma2="1e300")),
+            "--sigma2",
+            r"bulk-tension change sigma2 - sigma1 is too large for mu = 0\.1: at the right edge "
+            r"the denominator of \(17\).*is not positive \(-1\.569\d*e\+299\)",
+        ),
+        Bad(
+            "--sigma1 -1e300 names the tension (at state 2's option)",
+            ("slip-zone", *hertz(sigma1="-1e300")),
+            "--sigma2",
+            r"bulk-tension change sigma2 - sigma1 is too large",
+        ),
+        Bad(
+            "gross sliding with a subnormal P1 and Q1 (mu P1 rounds to 0)",
+            ("slip-zone", *hertz(P1="5e-324", Q1="5e-324", P2="1e-323", Q2="0")),
+            "--Q1",
+            r"gross sliding",
         ),
         Bad(
             "power law: A = 1e300 overflows",
@@ -614,8 +634,8 @@ def physics_cases() -> list[Bad]:
         Bad(
             "zero denominator of (17) (bulk tension)",
             ("slip-zone", *hertz(Q2="0", sigma2=repr(eta_zero * (P2 - P1)))),
-            "--mu",
-            r"denominator of \(17\).*not positive",
+            "--sigma2",
+            r"bulk-tension change .* denominator of \(17\).*not positive",
         ),
         Bad(
             "stick boundary beyond the contact (bulk tension)",
@@ -1634,6 +1654,11 @@ def valid_cases() -> list[Valid]:
             "P1 = 1e-320 (subnormal), P2 = 2e-320",
             ("slip-zone", *hertz(P1="1e-320", P2="2e-320", Q2="0"), "--json"),
             slip_zone_check(1e-320, 0, 2e-320, 0, 0.1, slips=False, rel=1e-3),
+        ),
+        Valid(
+            "P1 = 5e-324 (mu P1 rounds to 0), Q1 = 0: not gross sliding",
+            ("slip-zone", *hertz(P1="5e-324", P2="1e-323", Q2="0"), "--json"),
+            slip_zone_check(5e-324, 0, 1e-323, 0, 0.1, slips=False, rel=1e-3),
         ),
         Valid(
             "P1 = 1, P2 = 1e6 (no slip; eq24 flagged)",

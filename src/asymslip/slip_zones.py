@@ -62,7 +62,7 @@ from .edge_flags import (
 )
 from .errors import InputError, as_numbers
 from .laws.base import ContactLaw, LawState
-from .rules import Verdict, check_friction, check_partial_slip, finite
+from .rules import Verdict, check_denominator, check_friction, check_partial_slip, finite
 from .single_cycle import evaluate_one
 
 FloatArray = NDArray[np.float64]
@@ -222,7 +222,7 @@ def _finish_edge(
         if refused.any()
         else ""
     )
-    verdict.require("denominator", admits, mu, side=side, denominator=denominator, note=note)
+    check_denominator(verdict, admits, mu, denominator, values, side=side, note=note)
     # Non-finite results first: a b that overflowed is not "outside the contact".
     checked = ("b", "slip_zone_width", "b_first_order", "L_II1", "L_II2", *MEASURE_KEYS)
     total = sum(values[key] for key in checked)

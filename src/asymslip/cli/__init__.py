@@ -14,6 +14,7 @@ import os
 import sys
 from collections.abc import Sequence
 
+from .. import __version__
 from ..errors import InputError
 from . import calibrate, derive, figure, slip_zone, solve, sweep, traction
 from .laws import OPTION_OF
@@ -28,6 +29,9 @@ def build_parser() -> Parser:
         description="Steady-state partial slip at contact edges: slip-zone size, tractions, "
         "slip and figures from the asymptotic corrective-slip solution (TAFM 2022, 103457).  "
         "Loads are per unit length of contact; lengths and moduli in any consistent units.",
+    )
+    parser.add_argument(
+        "--version", action="version", version=f"%(prog)s {__version__}", help="print the version"
     )
     commands = parser.add_subparsers(dest="command", required=True, parser_class=Parser)
     for command in COMMANDS:

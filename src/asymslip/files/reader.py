@@ -446,7 +446,13 @@ def _parse_arrow(layout: _Layout, wanted: list[str]):
         if table is None or table.num_rows != rows:
             counts = _field_counts(layout)
             good = np.flatnonzero(counts == len(header))
-            table = pcsv.read_csv(pa.py_buffer(_record_bytes(layout, good)), read, parse, convert)
+            # No well-formed row at all: pyarrow refuses an empty buffer ("Empty CSV file"), so
+            # the table of no rows is built here; every row then carries its field-count error.
+            table = (
+                pcsv.read_csv(pa.py_buffer(_record_bytes(layout, good)), read, parse, convert)
+                if len(good)
+                else pa.table({name: pa.array([], pa.string()) for name in header})
+            )
         if table.num_rows != len(good):  # the scan and pyarrow disagree on the records
             raise RuntimeError(
                 f"pyarrow read {table.num_rows} rows where "

@@ -18,8 +18,9 @@ from types import ModuleType
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ..errors import InputError, as_float_array
+from ..errors import InputError
 from .base import BoolArray, ContactLaw, FloatArray, LawState
+from .parameters import law_parameter
 from .roots import invert_increasing_where_possible
 
 REQUIRED_FUNCTIONS = ("load", "load_slope", "normal_edge_multiplier")
@@ -104,9 +105,7 @@ class ModuleLaw(ContactLaw):
                 f"{', '.join(unknown)} is not a parameter of the law "
                 f"{self.name} in {source} (its parameters: {listed})",
             )
-        self.params = {
-            name: float(as_float_array(name, param_values[name])) for name in self.param_names
-        }
+        self.params = {name: law_parameter(name, param_values[name]) for name in self.param_names}
         if description.get("parameters_are") == "positive real numbers":
             for name, value in self.params.items():
                 if not value > 0:
