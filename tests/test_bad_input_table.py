@@ -191,6 +191,9 @@ FILES = {
     "path.csv": "P,Q\n100,0\n105,1\n",
     "profile.csv": "x,h\n" + "".join(f"{x:g},{x * x / 2!r}\n" for x in range(-30, 31)),
     "profile_one_point.csv": "x,h\n0,0\n",
+    # inputs named like the files solve --out writes (tractions.csv, slip.csv)
+    "tractions.csv": "P,Q\n100,0\n105,1\n",
+    "slip.csv": "x,h\n" + "".join(f"{x:g},{x * x / 2!r}\n" for x in range(-30, 31)),
     "traces.csv": hertz_traces(),
     "traces_nan.csv": hertz_traces().replace("\n80.0,0.0,", "\n80.0,nan,", 1),
     "calibration_bad.json": "{not json",
@@ -217,6 +220,8 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
         else:
             path.write_bytes(content.encode("utf-8"))
     (folder / "a_file").write_text("not a folder\n")
+    os.symlink(folder / "cases.csv", folder / "cases_symlink.csv")
+    os.link(folder / "cases.csv", folder / "cases_hardlink.csv")
     (folder / "a_folder").mkdir()
     (folder / "folder.py").mkdir()
     # The law modules of `asymslip derive` that the table uses (their derivation is a case of
@@ -1098,13 +1103,78 @@ def sweep_cases() -> list[Bad]:
             "sweep: --out is the input",
             sweep("{d}/cases.csv", out="{d}/cases.csv"),
             "--out",
-            r"is also the input",
+            r"is also an input",
         ),
         Bad(
             "sweep: --out is the input by another path",
             sweep("{d}/cases.csv", out="{d}/a_folder/../cases.csv"),
             "--out",
-            r"is also the input",
+            r"is also an input",
+        ),
+        Bad(
+            "sweep: --out a symbolic link to the input",
+            sweep("{d}/cases.csv", out="{d}/cases_symlink.csv"),
+            "--out",
+            r"cases_symlink\.csv is also an input \(the cases, .*cases\.csv\)",
+        ),
+        Bad(
+            "sweep: --out a hard link of the input",
+            sweep("{d}/cases.csv", out="{d}/cases_hardlink.csv"),
+            "--out",
+            r"cases_hardlink\.csv is also an input \(the cases",
+        ),
+        Bad(
+            "sweep: --out is the table law's file",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "table",
+                "--table",
+                "{d}/hertz.csv",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/hertz.csv",
+            ),
+            "--out",
+            r"hertz\.csv is also an input \(the table law",
+        ),
+        Bad(
+            "sweep: --out is the law module",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "module",
+                "--module",
+                "{d}/tanh_law.py",
+                "--param",
+                "k=10",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/./tanh_law.py",
+            ),
+            "--out",
+            r"tanh_law\.py is also an input \(the law module",
+        ),
+        Bad(
+            "sweep: --out is the calibration",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "calibrated",
+                "--calibration",
+                "{d}/calibration.json",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/calibration.json",
+            ),
+            "--out",
+            r"calibration\.json is also an input \(the calibration",
         ),
         Bad(
             "sweep: --out in a missing folder",
@@ -1336,6 +1406,18 @@ def solve_cases() -> list[Bad]:
             r"reference solver overflows double precision",
         ),
         Bad(
+            "solve: --path inside --out, named as a file solve writes",
+            solve(*HERTZ, "--mu", "0.1", "--path", "{d}/tractions.csv", "--out", "{d}"),
+            "--out",
+            r"tractions\.csv is also an input \(the load path",
+        ),
+        Bad(
+            "solve: --profile-table inside --out, named as a file solve writes",
+            solve("--profile-table", "{d}/slip.csv", *profile, "--out", "{d}/."),
+            "--out",
+            r"slip\.csv is also an input \(the profile table",
+        ),
+        Bad(
             "solve --out under a file",
             solve(*hertz(), "--out", "{d}/a_file/solver"),
             "--out",
@@ -1404,7 +1486,13 @@ def calibrate_cases() -> list[Bad]:
             "calibrate --out is TRACES",
             ("calibrate", traces, "--out", traces),
             "--out",
-            r"is also the input",
+            r"is also an input",
+        ),
+        Bad(
+            "calibrate --out is TRACES by another path",
+            ("calibrate", traces, "--out", "{d}/a_folder/../traces.csv"),
+            "--out",
+            r"is also an input \(the traces",
         ),
         Bad(
             "calibrate --out in a missing folder",

@@ -37,24 +37,6 @@ from typing import IO, Literal
 from ..errors import InputError
 
 
-def refuse_same_file(out: str | Path, option: str, *inputs: str | Path | None) -> None:
-    """Refuse an output path that names one of the inputs (``--out cases.csv`` on cases.csv)."""
-    target = Path(out)
-    for source in inputs:
-        if source is None:
-            continue
-        source = Path(source)
-        same = target.resolve() == source.resolve()
-        if not same and target.exists() and source.exists():
-            same = os.path.samefile(target, source)
-        if same:
-            raise InputError(
-                option,
-                f"{target} is also the input: writing it would destroy the "
-                "data being read; choose another output file",
-            )
-
-
 @contextmanager
 def atomic_write(
     path: str | Path, option: str = "out", mode: Literal["wb", "w"] = "wb"

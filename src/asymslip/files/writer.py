@@ -45,7 +45,8 @@ from numpy.typing import NDArray
 
 from ..errors import InputError
 from . import arrow
-from .atomic import atomic_write, refuse_same_file
+from .atomic import atomic_write
+from .collisions import Input, Output, refuse_overwriting_inputs
 from .numbers import WIDTH, format_doubles
 from .text import Categorical, TextColumn, quote, quote_always
 
@@ -212,7 +213,7 @@ def open_table(
     schema: Sequence[tuple[str, Kind]],
     *,
     option: str = "out",
-    inputs: Sequence[str | Path | None] = (),
+    inputs: Sequence[Input | None] = (),
     engine: str | None = None,
 ) -> Iterator[TableWriter]:
     """Open a result table for writing: a context manager yielding a :class:`TableWriter`.
@@ -230,7 +231,8 @@ def open_table(
     option
         The option named in errors (bad extension, unwritable folder, missing pyarrow).
     inputs
-        Files being read: writing over one of them is refused.
+        Files being read: writing over one of them is refused
+        (:func:`~asymslip.files.collisions.refuse_overwriting_inputs`).
     engine
         For CSV: ``"pyarrow"``, ``"numpy"`` or ``None`` (pyarrow when installed).  Parquet
         always needs pyarrow.
@@ -243,7 +245,7 @@ def open_table(
     """
     path = Path(path)
     fmt = table_format(path, option)
-    refuse_same_file(path, option, *inputs)
+    refuse_overwriting_inputs(inputs, [Output(path, option)])
     if fmt == "parquet":
         arrow.require(option, "Parquet output")
         engine = "pyarrow"

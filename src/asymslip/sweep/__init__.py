@@ -43,7 +43,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..files import CaseTable, Categorical, Progress, WrittenTable, open_table, read_table
-from ..files.atomic import refuse_same_file
+from ..files.collisions import Input, Output, refuse_overwriting_inputs
 from ..files.writer import Kind, table_format
 from ..laws.base import ContactLaw
 from .columns import (
@@ -188,7 +188,8 @@ def sweep_file(
     if edge not in ("right", "left", "both"):
         raise InputError("edge", "must be 'right', 'left' or 'both'", edge)
     table_format(out, "out")
-    refuse_same_file(out, "out", cases)
+    source = Input(cases, "cases", "the cases")
+    refuse_overwriting_inputs([source], [Output(out, "out")])
     table = read_table(
         cases, required=REQUIRED_COLUMNS, numeric=("sigma1", "sigma2", "mu"), option="cases"
     )
@@ -203,7 +204,7 @@ def sweep_file(
     default_mu = None if mu is None else float(mu)
     invalid: list[tuple[int, str]] = []
     bar = Progress(len(table), stream or sys.stderr, progress)
-    with open_table(out, _schema(table.header, edge), option="out", inputs=[cases]) as writer:
+    with open_table(out, _schema(table.header, edge), option="out", inputs=[source]) as writer:
         for part in table.chunks(chunk_rows):
             values, friction, errors = _cycle_values(part, default_mu)
             result = evaluate_chunk(law, values, friction, edge, errors)
