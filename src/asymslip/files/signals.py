@@ -9,6 +9,20 @@ a process killed by it.
 
 Only the main thread can install signal handlers, and a handler the program has set itself is
 left alone; the previous handlers are restored when the write ends.
+
+Examples
+--------
+>>> import os, signal, time
+>>> from asymslip.files.signals import Terminated, terminate_cleanly
+>>> try:
+...     with terminate_cleanly():
+...         os.kill(os.getpid(), signal.SIGTERM)
+...         time.sleep(5)  # the handler raises as soon as the signal arrives
+... except Terminated as stopped:
+...     print(stopped, 128 + stopped.signum)
+terminated by SIGTERM 143
+>>> signal.getsignal(signal.SIGTERM) is signal.SIG_DFL  # restored
+True
 """
 
 from __future__ import annotations
