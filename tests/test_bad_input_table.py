@@ -206,6 +206,10 @@ FILES = {
     "def normal_edge_multiplier(a, k):\n"
     "    return numpy.sqrt(2 / a) / numpy.pi * load_slope(a, k)\n",
     "broken_law.py": "def load(a:\n",
+    # a law module in form, but its import would run code (line 2)
+    "runs_code.py": "__asymslip_law__ = {'name': 'runs', 'params': []}\nprint('ran')\n"
+    "def load(a):\n    return a\ndef load_slope(a):\n    return 1 + 0 * a\n"
+    "def normal_edge_multiplier(a):\n    return a\n",
     "law.txt": "P(a) = a**2\n",
 }
 
@@ -233,6 +237,8 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
     for name, formula, params in (
         ("cubic", "E_star*a**2 - k*a**3", "E_star k"),
         ("tanh_law", "k*tanh(a)", "k"),
+        ("selfpow", "a**a", ""),
+        ("tower", "a**a**a", ""),
     ):
         status, out, err = run(
             [
@@ -847,6 +853,24 @@ def law_cases() -> list[Bad]:
             r"not an asymslip law module",
         ),
         Bad(
+            "module file is a folder",
+            (*module, "{d}/a_folder", *cycle()),
+            "--module",
+            r"is a folder, not a law module file",
+        ),
+        Bad(
+            "module file whose import would run code",
+            (*module, "{d}/runs_code.py", *cycle()),
+            "--module",
+            r"not an asymslip law module: line 2 evaluates an expression.*nothing of it was run",
+        ),
+        Bad(
+            "a**a below its rising branch",
+            (*module, "{d}/selfpow.py", *cycle(P1="0.5", P2="0.6", Q2="0.01")),
+            "--P1",
+            r"no contact half-width of the selfpow law .* loads above 0\.692201 only",
+        ),
+        Bad(
             "module file with a syntax error",
             (*module, "{d}/broken_law.py", *cycle()),
             "--module",
@@ -1012,6 +1036,24 @@ def derive_cases() -> list[Bad]:
             derive("k*a**2", out="{d}/a_file/law.py"),
             "--out",
             r"cannot write",
+        ),
+        Bad(
+            "derive --out numpy.py (would shadow NumPy)",
+            derive("k*a**2", name="numpy", out="{d}/numpy.py"),
+            "--out",
+            r"numpy\.py would shadow an installed module .*numpy.*choose another file name",
+        ),
+        Bad(
+            "derive --out json.py (would shadow the standard library)",
+            derive("k*a**2", out="{d}/json.py"),
+            "--out",
+            r"json\.py would shadow a module of Python's standard library",
+        ),
+        Bad(
+            "derive --out asymslip.py (would shadow asymslip)",
+            derive("k*a**2", out="{d}/asymslip.py"),
+            "--out",
+            r"asymslip\.py would shadow asymslip's own package",
         ),
         Bad("derive a parameter named a", derive("k*a**2", "a k"), "--params", r"\ba\b"),
         Bad("derive a parameter twice", derive("k*a**2", "k k"), "--params", r"distinct|twice"),
@@ -1554,11 +1596,13 @@ def solve_increasing(
 
 
 def module_law_check(
-    law: Callable[[float], float], high: float, P1: float, P2: float
+    law: Callable[[float], float], high: float, P1: float, P2: float, low: float = 0.0
 ) -> Callable[..., None]:
+    """a1, a2 against bisection of the law on (low, high), where it increases."""
+
     def check(result: dict, folder: Path) -> None:
         for key, P in (("a1", P1), ("a2", P2)):
-            assert result[key] == pytest.approx(solve_increasing(law, P, 0.0, high), rel=1e-12)
+            assert result[key] == pytest.approx(solve_increasing(law, P, low, high), rel=1e-12)
         assert 0 < result["b"] <= result["a2"]
 
     return check
@@ -1858,6 +1902,22 @@ def valid_cases() -> list[Valid]:
             ),
             module_law_check(lambda a: 10 * math.tanh(a), 50.0, 1.0, 1.05),
         ),
+        Valid(
+            "a**a module law on its rising branch",
+            (*module, "{d}/selfpow.py", *cycle(P1="2", P2="2.1", Q2="0.01"), "--json"),
+            module_law_check(lambda a: a**a, 3.0, 2.0, 2.1, low=1 / math.e),
+        ),
+        Valid(
+            "a**a**a module law at P = 1e300",
+            (*module, "{d}/tower.py", *cycle(P1="1e300", P2="1.05e300", Q2="1e298"), "--json"),
+            module_law_check(
+                lambda a: math.exp(math.log(a) * a**a) if a < 4.27 else math.inf,
+                4.3,
+                1e300,
+                1.05e300,
+                low=1.0,
+            ),
+        ),
         # tractions and slip: far from the edge is reported, not refused
         Valid(
             "traction --x 0.1 -1e-2",
@@ -1960,6 +2020,11 @@ def valid_cases() -> list[Valid]:
                 "{d}/minus.py",
             ),
             derive_check("minus", r"positive and increasing for a > 1/k"),
+        ),
+        Valid(
+            "derive a tower of powers",
+            ("derive", "--P-of-a", "a**a**a**a", "--name", "tower4", "--out", "{d}/tower4.py"),
+            derive_check("tower4", r"was not established symbolically"),
         ),
         Valid(
             "derive a long sum",

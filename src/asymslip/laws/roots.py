@@ -164,7 +164,8 @@ def newton_from(
             value, gradient = both(current)
             step = (value - (goal if index is None else goal[index])) / gradient
             new = current - step
-            ok = np.isfinite(new) & (new > 0)
+            # An overflowing slope gives a zero step far from the root: not a converged one.
+            ok = np.isfinite(new) & (new > 0) & np.isfinite(gradient)
             size = np.abs(step)
             ulp = np.spacing(new)
             last = previous if index is None else previous[index]
@@ -276,13 +277,21 @@ def _refine(
             # A step below two units in the last place ends the iteration if the slope is f'(x):
             # then |x - root| ~ |r / f'(x)| is that small.  A secant through a far point can be
             # much too steep, so it counts only once its two points are close.
-            converged = np.isfinite(newton) & (np.abs(newton - x) <= 2 * np.spacing(np.abs(x)))
+            # An overflowing slope (inf) makes the step 0 without x being near the root: only
+            # a finite slope may end the iteration or take a Newton step.
+            finite_slope = np.isfinite(gradient)
+            converged = (
+                np.isfinite(newton)
+                & finite_slope
+                & (np.abs(newton - x) <= 2 * np.spacing(np.abs(x)))
+            )
             if slope is None:
                 converged &= np.abs(x - x_previous) <= 1e-6 * np.abs(x)
             # Otherwise Newton only if it lands strictly inside the bracket and at most halves the
             # step before last; else bisect, geometrically while the bracket is wide (rtsafe).
             trusted = (
                 np.isfinite(newton)
+                & finite_slope
                 & (newton > lo)
                 & (newton < hi)
                 & (np.abs(newton - x) <= 0.5 * np.abs(step_before_last))
