@@ -173,6 +173,7 @@ FILES = {
     "cases_comments.csv": "# no header\n\n",
     "cases_no_Q2.csv": "P1,Q1,P2\n100,0,105\n",
     "cases_header_only.csv": "P1,Q1,P2,Q2\n",
+    "cases_field_counts.csv": "P1,Q1,P2,Q2\n100,0,105\n1,000,0,105,1\n",
     "cases_binary.csv": b"P1,Q1,P2,Q2\n100,0,105,1\n100,0,\xff05,1\n",
     "cases_clash.csv": "P1,Q1,P2,Q2,b\n100,0,105,1,3\n",
     "cases_wide.csv": "P1,Q1,P2,Q2\n100,-9,1e4,999\n100,0,105,1\n",
@@ -2175,6 +2176,23 @@ ROW_ERRORS = [
             8: r"^Q1: missing",
         },
         (3, 9),
+    ),
+    RowErrors(
+        "sweep: no row with the header's field count (pyarrow read it as an empty file)",
+        (
+            "sweep",
+            "{d}/cases_field_counts.csv",
+            *HERTZ,
+            "--mu",
+            "0.1",
+            "--out",
+            "{d}/field_counts.csv",
+        ),
+        "field_counts.csv",
+        {
+            2: r"^line has 3 fields, the header has 4: '100,0,105'",
+            3: r"^line has 5 fields, the header has 4: '1,000,0,105,1'",
+        },
     ),
     RowErrors(
         "sweep: bad values in the mu column",
