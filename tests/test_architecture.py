@@ -17,7 +17,7 @@ LAYERS = (
     {"cycle", "codegen", "edge_flags", "edge_estimates"},
     {"single_cycle", "slip_zones", "solver"},
     {"tractions", "sweep", "calibration"},
-    {"figures"},
+    {"figures", "match"},
     {"cli"},
     {"__main__"},
 )
