@@ -227,7 +227,8 @@ def format_answer(result: MatchResult) -> str:
         lines.append(
             f"  largest difference over the slip zone: shear change "
             f"{check.shear_change_difference:.3g}, slip {check.slip_difference:.3g} (relative "
-            f"to the prototype's largest, {check.compared_points} points)"
+            f"to the prototype's largest, {check.compared_points} points; the edge expansions' "
+            f"next terms reach {check.expansion_allowance:.3g} there)"
         )
         lines.append(f"  stress amplitude: {check.stress}")
     lines.append("Warnings: " + ("none" if not result.warnings else ""))

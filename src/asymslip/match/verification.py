@@ -7,8 +7,11 @@ the rig are interpolated (linearly) onto the prototype's element centres in its 
 the largest differences reported, relative to the prototype's largest |q2 - q1| and |slip|
 there; the solvers' slip-zone widths a1 - b are compared against the match's stated accuracy
 plus two elements of each solve (plus, for an approximate match, the asymptotic difference of
-the two widths that the mismatch causes).  The near-edge stress amplitude is not compared: the
-stress field (``asymslip.stress``) is not part of this package yet.
+the two widths that the mismatch causes).  Where the asymptotic match is exact the two
+solutions still differ by the next terms of the edge expansions (4), (5), of relative size up to
+(a2 - b)/a1 at the far end of the slip zone: the ``expansion_allowance``, the larger of the two
+contacts'.  The near-edge stress amplitude is not compared: the stress field
+(``asymslip.stress``) is not part of this package yet.
 """
 
 from __future__ import annotations
@@ -62,6 +65,11 @@ class SolvedEdge:
     q_diff: FloatArray  # q2 - q1 at the centres
     slip: FloatArray  # slip on loading (state 1 to 2) at the centres
 
+    @property
+    def in_slip_zone(self) -> NDArray[np.bool_]:
+        """The element centres in the slip zone at state 2 (0 < s < a2 - b)."""
+        return (self.s > 0) & (self.s < self.reach)
+
     def to_dict(self) -> dict[str, float | int]:
         return {
             "slip_zone_width": self.width,
@@ -83,6 +91,7 @@ class Verification:
     shear_change_difference: float
     slip_difference: float
     compared_points: int
+    expansion_allowance: float
     stress: str = STRESS_NOTE
 
     @property
@@ -99,11 +108,12 @@ class Verification:
             "shear_change_difference": self.shear_change_difference,
             "slip_difference": self.slip_difference,
             "compared_points": self.compared_points,
+            "expansion_allowance": self.expansion_allowance,
             "stress_amplitude": self.stress,
         }
 
 
-def _solve_edge(
+def solve_edge(
     contact: Any,
     loading: Any,
     mu: float,
@@ -136,10 +146,10 @@ def _solve_edge(
     )
 
 
-def _largest_difference(
-    prototype: SolvedEdge, rig: SolvedEdge, values: str, inside: NDArray[np.bool_]
-) -> float:
-    """max |rig - prototype| over the prototype's slip zone / max |prototype| there."""
+def largest_difference(prototype: SolvedEdge, rig: SolvedEdge, values: str) -> float:
+    """max |rig - prototype| over the prototype's slip zone / max |prototype| there, the rig's
+    ``values`` ("q_diff" or "slip") interpolated linearly in s onto the prototype's centres."""
+    inside = prototype.in_slip_zone
     order = np.argsort(rig.s)
     mine = getattr(prototype, values)[inside]
     theirs = np.interp(prototype.s[inside], rig.s[order], getattr(rig, values)[order])
@@ -179,7 +189,7 @@ def verify(
             )
         prototype = SolverProblem(law, result.prototype_cycle)
     side = result.edge
-    solved = _solve_edge(
+    solved = solve_edge(
         prototype.contact,
         prototype.loading,
         result.prototype_state.mu,
@@ -192,20 +202,35 @@ def verify(
     reach = (1 + DOMAIN_MARGIN) * a2
     # Elements of the prototype's size, but at least the solver's minimum.
     rig_elements = max(64, math.ceil(2 * reach / solved.element))
-    solved_rig = _solve_edge(
+    solved_rig = solve_edge(
         result.law, result.cycle, result.mu, side, rig_elements, None, (-reach, reach)
     )
-    inside = (solved.s > 0) & (solved.s < solved.reach)
     expected = abs(result.rig_state.width - result.prototype_state.width)
     return Verification(
         prototype=solved,
         rig=solved_rig,
         width_difference=solved_rig.width - solved.width,
         width_allowed=result.accuracy + expected + 2 * solved.element + 2 * solved_rig.element,
-        shear_change_difference=_largest_difference(solved, solved_rig, "q_diff", inside),
-        slip_difference=_largest_difference(solved, solved_rig, "slip", inside),
-        compared_points=int(np.count_nonzero(inside)),
+        shear_change_difference=largest_difference(solved, solved_rig, "q_diff"),
+        slip_difference=largest_difference(solved, solved_rig, "slip"),
+        compared_points=int(np.count_nonzero(solved.in_slip_zone)),
+        expansion_allowance=max(
+            _slip_zone_reach(result.prototype), _slip_zone_reach(result.rig_result)
+        ),
     )
 
 
-__all__ = ["SolverProblem", "Verification", "verify"]
+def _slip_zone_reach(edge: Any) -> float:
+    """(a2 - b)/a1: the relative size of the first neglected terms of the edge expansions (4),
+    (5) at the far end of the slip zone (for Hertz, (a - x)/(4a) of it)."""
+    return (float(edge.a2) - float(edge.b)) / float(edge.a1)
+
+
+__all__ = [
+    "SolvedEdge",
+    "SolverProblem",
+    "Verification",
+    "largest_difference",
+    "solve_edge",
+    "verify",
+]
