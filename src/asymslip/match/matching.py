@@ -17,6 +17,10 @@ from .solutions import RigSolution, closest, exact_flat_rounded, exact_hertz
 #: ``slip_zone`` reproduces every quantity to this relative accuracy.
 EXACT = 1e-9
 
+#: Largest edge-state mismatch of an answer: beyond it (an order-one change of a multiplier)
+#: no rig within the limits reproduces the edge, and the closest is refused, not offered.
+FARTHEST = 0.5
+
 Edge = Literal["right", "left"]
 
 
@@ -30,6 +34,8 @@ def _scalar(name: str, value: object) -> float:
 def _prototype_state(
     law: object, cycle: LoadCycle, mu: float, edge: Edge
 ) -> tuple[SlipZoneResult, EdgeState]:
+    if cycle.shape != ():
+        raise InputError("cycle", "match takes one cycle (numbers, not arrays)")
     result = slip_zone(law, cycle, mu, edge=edge)  # type: ignore[arg-type]
     if result.slip_direction == 0:
         raise InputError(
@@ -215,6 +221,14 @@ def match(
         start, solution = exact, (None if reasons else exact)
     if solution is None:
         solution = closest(rig, target, start, a1)
+        distance = solution.state.distance(target)
+        if not distance <= FARTHEST:
+            raise InputError(
+                "rig",
+                f"no rig within its limits ({rig.limits_text()}) comes near this edge: the "
+                f"closest differs by an edge-state mismatch of {distance:.3g} (more than "
+                f"{FARTHEST:g}); " + "; ".join(reasons),
+            )
     rig_law = rig.law(solution.geometry)
     cycle_rig, margin = rig_cycle(solution, mu_rig, rig, edge)
     try:
