@@ -72,7 +72,9 @@ def test_a_radius_from_a_list_is_one_of_the_list():
     result = match(BLADE, BLADE_CYCLE, MU, rig)
     assert result.geometry.R in (5.0, 20.0) and result.order == "approximate"
     assert any("not available" in text for text in result.unmatched)
-    others = match(BLADE, BLADE_CYCLE, MU, Rig("hertz", 1.0, radius=Available.listed("rig_R", [5.0])))
+    others = match(
+        BLADE, BLADE_CYCLE, MU, Rig("hertz", 1.0, radius=Available.listed("rig_R", [5.0]))
+    )
     assert result.measure <= others.measure
 
 

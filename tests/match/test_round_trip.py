@@ -119,5 +119,7 @@ def test_the_rig_cycle_is_as_far_from_gross_sliding_at_both_states():
     for shift in np.linspace(-0.01, 0.01, 9):
         if shift == 0:
             continue
-        other = min(1 - abs(float(Q) + shift) / (MU * float(P)) for P, Q in ((c.P1, c.Q1), (c.P2, c.Q2)))
+        other = min(
+            1 - abs(float(Q) + shift) / (MU * float(P)) for P, Q in ((c.P1, c.Q1), (c.P2, c.Q2))
+        )
         assert other < result.margin

@@ -3,8 +3,9 @@
 The prototype and the rig are solved to their steady states (:func:`asymslip.solver.solve`),
 the rig on elements of the prototype's size.  In the edge's own coordinate s (distance from the
 state-2 edge, each solver's own) the shear-traction change q2 - q1 and the slip on loading of
-the rig are interpolated (linearly) onto the prototype's element centres in its slip zone and
-the largest differences reported, relative to the prototype's largest |q2 - q1| and |slip|
+the rig are interpolated (linearly) onto the prototype's element centres in its slip zone (less
+one element at each end, where an edge or a stick boundary falls inside an element) and the
+largest differences reported, relative to the prototype's largest |q2 - q1| and |slip|
 there; the solvers' slip-zone widths a1 - b are compared against the match's stated accuracy
 plus two elements of each solve (plus, for an approximate match, the asymptotic difference of
 the two widths that the mismatch causes).  Where the asymptotic match is exact the two
@@ -64,11 +65,6 @@ class SolvedEdge:
     s: FloatArray  # distance from the state-2 edge of each element centre
     q_diff: FloatArray  # q2 - q1 at the centres
     slip: FloatArray  # slip on loading (state 1 to 2) at the centres
-
-    @property
-    def in_slip_zone(self) -> NDArray[np.bool_]:
-        """The element centres in the slip zone at state 2 (0 < s < a2 - b)."""
-        return (self.s > 0) & (self.s < self.reach)
 
     def to_dict(self) -> dict[str, float | int]:
         return {
@@ -146,10 +142,19 @@ def solve_edge(
     )
 
 
+def compared(prototype: SolvedEdge, rig: SolvedEdge) -> NDArray[np.bool_]:
+    """The prototype's element centres compared: its slip zone less one element (the larger of
+    the two solves') at each end, where the contact edge and the stick boundary each fall
+    somewhere inside an element and the element values there are not comparable."""
+    trim = max(prototype.element, rig.element)
+    return (prototype.s > trim) & (prototype.s < prototype.reach - trim)
+
+
 def largest_difference(prototype: SolvedEdge, rig: SolvedEdge, values: str) -> float:
-    """max |rig - prototype| over the prototype's slip zone / max |prototype| there, the rig's
-    ``values`` ("q_diff" or "slip") interpolated linearly in s onto the prototype's centres."""
-    inside = prototype.in_slip_zone
+    """max |rig - prototype| over the compared centres (:func:`compared`) / max |prototype|
+    there, the rig's ``values`` ("q_diff" or "slip") interpolated linearly in s onto the
+    prototype's centres."""
+    inside = compared(prototype, rig)
     order = np.argsort(rig.s)
     mine = getattr(prototype, values)[inside]
     theirs = np.interp(prototype.s[inside], rig.s[order], getattr(rig, values)[order])
@@ -213,7 +218,7 @@ def verify(
         width_allowed=result.accuracy + expected + 2 * solved.element + 2 * solved_rig.element,
         shear_change_difference=largest_difference(solved, solved_rig, "q_diff"),
         slip_difference=largest_difference(solved, solved_rig, "slip"),
-        compared_points=int(np.count_nonzero(solved.in_slip_zone)),
+        compared_points=int(np.count_nonzero(compared(solved, solved_rig))),
         expansion_allowance=max(
             _slip_zone_reach(result.prototype), _slip_zone_reach(result.rig_result)
         ),
