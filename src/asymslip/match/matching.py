@@ -126,7 +126,8 @@ def rig_cycle(solution: RigSolution, mu: float, rig: Rig, edge: Edge) -> tuple[L
             f"|Q2 - Q1| = {abs(dQ):.6g} is at least mu (P1 + P2) = {mu * (P1 + P2):.6g} "
             "(or the rig's |Q| limit leaves no room)",
         )
-    return LoadCycle(P1, Q1, P2, Q2, -dsigma / 2, dsigma / 2), margin
+    # + 0.0: no tension is 0, not -0.
+    return LoadCycle(P1, Q1, P2, Q2, -dsigma / 2 + 0.0, dsigma / 2 + 0.0), margin
 
 
 def _unbounded(rig: Rig) -> bool:

@@ -45,9 +45,11 @@ class Available:
     def between(cls, parameter: str, low: float, high: float, minimum: float = 0.0) -> Available:
         """A range low <= value <= high (high may be infinite)."""
         if not (math.isfinite(low) and low >= minimum):
-            raise InputError(parameter, f"the lower end must be finite and >= {minimum:g}", low)
+            shown = low if math.isfinite(low) else None
+            raise InputError(parameter, f"the lower end must be finite and >= {minimum:g}", shown)
         if math.isnan(high) or not high >= low:
-            raise InputError(parameter, "the upper end must be >= the lower end", high)
+            shown = high if math.isfinite(high) else None
+            raise InputError(parameter, "the upper end must be >= the lower end", shown)
         return cls(low=float(low), high=float(high))
 
     @property
@@ -129,7 +131,8 @@ class Rig:
         for name in ("max_P", "max_Q", "max_sigma"):
             value = float(getattr(self, name))
             if math.isnan(value) or not value > 0:
-                raise InputError(f"rig_{name}", "must be > 0 (inf: no limit)", value)
+                shown = value if math.isfinite(value) else None  # never echo nan or -inf
+                raise InputError(f"rig_{name}", "must be > 0 (leave it out for no limit)", shown)
             object.__setattr__(self, name, value)
         if self.radius.values is None and not self.radius.high > 0:
             raise InputError("rig_R", "the range must include a radius > 0", self.radius.high)
