@@ -22,7 +22,7 @@ def test_a_hertz_pad_on_a_rounded_flat_at_1015_differs_by_about_1_5_percent_of_t
     result = match(law, cycle, MU, Rig("hertz", 1.0))
     assert result.exact and result.order == "leading"
     difference = _headline_difference(result)
-    assert 0.010 < difference < 0.020  # measured +0.0137
+    assert 0.010 < difference < 0.020  # measured +0.0140
     assert float(result.rig_result.a1) < 0.35 * float(result.prototype.a1)
     growth_rig = float(result.rig_result.a2) / float(result.rig_result.a1) - 1
     assert growth_rig > 3 * 0.015
