@@ -10,6 +10,19 @@ else the closest by the edge-state mismatch of :mod:`.edge_state` -- and reports
 quantity of both contacts side by side with the validity measures (24)-(27), the slip-zone
 widths and the match's stated accuracy.  :func:`verify` solves both contacts with the reference
 solver and compares the near-edge shear change and slip in the edge's own coordinate.
+
+Examples
+--------
+A blade-root-like rounded flat with bulk tension, reproduced by a cylindrical pad:
+
+>>> from asymslip import FlatRoundedLaw, LoadCycle
+>>> from asymslip.match import Rig, match
+>>> blade = FlatRoundedLaw(c=1.0, R=10.0, E_star=1.0)
+>>> result = match(blade, LoadCycle(0.5, 0.0, 0.52, 0.04, 0.0, 0.002), 0.3, Rig("hertz", 1.0))
+>>> result.exact, result.order, round(result.geometry.R, 3)
+(True, 'leading', 10.147)
+>>> sorted(result.to_dict()["matched"])
+['L_I1', 'L_I2', 'L_II1', 'L_II2', 'a2_minus_a1', 'slip_zone_width']
 """
 
 from .edge_state import QUANTITIES, EdgeState

@@ -16,6 +16,15 @@ mismatches,
 
 It is zero exactly when the edges coincide to leading order; 0.01 means about a 1 % change of
 one of them.
+
+Examples
+--------
+>>> from asymslip.match import EdgeState
+>>> edge = EdgeState(mu=0.3, L_I1=2.0, L_I2=2.1, L_II1=0.7, L_II2=0.9, da=0.05)
+>>> edge.direction, round(edge.width, 6), round(edge.peak_shear_change, 6)
+(1.0, 0.013107, 0.226954)
+>>> round(EdgeState(0.3, 2.0, 2.1, 0.7, 0.9, 0.051).distance(edge), 6)  # ln(51/50)
+0.019803
 """
 
 from __future__ import annotations

@@ -191,7 +191,9 @@ def match(
     >>> blade = FlatRoundedLaw(c=1.0, R=10.0, E_star=1.0)
     >>> result = match(blade, LoadCycle(0.5, 0.0, 0.52, 0.04, 0.0, 0.002), 0.3, Rig("hertz", 1.0))
     >>> result.exact, result.order, round(result.geometry.R, 3)
-    (True, 'leading', 4.402)
+    (True, 'leading', 10.147)
+    >>> round(float(result.cycle.P1), 4), round(float(result.cycle.P2), 4)
+    (0.3487, 0.3649)
     """
     if edge not in ("right", "left"):
         raise InputError("edge", "must be 'right' or 'left'", edge)

@@ -1,4 +1,11 @@
-"""What a match answers: the rig and its cycle, the quantities side by side, how far to trust it."""
+"""What a match answers: the rig and its cycle, the quantities side by side, how far to trust it.
+
+Examples
+--------
+>>> from asymslip.match import Pair
+>>> round(Pair(prototype=0.2, rig=0.21).relative_difference, 12)
+0.05
+"""
 
 from __future__ import annotations
 

@@ -1,4 +1,14 @@
-"""The laboratory rig: its family of pads, its material and what it can apply."""
+"""The laboratory rig: its family of pads, its material and what it can apply.
+
+Examples
+--------
+>>> from asymslip.match import Available, Rig
+>>> rig = Rig("hertz", 1.0, radius=Available.listed("rig_R", [5, 10, 20]), max_P=100.0)
+>>> rig.limits_text()
+'R one of 5, 10, 20; P <= 100'
+>>> rig.radius.clip(12.0)
+10.0
+"""
 
 from __future__ import annotations
 

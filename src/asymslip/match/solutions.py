@@ -9,6 +9,16 @@ Anything the rig's limits rule out (a radius from a list, a load limit, no bulk 
 that falls along the prototype's path) is minimised: the loads and free dimensions by bounded
 least squares (SciPy, the ``special`` extra) over the mismatch, the path slopes, for each pad and
 loads, by linear least squares within the shear-force and tension limits.
+
+Examples
+--------
+The one cylinder (LT3) and path slopes (LT4) of an edge state:
+
+>>> from asymslip.match import EdgeState, Rig
+>>> from asymslip.match.solutions import exact_hertz
+>>> pad = exact_hertz(Rig("hertz", 1.0), EdgeState(0.3, 2.0, 2.1, 0.7, 0.9, 0.05))
+>>> round(pad.geometry.R, 6), round(pad.a1, 6), round(pad.lam, 6), round(pad.eta, 6)
+(0.246932, 0.487805, -0.416551, 2.000805)
 """
 
 from __future__ import annotations

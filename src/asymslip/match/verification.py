@@ -13,6 +13,16 @@ solutions still differ by the next terms of the edge expansions (4), (5), of rel
 (a2 - b)/a1 at the far end of the slip zone: the ``expansion_allowance``, the larger of the two
 contacts'.  The near-edge stress amplitude is not compared: the stress field
 (``asymslip.stress``) is not part of this package yet.
+
+Examples
+--------
+>>> from asymslip import FlatRoundedLaw, LoadCycle
+>>> from asymslip.match import Rig, match, verify
+>>> blade = FlatRoundedLaw(c=1.0, R=10.0, E_star=1.0)
+>>> result = match(blade, LoadCycle(0.5, 0.0, 0.52, 0.04, 0.0, 0.002), 0.3, Rig("hertz", 1.0))
+>>> check = verify(result, elements=300)
+>>> check.widths_agree, check.prototype.elements, check.rig.elements
+(True, 300, 193)
 """
 
 from __future__ import annotations
