@@ -154,3 +154,15 @@ def test_arrays_of_cycles_are_refused():
     cycle = LoadCycle(np.array([0.5, 0.5]), 0.0, np.array([0.52, 0.53]), 0.04)
     with pytest.raises(InputError):
         match(BLADE, cycle, MU, Rig("hertz", 1.0))
+
+
+def test_a_rounded_flat_rig_without_tension_gives_the_closest_rounded_flat():
+    from tests.match.cases import POWER, POWER_CYCLE
+
+    result = match(POWER, POWER_CYCLE, MU, Rig("flat-rounded", 1.0, tension=False))
+    assert result.order == "approximate" and result.cycle.sigma1 == result.cycle.sigma2 == 0.0
+    assert result.geometry.c > 0 and 0 < result.measure < 0.01
+    assert any("bulk tension" in text for text in result.unmatched)
+    assert result.measure == pytest.approx(
+        _measure_by_hand(result.rig_state, result.prototype_state), rel=1e-12
+    )

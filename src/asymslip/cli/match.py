@@ -32,7 +32,7 @@ OPTIONS = {
 }
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = commands.add_parser(
         "match",
         help="the laboratory rig cycle whose contact edge reproduces a prototype's",
@@ -190,8 +190,8 @@ def format_answer(result: MatchResult) -> str:
         for key, value in rig.items()
     )
     lines = [f"Rig: {pad}", f"Cycle (edge {result.edge}):"]
-    for key, value in data["cycle"].items():  # type: ignore[union-attr]
-        lines.append(f"  {key:<8} {_number(value)}")
+    for key in ("P1", "Q1", "sigma1", "P2", "Q2", "sigma2"):
+        lines.append(f"  {key:<8} {_number(float(getattr(result.cycle, key)))}")
     lines.append(
         f"Match: {result.order}{' (exact)' if result.exact else ''}; stated accuracy "
         f"of the slip-zone width {result.accuracy:.3g}; edge-state mismatch "

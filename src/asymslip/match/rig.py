@@ -18,8 +18,9 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from ..errors import InputError, as_float_array
-from ..laws import FlatRoundedLaw, HertzLaw
 from ..laws.base import ContactLaw
+from ..laws.flat_rounded import FlatRoundedLaw
+from ..laws.hertz import HertzLaw
 
 Family = Literal["hertz", "flat-rounded"]
 FAMILIES: tuple[Family, ...] = ("hertz", "flat-rounded")

@@ -285,10 +285,12 @@ def closest(
     best_distance = math.inf
     for fixed, free in _geometries(rig):
 
-        def unpack(x: np.ndarray, fixed: Geometry = fixed, free: list[int] = free) -> tuple:
+        def unpack(
+            x: np.ndarray, fixed: Geometry = fixed, free: list[int] = free
+        ) -> tuple[Geometry, float, float]:
             values = [fixed.R, fixed.c]
             for k, index in zip(free, range(len(free)), strict=True):
-                values[k] = math.exp(x[index]) if k == 0 else x[index]
+                values[k] = math.exp(x[index]) if k == 0 else float(x[index])
             P2 = math.exp(x[len(free)])
             growth = math.exp(x[len(free) + 1])  # dP/P1
             P1 = P2 / (1 + growth)
