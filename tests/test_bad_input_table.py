@@ -1343,7 +1343,7 @@ def match_cases() -> list[Bad]:
             "match --verify-profile without --verify-E-star",
             match("--rig", "hertz", "--verify", "--verify-profile", "x**2/2"),
             "--verify-E-star",
-            r"is required with --verify-profile",
+            r"is required with a --verify profile",
         ),
         Bad(
             "match --elements 10 --verify",

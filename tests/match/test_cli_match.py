@@ -125,3 +125,34 @@ def test_a_calibrated_prototype_is_taken_as_slip_zone_takes_it(tmp_path: Path):
     assert relative(data["rig"]["R"], exact["rig"]["R"]) < 0.01
     status, _, err = run("match", *calibrated, "--rig", "hertz", "--rig-E-star", "1", "--verify")
     assert status == 2 and "--verify-profile" in err
+
+
+@pytest.mark.slow
+def test_a_calibrated_prototype_is_verified_on_its_tabulated_profile(tmp_path: Path):
+    x = np.linspace(-4.0, 4.0, 801)
+    rows = ["P,x,p"]
+    for P in (0.46, 0.48, 0.5, 0.52, 0.54, 0.56):
+        pressure = BLADE.pressure(x, P)
+        rows += [f"{P!r},{float(a)!r},{float(b)!r}" for a, b in zip(x, pressure, strict=True)]
+    (tmp_path / "traces.csv").write_text("\n".join(rows) + "\n")
+    assert (
+        run("calibrate", str(tmp_path / "traces.csv"), "--out", str(tmp_path / "cal.json"))[0] == 0
+    )
+    fine = np.linspace(-4.0, 4.0, 4001)
+    gap = BLADE.profile(fine)  # the rounded flat's own gap, as a drawing would give it
+    table = "\n".join(f"{float(a)!r},{float(b)!r}" for a, b in zip(fine, gap, strict=True))
+    (tmp_path / "profile.csv").write_text("x,h\n" + table + "\n")
+    data = run_json(
+        "match",
+        "--law",
+        "calibrated",
+        "--calibration",
+        str(tmp_path / "cal.json"),
+        *"--mu 0.3 --P1 0.5 --Q1 0 --P2 0.52 --Q2 0.04 --sigma2 0.002".split(),
+        *"--rig hertz --rig-E-star 1 --verify --verify-E-star 1 --elements 1000".split(),
+        "--verify-profile-table",
+        str(tmp_path / "profile.csv"),
+    )
+    check = data["verification"]
+    assert check["widths_agree"] is True and check["prototype"]["elements"] == 1000
+    assert check["shear_change_difference"] < check["expansion_allowance"]

@@ -29,6 +29,10 @@ OPTIONS = {
     "verify_E_star": "--verify-E-star",
     "verify_path": "--verify-path",
     "verify_param": "--verify-param",
+    "verify_profile_table": "--verify-profile-table",
+    # The solver's profile errors name its own parameter; here it was set by these options.
+    "profile": "--verify-profile",
+    "profile_table": "--verify-profile-table",
 }
 
 
@@ -113,6 +117,13 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
         "calibrated); parameters with --verify-param",
     )
     check.add_argument("--verify-param", dest="verify_param", action="append", metavar="NAME=VALUE")
+    check.add_argument(
+        "--verify-profile-table",
+        dest="verify_profile_table",
+        type=Path,
+        metavar="FILE.csv",
+        help="the prototype's gap h(x) tabulated (columns x, h), in place of --verify-profile",
+    )
     check.add_argument("--verify-E-star", dest="verify_E_star", type=number)
     check.add_argument(
         "--verify-path",
@@ -158,20 +169,27 @@ def _rig(args: argparse.Namespace, law: object) -> Rig:
 
 def _prototype_problem(args: argparse.Namespace, law: object) -> SolverProblem | None:
     """The prototype for the solver: None (the law's own profile) or the given profile."""
-    from ..solver import ExpressionProfile, LoadPath
+    from ..solver import ExpressionProfile, LoadPath, TableProfile
 
     loading = LoadPath.from_csv(args.verify_path) if args.verify_path is not None else None
-    if args.verify_profile is None:
+    given = [args.verify_profile is not None, args.verify_profile_table is not None]
+    if all(given):
+        raise InputError("verify_profile", "give either it or --verify-profile-table, not both")
+    if not any(given):
         if not hasattr(law, "profile"):
             raise InputError(
                 "verify_profile",
-                f"is required with --verify: the {args.law} law has no profile for the solver",
+                f"is required with --verify: the {args.law} law has no profile for the solver "
+                "(or give --verify-profile-table)",
             )
         return None if loading is None else SolverProblem(law, loading)
     if args.verify_E_star is None:
-        raise InputError("verify_E_star", "is required with --verify-profile")
-    parameters = parse_assignments("verify_param", args.verify_param)
-    profile = ExpressionProfile(args.verify_profile, parameters)
+        raise InputError("verify_E_star", "is required with a --verify profile")
+    if args.verify_profile is not None:
+        parameters = parse_assignments("verify_param", args.verify_param)
+        profile: object = ExpressionProfile(args.verify_profile, parameters)
+    else:
+        profile = TableProfile.from_csv(args.verify_profile_table)
     cycle = loading if loading is not None else build_cycle(args)
     return SolverProblem(profile, cycle, args.verify_E_star)
 
