@@ -46,6 +46,9 @@ CONDITIONING_EXCEPTIONS = {
     "relative_slip_zone_measure": "|a1 - b|/a1, proportional to lam + pi eta a2/4 - mu",
     "hertz slip_zone_width, end to end from (P1, dP)": "a1 - b, as slip_zone_width",
     "slip_zone_growth_measure": "proportional to |1 - lam/mu - pi eta a1/(4 mu)|",
+    "slip_zone_growth_measure_from_multipliers": "proportional to |1 - L_II1/(mu L_I1)|, as "
+    "slip_zone_growth_measure",
+    "slip_zone_width_second_order_dimensionless": "as slip_zone_width_second_order",
     "slip_zone_width_first_order": "proportional to lam/mu + pi eta a1/(4 mu) - 1",
     "hertz_slip_zone_width_first_order": "proportional to lam/mu + pi eta a1/(4 mu) - 1",
     "corrective_stick_slip_zone_width": "dK_II/(mu L_I) - da/2: the two terms cancel as the "

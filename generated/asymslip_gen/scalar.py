@@ -92,6 +92,7 @@ __all__ = [
     "slip_zone_width_second_coefficient",
     "paper_stick_boundary_error",
     "slip_zone_width_second_order_from_multiplier",
+    "slip_zone_width_second_order_dimensionless",
     "paper_stick_boundary_error_from_multiplier",
     "slip_on_loading",
     "gap_opening_influence",
@@ -107,6 +108,8 @@ __all__ = [
     "multiplier_growth_measure",
     "slip_zone_growth_measure",
     "stick_ratio_first_order",
+    "stick_ratio_first_order_from_multipliers",
+    "slip_zone_growth_measure_from_multipliers",
     "slip_zone_width_first_order",
 ]
 
@@ -2613,6 +2616,91 @@ def slip_zone_width_second_order_from_multiplier(
     )
 
 
+def slip_zone_width_second_order_dimensionless(
+    lam_mu: float,
+    eta_a1_mu: float,
+    growth: float,
+    multiplier: float,
+    multiplier_slope: float,
+    other_edge: float,
+) -> float:
+    """(a1 - b)/a1 to second order, in dimensionless groups that cannot overflow.
+
+    slip_zone_width_second_order_from_multiplier divided by a1, written in lam/mu, eta a1/mu,
+    a'(P1) dP/a1, L_I1 a1^(3/2)/dP and L_I'(P1) a1^(3/2) (the width is homogeneous of degree one
+    in length and zero in load, and depends on lam, eta only through lam/mu, eta/mu): the same
+    digits at ordinary values, and no overflow of dimensional terms at loads of 1e300 or mu =
+    1e-300.  One value at a time, as
+    ``asymslip_gen.second_order.slip_zone_width_second_order_dimensionless``.
+
+    Implements Eqs. (19), (22), (28) of the paper; derived in
+    ``derivations/second_order_slip_zone.py``.
+
+    Parameters
+    ----------
+    lam_mu : float
+        lambda/mu, the shear slope over friction.
+    eta_a1_mu : float
+        eta a1/mu, the tension slope over friction.
+    growth : float
+        a'(P1) dP/a1, the contact growth of (24).
+    multiplier : float
+        L_I1 a1^(3/2)/dP, the normal edge multiplier in units of a1 and dP.
+    multiplier_slope : float
+        L_I'(P1) a1^(3/2), the multiplier's slope in units of a1.
+    other_edge : float
+        +1 when the other edge of the contact slips in the same direction as this one (the same
+        sign of q2 - q1 there), -1 when it slips the opposite way.  For an other edge that does
+        not slip use +1: that branch joins the -1 branch continuously where the other edge
+        starts to slip the opposite way, but in between it is not derived (see the module
+        notes).
+
+    Returns
+    -------
+    float
+        (a1 - b)/a1, dimensionless.
+    """
+    tmp0 = 256 * multiplier
+    tmp1 = 64 * multiplier_slope
+    tmp2 = growth * multiplier
+    tmp3 = lam_mu * multiplier_slope
+    tmp4 = math.pi * eta_a1_mu
+    tmp5 = 32 * tmp4
+    tmp6 = lam_mu * tmp2
+    tmp7 = 16 * tmp2
+    tmp8 = other_edge * tmp7
+    tmp9 = lam_mu**2
+    tmp10 = 8 * tmp4 * tmp6
+    tmp11 = math.pi**2 * eta_a1_mu**2
+    tmp12 = tmp11 * tmp2
+    return (
+        (1 / 512)
+        * growth
+        * (
+            lam_mu * tmp0
+            + 64 * multiplier * tmp4
+            + 4 * multiplier_slope * tmp11
+            - multiplier_slope * tmp5
+            - other_edge * tmp10
+            + other_edge * tmp12
+            - tmp0
+            + tmp1 * tmp9
+            + tmp1
+            - tmp10
+            - 3 * tmp12
+            + 48 * tmp2
+            + tmp3 * tmp5
+            - 128 * tmp3
+            + tmp4 * tmp7
+            - 64 * tmp6
+            + tmp7 * tmp9
+            + tmp8 * tmp9
+            - tmp8
+        )
+        / multiplier
+    )
+
+
 def paper_stick_boundary_error_from_multiplier(
     mu: float,
     lam: float,
@@ -3243,6 +3331,76 @@ def stick_ratio_first_order(
         - 1 / 2 * lam * tmp0 * tmp1 * tmp2
         + 1
     )
+
+
+def stick_ratio_first_order_from_multipliers(
+    mu: float, L_I1: float, L_II1: float, a1: float, dP: float, da_dP: float
+) -> float:
+    """First-order b / a1 of (17) in an edge's own multipliers L_I1, L_II1.
+
+    The series of (17) in dP along the edge's a(P), L_I(P) and L_II(P); their slopes other than
+    a'(P1) drop out.  Equals (28) where L_II follows (21); for an edge of an asymmetric contact,
+    whose L_II does not (derivations/asymmetric_edge_multipliers.py).  One value at a time, as
+    ``asymslip_gen.validity.stick_ratio_first_order_from_multipliers``.
+
+    Implements Eqs. (17), (28) of the paper; derived in ``derivations/section2_validity.py``.
+
+    Parameters
+    ----------
+    mu : float
+        Coefficient of friction, mu > 0.
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_II1 : float
+        Shear edge multiplier L_II at load state 1 (5), either sign [force/length^(5/2)].
+    a1 : float
+        Contact half-width a(P1) at load state 1 [length].
+    dP : float
+        Normal-load change P2 - P1 > 0 [force/length].
+    da_dP : float
+        Slope a'(P) of the contact law [length^2/force].
+
+    Returns
+    -------
+    float
+        b / a1, dimensionless.
+    """
+    tmp0 = (1 / 2) * dP * da_dP / a1
+    return tmp0 + 1 - L_II1 * tmp0 / (L_I1 * mu)
+
+
+def slip_zone_growth_measure_from_multipliers(
+    mu: float, L_I1: float, L_II1: float, a1: float, dP: float, da_dP: float
+) -> float:
+    """Measure (27) in an edge's own multipliers: twice the first-order |b - a1| / a1.
+
+    dP a'(P) / a1 |1 - L_II1/(mu L_I1)|, from the first-order (17) in the edge's own
+    multipliers; equals slip_zone_growth_measure where L_II follows (21).  One value at a time,
+    as ``asymslip_gen.validity.slip_zone_growth_measure_from_multipliers``.
+
+    Implements Eqs. (17), (27) of the paper; derived in ``derivations/section2_validity.py``.
+
+    Parameters
+    ----------
+    mu : float
+        Coefficient of friction, mu > 0.
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_II1 : float
+        Shear edge multiplier L_II at load state 1 (5), either sign [force/length^(5/2)].
+    a1 : float
+        Contact half-width a(P1) at load state 1 [length].
+    dP : float
+        Normal-load change P2 - P1 > 0 [force/length].
+    da_dP : float
+        Slope a'(P) of the contact law [length^2/force].
+
+    Returns
+    -------
+    float
+        Dimensionless measure.
+    """
+    return dP * da_dP * abs(L_I1 * mu - L_II1) / (L_I1 * a1 * mu)
 
 
 def slip_zone_width_first_order(

@@ -779,6 +779,31 @@ double asymslip_slip_zone_width_second_order_from_multiplier(
     return (1.0/512.0)*tmp4*(L_I1*tmp1*tmp2 + 64*L_I1*tmp16 + 4*pow(a1, 3)*tmp20*tmp6 + lam*tmp15*tmp19 + mu*tmp17*tmp9 + other_edge*tmp10 - 16*other_edge*tmp11 - other_edge*tmp18 + other_edge*tmp21 + tmp0*tmp12 - tmp1*tmp3 + tmp10 + 48*tmp11 + tmp12*tmp8 - tmp16*tmp19 - tmp18 - 64*tmp2*tmp5 - 128*tmp2*tmp7 - 3*tmp21)/(L_I1*a1*tmp0);
 }
 
+/* (a1 - b)/a1 to second order, in dimensionless groups that cannot overflow. See asymslip_gen.h. */
+double asymslip_slip_zone_width_second_order_dimensionless(
+    double lam_mu,
+    double eta_a1_mu,
+    double growth,
+    double multiplier,
+    double multiplier_slope,
+    double other_edge)
+{
+    const double tmp0 = 256*multiplier;
+    const double tmp1 = 64*multiplier_slope;
+    const double tmp2 = growth*multiplier;
+    const double tmp3 = lam_mu*multiplier_slope;
+    const double tmp4 = asymslip_pi*eta_a1_mu;
+    const double tmp5 = 32*tmp4;
+    const double tmp6 = lam_mu*tmp2;
+    const double tmp7 = 16*tmp2;
+    const double tmp8 = other_edge*tmp7;
+    const double tmp9 = pow(lam_mu, 2);
+    const double tmp10 = 8*tmp4*tmp6;
+    const double tmp11 = pow(asymslip_pi, 2)*pow(eta_a1_mu, 2);
+    const double tmp12 = tmp11*tmp2;
+    return (1.0/512.0)*growth*(lam_mu*tmp0 + 64*multiplier*tmp4 + 4*multiplier_slope*tmp11 - multiplier_slope*tmp5 - other_edge*tmp10 + other_edge*tmp12 - tmp0 + tmp1*tmp9 + tmp1 - tmp10 - 3*tmp12 + 48*tmp2 + tmp3*tmp5 - 128*tmp3 + tmp4*tmp7 - 64*tmp6 + tmp7*tmp9 + tmp8*tmp9 - tmp8)/multiplier;
+}
+
 /* E of b(22) - b = E dP^2 + O(dP^3), from L_I and L_I'(P1). See asymslip_gen.h. */
 double asymslip_paper_stick_boundary_error_from_multiplier(
     double mu,
@@ -962,6 +987,31 @@ double asymslip_stick_ratio_first_order(
     const double tmp1 = 1.0/mu;
     const double tmp2 = dP*da_dP;
     return (1.0/2.0)*dP*da_dP*tmp0 - 1.0/8.0*asymslip_pi*eta*tmp1*tmp2 - 1.0/2.0*lam*tmp0*tmp1*tmp2 + 1;
+}
+
+/* First-order b / a1 of (17) in an edge's own multipliers L_I1, L_II1. See asymslip_gen.h. */
+double asymslip_stick_ratio_first_order_from_multipliers(
+    double mu,
+    double L_I1,
+    double L_II1,
+    double a1,
+    double dP,
+    double da_dP)
+{
+    const double tmp0 = (1.0/2.0)*dP*da_dP/a1;
+    return tmp0 + 1 - L_II1*tmp0/(L_I1*mu);
+}
+
+/* Measure (27) in an edge's own multipliers: twice the first-order |b - a1| / a1. See asymslip_gen.h. */
+double asymslip_slip_zone_growth_measure_from_multipliers(
+    double mu,
+    double L_I1,
+    double L_II1,
+    double a1,
+    double dP,
+    double da_dP)
+{
+    return dP*da_dP*fabs(L_I1*mu - L_II1)/(L_I1*a1*mu);
 }
 
 /* First-order slip-zone width a1 - b, without forming 1 - b/a1. See asymslip_gen.h. */

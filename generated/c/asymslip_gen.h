@@ -1757,6 +1757,42 @@ double asymslip_slip_zone_width_second_order_from_multiplier(
     double other_edge);
 
 /**
+ * (a1 - b)/a1 to second order, in dimensionless groups that cannot overflow.
+ *
+ * slip_zone_width_second_order_from_multiplier divided by a1, written in lam/mu, eta
+ * a1/mu, a'(P1) dP/a1, L_I1 a1^(3/2)/dP and L_I'(P1) a1^(3/2) (the width is homogeneous of
+ * degree one in length and zero in load, and depends on lam, eta only through lam/mu,
+ * eta/mu): the same digits at ordinary values, and no overflow of dimensional terms at
+ * loads of 1e300 or mu = 1e-300.
+ *
+ * Implements Eqs. (19), (22), (28) of the paper; derived in
+ * derivations/second_order_slip_zone.py.
+ *
+ * Arguments:
+ *   lam_mu            lambda/mu, the shear slope over friction.
+ *   eta_a1_mu         eta a1/mu, the tension slope over friction.
+ *   growth            a'(P1) dP/a1, the contact growth of (24).
+ *   multiplier        L_I1 a1^(3/2)/dP, the normal edge multiplier in units of a1 and dP.
+ *   multiplier_slope  L_I'(P1) a1^(3/2), the multiplier's slope in units of a1.
+ *   other_edge        +1 when the other edge of the contact slips in the same direction as
+ *                     this one (the same sign of q2 - q1 there), -1 when it slips the
+ *                     opposite way. For an other edge that does not slip use +1: that
+ *                     branch joins the -1 branch continuously where the other edge starts
+ *                     to slip the opposite way, but in between it is not derived (see the
+ *                     module notes).
+ *
+ * Returns:
+ *   (a1 - b)/a1, dimensionless.
+ */
+double asymslip_slip_zone_width_second_order_dimensionless(
+    double lam_mu,
+    double eta_a1_mu,
+    double growth,
+    double multiplier,
+    double multiplier_slope,
+    double other_edge);
+
+/**
  * E of b(22) - b = E dP^2 + O(dP^3), from L_I and L_I'(P1).
  *
  * paper_stick_boundary_error with a'' traded for L_I'(P1) through (19).
@@ -2181,6 +2217,63 @@ double asymslip_stick_ratio_first_order(
     double mu,
     double lam,
     double eta,
+    double a1,
+    double dP,
+    double da_dP);
+
+/**
+ * First-order b / a1 of (17) in an edge's own multipliers L_I1, L_II1.
+ *
+ * The series of (17) in dP along the edge's a(P), L_I(P) and L_II(P); their slopes other
+ * than a'(P1) drop out. Equals (28) where L_II follows (21); for an edge of an asymmetric
+ * contact, whose L_II does not (derivations/asymmetric_edge_multipliers.py).
+ *
+ * Implements Eqs. (17), (28) of the paper; derived in derivations/section2_validity.py.
+ *
+ * Arguments:
+ *   mu     Coefficient of friction, mu > 0.
+ *   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+ *          [force/length^(5/2)].
+ *   a1     Contact half-width a(P1) at load state 1 [length].
+ *   dP     Normal-load change P2 - P1 > 0 [force/length].
+ *   da_dP  Slope a'(P) of the contact law [length^2/force].
+ *
+ * Returns:
+ *   b / a1, dimensionless.
+ */
+double asymslip_stick_ratio_first_order_from_multipliers(
+    double mu,
+    double L_I1,
+    double L_II1,
+    double a1,
+    double dP,
+    double da_dP);
+
+/**
+ * Measure (27) in an edge's own multipliers: twice the first-order |b - a1| / a1.
+ *
+ * dP a'(P) / a1 |1 - L_II1/(mu L_I1)|, from the first-order (17) in the edge's own
+ * multipliers; equals slip_zone_growth_measure where L_II follows (21).
+ *
+ * Implements Eqs. (17), (27) of the paper; derived in derivations/section2_validity.py.
+ *
+ * Arguments:
+ *   mu     Coefficient of friction, mu > 0.
+ *   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+ *          [force/length^(5/2)].
+ *   a1     Contact half-width a(P1) at load state 1 [length].
+ *   dP     Normal-load change P2 - P1 > 0 [force/length].
+ *   da_dP  Slope a'(P) of the contact law [length^2/force].
+ *
+ * Returns:
+ *   Dimensionless measure.
+ */
+double asymslip_slip_zone_growth_measure_from_multipliers(
+    double mu,
+    double L_I1,
+    double L_II1,
     double a1,
     double dP,
     double da_dP);

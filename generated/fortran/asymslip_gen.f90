@@ -91,6 +91,7 @@ module asymslip_gen
     public :: asymslip_slip_zone_width_second_coefficient
     public :: asymslip_paper_stick_boundary_error
     public :: asymslip_slip_zone_width_second_order_from_multiplier
+    public :: asymslip_slip_zone_width_second_order_dimensionless
     public :: asymslip_paper_stick_boundary_error_from_multiplier
     public :: asymslip_slip_on_loading
     public :: asymslip_gap_opening_influence
@@ -106,6 +107,8 @@ module asymslip_gen
     public :: asymslip_multiplier_growth_measure
     public :: asymslip_slip_zone_growth_measure
     public :: asymslip_stick_ratio_first_order
+    public :: asymslip_stick_ratio_first_order_from_multipliers
+    public :: asymslip_slip_zone_growth_measure_from_multipliers
     public :: asymslip_slip_zone_width_first_order
     public :: asymslip_shear_edge_multiplier_asymmetric_c
     public :: asymslip_normal_edge_multiplier_asymmetric_c
@@ -175,6 +178,7 @@ module asymslip_gen
     public :: asymslip_slip_zone_width_second_coefficient_c
     public :: asymslip_paper_stick_boundary_error_c
     public :: asymslip_slip_zone_width_second_order_from_multiplier_c
+    public :: asymslip_slip_zone_width_second_order_dimensionless_c
     public :: asymslip_paper_stick_boundary_error_from_multiplier_c
     public :: asymslip_slip_on_loading_c
     public :: asymslip_gap_opening_influence_c
@@ -190,6 +194,8 @@ module asymslip_gen
     public :: asymslip_multiplier_growth_measure_c
     public :: asymslip_slip_zone_growth_measure_c
     public :: asymslip_stick_ratio_first_order_c
+    public :: asymslip_stick_ratio_first_order_from_multipliers_c
+    public :: asymslip_slip_zone_growth_measure_from_multipliers_c
     public :: asymslip_slip_zone_width_first_order_c
 
     real(c_double), parameter :: asymslip_pi = 3.14159265358979323846_c_double
@@ -2741,6 +2747,69 @@ contains
                 a1, da_dP, L_I1, dL_I_dP, dP, other_edge)
     end function asymslip_slip_zone_width_second_order_from_multiplier_c
 
+    !> (a1 - b)/a1 to second order, in dimensionless groups that cannot overflow.
+    !!
+    !! slip_zone_width_second_order_from_multiplier divided by a1, written in lam/mu, eta
+    !! a1/mu, a'(P1) dP/a1, L_I1 a1^(3/2)/dP and L_I'(P1) a1^(3/2) (the width is homogeneous of
+    !! degree one in length and zero in load, and depends on lam, eta only through lam/mu,
+    !! eta/mu): the same digits at ordinary values, and no overflow of dimensional terms at
+    !! loads of 1e300 or mu = 1e-300.
+    !!
+    !! Implements Eqs. (19), (22), (28) of the paper; derived in
+    !! derivations/second_order_slip_zone.py.
+    !!
+    !! Arguments:
+    !!   lam_mu            lambda/mu, the shear slope over friction.
+    !!   eta_a1_mu         eta a1/mu, the tension slope over friction.
+    !!   growth            a'(P1) dP/a1, the contact growth of (24).
+    !!   multiplier        L_I1 a1^(3/2)/dP, the normal edge multiplier in units of a1 and dP.
+    !!   multiplier_slope  L_I'(P1) a1^(3/2), the multiplier's slope in units of a1.
+    !!   other_edge        +1 when the other edge of the contact slips in the same direction as
+    !!                     this one (the same sign of q2 - q1 there), -1 when it slips the
+    !!                     opposite way. For an other edge that does not slip use +1: that
+    !!                     branch joins the -1 branch continuously where the other edge starts
+    !!                     to slip the opposite way, but in between it is not derived (see the
+    !!                     module notes).
+    !!
+    !! Returns:
+    !!   (a1 - b)/a1, dimensionless.
+    elemental function asymslip_slip_zone_width_second_order_dimensionless(lam_mu, eta_a1_mu, &
+            growth, multiplier, multiplier_slope, other_edge) result(asymslip_result)
+        real(c_double), intent(in) :: lam_mu, eta_a1_mu, growth, multiplier, multiplier_slope, other_edge
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4, tmp5, tmp6, tmp7
+        real(c_double) :: tmp8, tmp9, tmp10, tmp11, tmp12
+        tmp0 = 256*multiplier
+        tmp1 = 64*multiplier_slope
+        tmp2 = growth*multiplier
+        tmp3 = lam_mu*multiplier_slope
+        tmp4 = asymslip_pi*eta_a1_mu
+        tmp5 = 32*tmp4
+        tmp6 = lam_mu*tmp2
+        tmp7 = 16*tmp2
+        tmp8 = other_edge*tmp7
+        tmp9 = lam_mu**2
+        tmp10 = 8*tmp4*tmp6
+        tmp11 = asymslip_pi**2*eta_a1_mu**2
+        tmp12 = tmp11*tmp2
+        asymslip_result = (1.0d0/512.0d0)*growth*(lam_mu*tmp0 + 64*multiplier* &
+              tmp4 + 4*multiplier_slope*tmp11 - multiplier_slope*tmp5 - &
+              other_edge*tmp10 + other_edge*tmp12 - tmp0 + tmp1*tmp9 + tmp1 - &
+              tmp10 - 3*tmp12 + 48*tmp2 + tmp3*tmp5 - 128*tmp3 + tmp4*tmp7 - 64 &
+              *tmp6 + tmp7*tmp9 + tmp8*tmp9 - tmp8)/multiplier
+    end function asymslip_slip_zone_width_second_order_dimensionless
+
+    !> C binding of asymslip_slip_zone_width_second_order_dimensionless (scalar arguments by
+    !! value).
+    function asymslip_slip_zone_width_second_order_dimensionless_c(lam_mu, eta_a1_mu, growth, &
+            multiplier, multiplier_slope, other_edge) result(asymslip_result) &
+            bind(C, name="asymslip_slip_zone_width_second_order_dimensionless")
+        real(c_double), value, intent(in) :: lam_mu, eta_a1_mu, growth, multiplier, multiplier_slope, other_edge
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_slip_zone_width_second_order_dimensionless(lam_mu, &
+                eta_a1_mu, growth, multiplier, multiplier_slope, other_edge)
+    end function asymslip_slip_zone_width_second_order_dimensionless_c
+
     !> E of b(22) - b = E dP^2 + O(dP^3), from L_I and L_I'(P1).
     !!
     !! paper_stick_boundary_error with a'' traded for L_I'(P1) through (19).
@@ -3355,6 +3424,81 @@ contains
         real(c_double) :: asymslip_result
         asymslip_result = asymslip_stick_ratio_first_order(mu, lam, eta, a1, dP, da_dP)
     end function asymslip_stick_ratio_first_order_c
+
+    !> First-order b / a1 of (17) in an edge's own multipliers L_I1, L_II1.
+    !!
+    !! The series of (17) in dP along the edge's a(P), L_I(P) and L_II(P); their slopes other
+    !! than a'(P1) drop out. Equals (28) where L_II follows (21); for an edge of an asymmetric
+    !! contact, whose L_II does not (derivations/asymmetric_edge_multipliers.py).
+    !!
+    !! Implements Eqs. (17), (28) of the paper; derived in derivations/section2_validity.py.
+    !!
+    !! Arguments:
+    !!   mu     Coefficient of friction, mu > 0.
+    !!   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    !!   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+    !!          [force/length^(5/2)].
+    !!   a1     Contact half-width a(P1) at load state 1 [length].
+    !!   dP     Normal-load change P2 - P1 > 0 [force/length].
+    !!   da_dP  Slope a'(P) of the contact law [length^2/force].
+    !!
+    !! Returns:
+    !!   b / a1, dimensionless.
+    elemental function asymslip_stick_ratio_first_order_from_multipliers(mu, L_I1, L_II1, a1, &
+            dP, da_dP) result(asymslip_result)
+        real(c_double), intent(in) :: mu, L_I1, L_II1, a1, dP, da_dP
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0
+        tmp0 = (1.0d0/2.0d0)*dP*da_dP/a1
+        asymslip_result = tmp0 + 1 - L_II1*tmp0/(L_I1*mu)
+    end function asymslip_stick_ratio_first_order_from_multipliers
+
+    !> C binding of asymslip_stick_ratio_first_order_from_multipliers (scalar arguments by
+    !! value).
+    function asymslip_stick_ratio_first_order_from_multipliers_c(mu, L_I1, L_II1, a1, dP, da_dP) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_stick_ratio_first_order_from_multipliers")
+        real(c_double), value, intent(in) :: mu, L_I1, L_II1, a1, dP, da_dP
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_stick_ratio_first_order_from_multipliers(mu, L_I1, L_II1, &
+                a1, dP, da_dP)
+    end function asymslip_stick_ratio_first_order_from_multipliers_c
+
+    !> Measure (27) in an edge's own multipliers: twice the first-order |b - a1| / a1.
+    !!
+    !! dP a'(P) / a1 |1 - L_II1/(mu L_I1)|, from the first-order (17) in the edge's own
+    !! multipliers; equals slip_zone_growth_measure where L_II follows (21).
+    !!
+    !! Implements Eqs. (17), (27) of the paper; derived in derivations/section2_validity.py.
+    !!
+    !! Arguments:
+    !!   mu     Coefficient of friction, mu > 0.
+    !!   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    !!   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+    !!          [force/length^(5/2)].
+    !!   a1     Contact half-width a(P1) at load state 1 [length].
+    !!   dP     Normal-load change P2 - P1 > 0 [force/length].
+    !!   da_dP  Slope a'(P) of the contact law [length^2/force].
+    !!
+    !! Returns:
+    !!   Dimensionless measure.
+    elemental function asymslip_slip_zone_growth_measure_from_multipliers(mu, L_I1, L_II1, a1, &
+            dP, da_dP) result(asymslip_result)
+        real(c_double), intent(in) :: mu, L_I1, L_II1, a1, dP, da_dP
+        real(c_double) :: asymslip_result
+        asymslip_result = dP*da_dP*abs(L_I1*mu - L_II1)/(L_I1*a1*mu)
+    end function asymslip_slip_zone_growth_measure_from_multipliers
+
+    !> C binding of asymslip_slip_zone_growth_measure_from_multipliers (scalar arguments by
+    !! value).
+    function asymslip_slip_zone_growth_measure_from_multipliers_c(mu, L_I1, L_II1, a1, dP, da_dP) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_slip_zone_growth_measure_from_multipliers")
+        real(c_double), value, intent(in) :: mu, L_I1, L_II1, a1, dP, da_dP
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_slip_zone_growth_measure_from_multipliers(mu, L_I1, L_II1, &
+                a1, dP, da_dP)
+    end function asymslip_slip_zone_growth_measure_from_multipliers_c
 
     !> First-order slip-zone width a1 - b, without forming 1 - b/a1.
     !!

@@ -526,6 +526,24 @@ register_quantity(
 )
 register_quantity(
     Quantity(
+        "validity.stick_ratio_first_order_from_multipliers",
+        ("mu", "L_I1", "L_II1", "a1", "dP", "da_dP"),
+        # The first-order term of (17): (28) with lam + pi eta a1/4 -> L_II1/L_I1.
+        lambda mu, L_I1, L_II1, a1, dP, da_dP: 1
+        - dP * da_dP / (2 * a1) * (L_II1 / (mu * L_I1) - 1),
+        ("17", "28"),
+    )
+)
+register_quantity(
+    Quantity(
+        "validity.slip_zone_growth_measure_from_multipliers",
+        ("mu", "L_I1", "L_II1", "a1", "dP", "da_dP"),
+        lambda mu, L_I1, L_II1, a1, dP, da_dP: dP * da_dP / a1 * abs(1 - L_II1 / (mu * L_I1)),
+        ("17", "27"),
+    )
+)
+register_quantity(
+    Quantity(
         "validity.slip_zone_width_first_order",
         ("mu", "lam", "eta", "a1", "dP", "da_dP"),
         # a1 (1 - b/a1) with b/a1 from (28).
@@ -1416,6 +1434,27 @@ register_quantity(
         ("mu", "lam", "eta", "a1", "da_dP", "L_I1", "dL_I_dP", "dP", "other_edge"),
         lambda L_I1, dL_I_dP, a1, da_dP, **k: _width_second_order(
             a1=a1, da_dP=da_dP, d2a_dP2=_curvature_19(a1, da_dP, L_I1, dL_I_dP), **k
+        ),
+        ("19", "22", "28"),
+    )
+)
+register_quantity(
+    Quantity(
+        "second_order.slip_zone_width_second_order_dimensionless",
+        ("lam_mu", "eta_a1_mu", "growth", "multiplier", "multiplier_slope", "other_edge"),
+        # The width in units of a1 with mu = 1 and dP = 1: its groups stand for lam, eta, a',
+        # L_I1 and L_I' (the generated doc).
+        lambda lam_mu, eta_a1_mu, growth, multiplier, multiplier_slope, other_edge: (
+            _width_second_order(
+                mu=1,
+                lam=lam_mu,
+                eta=eta_a1_mu,
+                a1=1,
+                da_dP=growth,
+                d2a_dP2=_curvature_19(1, growth, multiplier, multiplier_slope),
+                dP=1,
+                other_edge=other_edge,
+            )
         ),
         ("19", "22", "28"),
     )

@@ -168,6 +168,19 @@ def _second_order(draw: Draw) -> Points:
     return points
 
 
+def _second_order_groups(draw: Draw) -> Points:
+    """The second-order width's dimensionless groups (its generated doc), from such a cycle."""
+    points = _second_order(draw)
+    mu, a1, dP = points["mu"], points["a1"], points["dP"]
+    root = a1**1.5
+    points["lam_mu"] = points["lam"] / mu
+    points["eta_a1_mu"] = points["eta"] * a1 / mu
+    points["growth"] = points["da_dP"] * dP / a1
+    points["multiplier"] = points["L_I1"] * root / dP
+    points["multiplier_slope"] = points["dL_I_dP"] * root
+    return points
+
+
 def _in_slip_zone(draw: Draw) -> Points:
     """A cycle and x from below b (stick zone, where the result is 0) to just inside a2."""
     points = draw.cycle()
@@ -311,6 +324,8 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "multiplier_growth_measure": _generic_slopes,
     "slip_zone_growth_measure": _cycle,
     "stick_ratio_first_order": _cycle,
+    "stick_ratio_first_order_from_multipliers": _cycle,
+    "slip_zone_growth_measure_from_multipliers": _cycle,
     "slip_zone_width_first_order": _cycle,
     # corrective_stick
     "shear_intensity_rate": _law,
@@ -340,6 +355,7 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "second_order_stick_boundary_gap_from_multiplier": _generic_slopes,
     # second_order
     "slip_zone_width_second_order_from_multiplier": _second_order,
+    "slip_zone_width_second_order_dimensionless": _second_order_groups,
     "slip_zone_width_second_order": _second_order,
     "stick_boundary_second_order": _second_order,
     "slip_zone_width_second_coefficient": _second_order,

@@ -11,13 +11,13 @@ import pytest
 
 from asymslip import FlatRoundedLaw, LoadCycle, PowerLaw, slip_zone
 from asymslip.errors import InputError
-from asymslip.match import Available, EdgeState, Rig, match
-from asymslip.match.solutions import best_slopes, edge_state, law_point
+from asymslip.match import Available, EdgeSignature, Rig, match
+from asymslip.match.solutions import best_slopes, edge_signature, law_point
 from tests.match.cases import BLADE, BLADE_CYCLE, MU, width_17
 
 
-def _measure_by_hand(rig_state: EdgeState, target: EdgeState) -> float:
-    """The measure of asymslip.match.edge_state, transcribed: five relative mismatches."""
+def _measure_by_hand(rig_state: EdgeSignature, target: EdgeSignature) -> float:
+    """The measure of asymslip.match.signature, transcribed: five relative mismatches."""
     parts = [
         math.log(rig_state.L_I1 / target.L_I1),
         math.log(rig_state.L_I2 / target.L_I2),
@@ -32,7 +32,7 @@ def _measure_of(rig: Rig, result, P1: float, P2: float) -> float:
     """The mismatch of the rig's pad at other loads, with the best slopes there."""
     point = law_point(result.law, P1, P2 - P1)
     lam, eta = best_slopes(point, result.prototype_state, rig)
-    return edge_state(point, MU, lam, eta).distance(result.prototype_state)
+    return edge_signature(point, MU, lam, eta).distance(result.prototype_state)
 
 
 def test_without_tension_the_closest_cycle_says_tension_could_not_be_applied():

@@ -6,7 +6,7 @@ L_I1, L_I2, L_II1, L_II2 and the advance a2 - a1 of the edge (LT1 of
 ``derivations/lab_transfer.py``).  :func:`match` finds the rig's pad and cycle that share them
 -- exactly where the rig allows (for a Hertz pad with bulk tension the one answer of LT3, LT4;
 for a rounded-flat rig the pad at the prototype's own half-widths, a second-order match, LT5),
-else the closest by the edge-state mismatch of :mod:`.edge_state` -- and reports every matched
+else the closest by the edge-state mismatch of :mod:`.signature` -- and reports every matched
 quantity of both contacts side by side with the validity measures (24)-(27), the slip-zone
 widths and the match's stated accuracy.  :func:`verify` solves both contacts with the reference
 solver and compares the near-edge shear change and slip in the edge's own coordinate.
@@ -25,10 +25,10 @@ A blade-root-like rounded flat with bulk tension, reproduced by a cylindrical pa
 ['L_I1', 'L_I2', 'L_II1', 'L_II2', 'a2_minus_a1', 'slip_zone_width']
 """
 
-from .edge_state import QUANTITIES, EdgeState
 from .matching import EXACT, match, rig_cycle
 from .result import MatchResult, Mismatch, Pair
 from .rig import FAMILIES, Available, Geometry, Rig
+from .signature import QUANTITIES, EdgeSignature
 from .verification import SolverProblem, Verification, verify
 
 __all__ = [
@@ -36,7 +36,7 @@ __all__ = [
     "FAMILIES",
     "QUANTITIES",
     "Available",
-    "EdgeState",
+    "EdgeSignature",
     "Geometry",
     "MatchResult",
     "Mismatch",

@@ -5,12 +5,15 @@ from __future__ import annotations
 import math
 from typing import Literal
 
+from numpy.typing import ArrayLike
+
 from ..cycle import LoadCycle
 from ..errors import InputError, as_float_array
+from ..laws.base import ContactLaw
 from ..slip_zones import SlipZoneResult, slip_zone
-from .edge_state import QUANTITIES, EdgeState
 from .result import MatchResult, Mismatch, Pair
 from .rig import Rig
+from .signature import QUANTITIES, EdgeSignature
 from .solutions import RigSolution, closest, exact_flat_rounded, exact_hertz
 
 #: Largest mismatch (each component of the measure) of an exact match: the round trip through
@@ -24,19 +27,19 @@ FARTHEST = 0.5
 Edge = Literal["right", "left"]
 
 
-def _scalar(name: str, value: object) -> float:
-    array = as_float_array(name, value)  # type: ignore[arg-type]
+def _scalar(name: str, value: ArrayLike) -> float:
+    array = as_float_array(name, value)
     if array.ndim:
         raise InputError(name, "match takes one cycle (a number, not an array)")
     return float(array)
 
 
 def _prototype_state(
-    law: object, cycle: LoadCycle, mu: float, edge: Edge
-) -> tuple[SlipZoneResult, EdgeState]:
+    law: ContactLaw, cycle: LoadCycle, mu: float, edge: Edge
+) -> tuple[SlipZoneResult, EdgeSignature]:
     if cycle.shape != ():
         raise InputError("cycle", "match takes one cycle (numbers, not arrays)")
-    result = slip_zone(law, cycle, mu, edge=edge)  # type: ignore[arg-type]
+    result = slip_zone(law, cycle, mu, edge=edge)
     if result.slip_direction == 0:
         raise InputError(
             "edge",
@@ -47,8 +50,8 @@ def _prototype_state(
     P1 = float(cycle.P1)
     dP = float(cycle.P2) - P1
     # a2 - a1 from the law's cancellation-free growth, not the difference of two half-widths.
-    da = float(law.for_edge(edge).cycle_state(P1, dP).da)  # type: ignore[attr-defined]
-    state = EdgeState(
+    da = float(law.for_edge(edge).cycle_state(P1, dP).da)
+    state = EdgeSignature(
         mu,
         float(result.L_I1),
         float(result.L_I2),
@@ -90,7 +93,7 @@ def _limits_broken(rig: Rig, solution: RigSolution) -> list[str]:
     return reasons
 
 
-def _without_vanishing_tension(solution: RigSolution, target: EdgeState) -> RigSolution:
+def _without_vanishing_tension(solution: RigSolution, target: EdgeSignature) -> RigSolution:
     """eta of rounding size (a prototype without tension) set to zero."""
     ratio = max(abs(target.L_II1 / target.L_I1), abs(target.L_II2 / target.L_I2), target.mu)
     if abs(math.pi * solution.eta * solution.a2 / 4) <= 1e-12 * ratio:
@@ -146,7 +149,7 @@ def _first_order_accuracy(result: SlipZoneResult) -> float:
 
 
 def match(
-    law: object,
+    law: ContactLaw,
     cycle: LoadCycle,
     mu: float,
     rig: Rig,
@@ -261,21 +264,21 @@ def match(
 def _assemble(
     rig: Rig,
     solution: RigSolution,
-    rig_law: object,
+    rig_law: ContactLaw,
     mu_rig: float,
     cycle_rig: LoadCycle,
     edge: Edge,
     prototype: SlipZoneResult,
-    prototype_state: EdgeState,
+    prototype_state: EdgeSignature,
     rig_result: SlipZoneResult,
-    target: EdgeState,
+    target: EdgeSignature,
     margin: float,
     reasons: list[str],
-    prototype_law: object,
+    prototype_law: ContactLaw,
     prototype_cycle: LoadCycle,
 ) -> MatchResult:
-    da_rig = float(rig_law.cycle_state(solution.P1, solution.P2 - solution.P1).da)  # type: ignore[attr-defined]
-    rig_state = EdgeState(
+    da_rig = float(rig_law.cycle_state(solution.P1, solution.P2 - solution.P1).da)
+    rig_state = EdgeSignature(
         mu_rig,
         float(rig_result.L_I1),
         float(rig_result.L_I2),
@@ -342,7 +345,7 @@ def _assemble(
     return MatchResult(
         rig=rig,
         geometry=solution.geometry,
-        law=rig_law,  # type: ignore[arg-type]
+        law=rig_law,
         mu=mu_rig,
         cycle=cycle_rig,
         edge=edge,

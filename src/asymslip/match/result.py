@@ -16,8 +16,9 @@ from typing import Any
 from ..cycle import LoadCycle
 from ..laws.base import ContactLaw
 from ..slip_zones import SlipZoneResult
-from .edge_state import QUANTITIES, EdgeState
+from ..solver.result import Edge
 from .rig import Geometry, Rig
+from .signature import QUANTITIES, EdgeSignature
 from .solutions import Order
 
 
@@ -52,7 +53,7 @@ class MatchResult:
     ``order`` is ``"second"`` when the rig also shares the prototype's contact half-widths (the
     headline slip-zone widths then agree to second order), ``"leading"`` when the five edge
     quantities match exactly (to 1e-9), ``"approximate"`` otherwise (the closest rig cycle by
-    the edge-state mismatch ``measure``, :mod:`asymslip.match.edge_state`).  ``accuracy`` is the
+    the edge-state mismatch ``measure``, :mod:`asymslip.match.signature`).  ``accuracy`` is the
     match's stated accuracy on the slip-zone width: the sum of the two contacts' accuracies (the
     headline ones, second order, for a second-order match; 2 (da/a1) |a1 - b| each otherwise).
     ``margin`` is the fraction of the friction limit left at the rig's worse state,
@@ -64,7 +65,7 @@ class MatchResult:
     law: ContactLaw
     mu: float
     cycle: LoadCycle
-    edge: str
+    edge: Edge
     prototype: SlipZoneResult
     rig_result: SlipZoneResult
     matched: dict[str, Pair]
@@ -80,8 +81,8 @@ class MatchResult:
     warnings: tuple[str, ...]
     prototype_law: Any = field(repr=False)
     prototype_cycle: LoadCycle = field(repr=False)
-    prototype_state: EdgeState = field(repr=False)
-    rig_state: EdgeState = field(repr=False)
+    prototype_state: EdgeSignature = field(repr=False)
+    rig_state: EdgeSignature = field(repr=False)
     verification: Any = None
 
     def rig_dict(self) -> dict[str, object]:

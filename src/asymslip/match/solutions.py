@@ -1,5 +1,5 @@
 """The rig's pad and cycle that reproduce an edge state: exactly where the rig allows, else the
-closest by the edge-state mismatch (:mod:`.edge_state`).
+closest by the edge-state mismatch (:mod:`.signature`).
 
 Exact answers come from the derived solutions of ``derivations/lab_transfer.py``: for a Hertz
 pad the one (R, a1, a2) of LT3; for a rounded flat with both dimensions free the pad at the
@@ -14,9 +14,9 @@ Examples
 --------
 The one cylinder (LT3) and path slopes (LT4) of an edge state:
 
->>> from asymslip.match import EdgeState, Rig
+>>> from asymslip.match import EdgeSignature, Rig
 >>> from asymslip.match.solutions import exact_hertz
->>> pad = exact_hertz(Rig("hertz", 1.0), EdgeState(0.3, 2.0, 2.1, 0.7, 0.9, 0.05))
+>>> pad = exact_hertz(Rig("hertz", 1.0), EdgeSignature(0.3, 2.0, 2.1, 0.7, 0.9, 0.05))
 >>> round(pad.geometry.R, 6), round(pad.a1, 6), round(pad.lam, 6), round(pad.eta, 6)
 (0.246932, 0.487805, -0.416551, 2.000805)
 """
@@ -42,8 +42,8 @@ from asymslip_gen.lab_transfer import (
 
 from ..errors import InputError
 from ..laws.base import ContactLaw
-from .edge_state import EdgeState
 from .rig import Geometry, Rig
+from .signature import EdgeSignature
 
 Order = Literal["second", "leading", "approximate"]
 
@@ -59,7 +59,7 @@ class RigSolution:
     eta: float
     a1: float
     a2: float
-    state: EdgeState
+    state: EdgeSignature
     order: Order
 
 
@@ -101,7 +101,7 @@ def _columns(point: LawPoint) -> tuple[tuple[float, float], tuple[float, float]]
     return lam_column, eta_column
 
 
-def exact_slopes(point: LawPoint, target: EdgeState) -> tuple[float, float]:
+def exact_slopes(point: LawPoint, target: EdgeSignature) -> tuple[float, float]:
     """lambda, eta that give the rig's edge the target's L_II1 and L_II2 (LT4)."""
     args = (point.da, point.L_I1, point.L_I2, target.L_II1, target.L_II2)
     eta = float(matched_tension_slope(*args))
@@ -109,14 +109,14 @@ def exact_slopes(point: LawPoint, target: EdgeState) -> tuple[float, float]:
     return lam, eta
 
 
-def edge_state(point: LawPoint, mu: float, lam: float, eta: float) -> EdgeState:
+def edge_signature(point: LawPoint, mu: float, lam: float, eta: float) -> EdgeSignature:
     """The rig edge's state for path slopes lambda, eta, by (21)."""
     L_II1 = float(shear_edge_multiplier_proportional(lam, eta, point.a1, point.L_I1))
     L_II2 = float(shear_edge_multiplier_proportional(lam, eta, point.a2, point.L_I2))
-    return EdgeState(mu, point.L_I1, point.L_I2, L_II1, L_II2, point.da)
+    return EdgeSignature(mu, point.L_I1, point.L_I2, L_II1, L_II2, point.da)
 
 
-def best_slopes(point: LawPoint, target: EdgeState, rig: Rig) -> tuple[float, float]:
+def best_slopes(point: LawPoint, target: EdgeSignature, rig: Rig) -> tuple[float, float]:
     """The slopes (lambda, eta) nearest the target's L_II within the rig's limits.
 
     Least squares on the two L_II mismatches of the measure (each in units of mu L_I of the
@@ -169,7 +169,7 @@ def _bisect(function: Callable[[float], float], low: float, high: float) -> floa
 
 
 def _solution(
-    rig: Rig, geometry: Geometry, a1: float, da: float, target: EdgeState, order: Order
+    rig: Rig, geometry: Geometry, a1: float, da: float, target: EdgeSignature, order: Order
 ) -> RigSolution | None:
     """The pad at half-widths a1, a1 + da with the exact slopes of LT4."""
     law = rig.law(geometry)
@@ -179,11 +179,11 @@ def _solution(
     if point is None:
         return None
     lam, eta = exact_slopes(point, target)
-    state = edge_state(point, target.mu, lam, eta)
+    state = edge_signature(point, target.mu, lam, eta)
     return RigSolution(geometry, P1, point.P2, lam, eta, point.a1, point.a2, state, order)
 
 
-def exact_hertz(rig: Rig, target: EdgeState) -> RigSolution | str:
+def exact_hertz(rig: Rig, target: EdgeSignature) -> RigSolution | str:
     """The one cylinder of LT3, or why there is none."""
     if not target.L_I2 > target.L_I1:
         return (
@@ -222,7 +222,7 @@ def _half_width_for_ratio(c: float, da: float, ratio: float) -> float | None:
     return _bisect(excess, low, high)
 
 
-def exact_flat_rounded(rig: Rig, target: EdgeState, a1: float) -> RigSolution | str:
+def exact_flat_rounded(rig: Rig, target: EdgeSignature, a1: float) -> RigSolution | str:
     """The rounded flat at the prototype's own half-widths (LT5), else the nearest c's pad."""
     ratio = target.L_I2 / target.L_I1
     flat = _flat_for_ratio(a1, a1 + target.da, ratio)
@@ -269,7 +269,7 @@ def _geometries(rig: Rig) -> Iterator[tuple[Geometry, list[int]]]:
 
 
 def closest(
-    rig: Rig, target: EdgeState, start: RigSolution | None, a1_target: float
+    rig: Rig, target: EdgeSignature, start: RigSolution | None, a1_target: float
 ) -> RigSolution:
     """The pad, loads and slopes within the rig's limits nearest the target edge state."""
     try:
@@ -302,7 +302,7 @@ def closest(
             if point is None:
                 return None, np.full(5, 1e3)
             lam, eta = best_slopes(point, target, rig)
-            state = edge_state(point, target.mu, lam, eta)
+            state = edge_signature(point, target.mu, lam, eta)
             solution = RigSolution(
                 geometry, P1, point.P2, lam, eta, point.a1, point.a2, state, "approximate"
             )
@@ -333,7 +333,7 @@ def _bounds_and_start(
     rig: Rig,
     fixed: Geometry,
     free: list[int],
-    target: EdgeState,
+    target: EdgeSignature,
     start: RigSolution | None,
     a1_target: float,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

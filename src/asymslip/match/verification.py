@@ -35,6 +35,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import InputError
+from ..solver.result import Edge
 from .result import MatchResult
 
 FloatArray = NDArray[np.float64]
@@ -123,7 +124,7 @@ def solve_edge(
     contact: Any,
     loading: Any,
     mu: float,
-    side: str,
+    side: Edge,
     elements: int,
     E_star: float | None,
     domain: tuple[float, float] | None,
@@ -134,14 +135,14 @@ def solve_edge(
     if not result.steady:
         raise InputError("verify", "the reference solver did not reach the steady state")
     first, second = result.states[0], result.states[1]
-    edge = result.edge(side)  # type: ignore[arg-type]
+    edge = result.edge(side)
     if edge.b is None or edge.b_error is None:
         raise InputError("verify", f"the solver finds no stick zone at the {side} edge")
-    a1, a2 = first.edge(side).a, second.edge(side).a  # type: ignore[arg-type]
+    a1, a2 = first.edge(side).a, second.edge(side).a
     orientation = 1.0 if side == "right" else -1.0
     return SolvedEdge(
         width=a1 - edge.b,
-        width_error=edge.b_error + first.edge(side).a_error,  # type: ignore[arg-type]
+        width_error=edge.b_error + first.edge(side).a_error,
         reach=a2 - edge.b,
         element=result.element_size,
         elements=result.elements,

@@ -19,11 +19,11 @@ one of them.
 
 Examples
 --------
->>> from asymslip.match import EdgeState
->>> edge = EdgeState(mu=0.3, L_I1=2.0, L_I2=2.1, L_II1=0.7, L_II2=0.9, da=0.05)
+>>> from asymslip.match import EdgeSignature
+>>> edge = EdgeSignature(mu=0.3, L_I1=2.0, L_I2=2.1, L_II1=0.7, L_II2=0.9, da=0.05)
 >>> edge.direction, round(edge.width, 6), round(edge.peak_shear_change, 6)
 (1.0, 0.013107, 0.226954)
->>> round(EdgeState(0.3, 2.0, 2.1, 0.7, 0.9, 0.051).distance(edge), 6)  # ln(51/50)
+>>> round(EdgeSignature(0.3, 2.0, 2.1, 0.7, 0.9, 0.051).distance(edge), 6)  # ln(51/50)
 0.019803
 """
 
@@ -35,14 +35,14 @@ from dataclasses import dataclass, replace
 from asymslip_gen.corrective_slip import slip_zone_width_from_multipliers
 from asymslip_gen.lab_transfer import peak_shear_change
 
-from ..edge_estimates import slip_direction
+from ..core.estimates import slip_direction
 
-#: The matched quantities, in the order of :meth:`EdgeState.mismatch` (JSON names).
+#: The matched quantities, in the order of :meth:`EdgeSignature.mismatch` (JSON names).
 QUANTITIES = ("L_I1", "L_I2", "L_II1", "L_II2", "a2_minus_a1")
 
 
 @dataclass(frozen=True)
-class EdgeState:
+class EdgeSignature:
     """mu, the four edge multipliers of (4), (5) and the advance of the edge da = a2 - a1."""
 
     mu: float
@@ -83,17 +83,17 @@ class EdgeState:
         """One of :data:`QUANTITIES`."""
         return self.da if quantity == "a2_minus_a1" else float(getattr(self, quantity))
 
-    def with_value(self, quantity: str, value: float) -> EdgeState:
+    def with_value(self, quantity: str, value: float) -> EdgeSignature:
         """This state with one quantity replaced."""
         return replace(self, **{"da" if quantity == "a2_minus_a1" else quantity: value})
 
-    def for_friction(self, mu: float) -> EdgeState:
+    def for_friction(self, mu: float) -> EdgeSignature:
         """The state a pair of friction coefficient ``mu`` must have to slip as this one does:
         the same L_II and mu L_I (the slip conditions (8), (11) compare L_II with mu L_I)."""
         scale = self.mu / mu
         return replace(self, mu=mu, L_I1=self.L_I1 * scale, L_I2=self.L_I2 * scale)
 
-    def mismatch(self, target: EdgeState) -> tuple[float, ...]:
+    def mismatch(self, target: EdgeSignature) -> tuple[float, ...]:
         """The five dimensionless mismatches of the module's measure, in :data:`QUANTITIES`
         order (zero where this state is the target)."""
         mu = target.mu
@@ -105,6 +105,6 @@ class EdgeState:
             math.log(self.da / target.da),
         )
 
-    def distance(self, target: EdgeState) -> float:
+    def distance(self, target: EdgeSignature) -> float:
         """The edge-state mismatch: the root sum of squares of :meth:`mismatch`."""
         return math.sqrt(sum(value * value for value in self.mismatch(target)))
