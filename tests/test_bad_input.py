@@ -147,12 +147,12 @@ def test_a_huge_tension_change_is_named_not_mu():
     ],
 )
 def test_a_non_positive_denominator_names_the_load_change_to_blame(lam, eta, parameter):
-    """The rule itself, on one edge: mu (L_I1 + L_I2) = 0.21 against lambda |L_I2 - L_I1|."""
-    from asymslip.rules import Verdict, check_denominator
+    """The rules themselves, on one edge: mu (L_I1 + L_I2) = 0.21 against lambda |L_I2 - L_I1|."""
+    from asymslip.rules import Verdict, denominator_checks
 
     verdict = Verdict(())
-    values = {"lam": lam, "eta": eta, "L_I1": 1.0, "L_I2": 1.1}
-    check_denominator(verdict, False, 0.1, -1.0, values, side="right", note="")
+    for key, ok in denominator_checks(False, 0.1, lam, eta, 1.0, 1.1):
+        verdict.require(key, ok, None, side="right", denominator=-1.0, mu=0.1, note="")
     error = verdict.first_error()
     assert error is not None and error.parameter == parameter
     assert "too large for mu = 0.1" in str(error)

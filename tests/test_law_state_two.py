@@ -162,7 +162,7 @@ def test_none_of_30000_random_large_growths_of_the_rounded_flat_is_wrong_or_refu
         cycles = LoadCycle.unchecked(P1, zeros, P2, Q2, zeros, zeros)
         result = evaluate(law, cycles, np.full(count, 0.5))
         refused += int((~result.verdict.valid).sum())
-        a2 = np.asarray(result.edges["right"].values["a2"], dtype=float)
+        a2 = np.asarray(result.edges["right"].a2, dtype=float)
         own, _ = law.half_width_where_possible(P2)
         wrong += int(np.sum(np.abs(a2 - own) > 4 * np.spacing(own)))
     assert (refused, wrong) == (0, 0)

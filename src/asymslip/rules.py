@@ -401,34 +401,26 @@ def _below_subnormal_capacity(
         return tiny & (np.ldexp(shear, mu_scale + P_scale) < scaled)
 
 
-def check_denominator(
-    verdict: Verdict,
+def denominator_checks(
     admits: ArrayLike,
-    mu: FloatArray,
-    denominator: FloatArray,
-    values: Mapping[str, FloatArray],
-    *,
-    side: str,
-    note: str,
-) -> None:
-    """(17) has a steady partial-slip state only where its denominator is positive (``admits``).
+    mu: ArrayLike,
+    lam: ArrayLike,
+    eta: ArrayLike,
+    L_I1: ArrayLike,
+    L_I2: ArrayLike,
+) -> tuple[tuple[str, ArrayLike], tuple[str, ArrayLike]]:
+    """The rules of (17)'s denominator, each with where it holds, in the order to require them.
 
-    Where it is not, the message names the load change to blame: the bulk tension's where
-    the same cycle without it (eta = 0; the shear term lambda (L_I2 - L_I1) of (21) alone)
-    would have a positive denominator, else the shear force's.  ``values`` holds the edge's
-    ``lam``, ``eta``, ``L_I1`` and ``L_I2``.
+    (17) has a steady partial-slip state only where its denominator is positive (``admits``).
+    Where it is not, the message names the load change to blame: the bulk tension's where the
+    same cycle without it (eta = 0; the shear term lambda (L_I2 - L_I1) of (21) alone) would
+    have a positive denominator, else the shear force's.  Works on one cycle's floats (the
+    conditions are then NumPy booleans: ``~True`` on a Python bool is -2) and on arrays.
     """
-    if isinstance(admits, np.ndarray) and admits.ndim:
-        if admits.all():
-            return
-    elif admits:
-        return
-    lam, eta = values["lam"], values["eta"]
-    L_I1, L_I2 = values["L_I1"], values["L_I2"]
     with np.errstate(all="ignore"):
         without_tension = mu * (L_I1 + L_I2) - abs(lam) * abs(L_I2 - L_I1)
-        # np.logical_*: on one cycle these are Python bools, where ~True is -2, not False.
         tension = np.logical_and(eta != 0, without_tension > 0)
-    fields = {"side": side, "denominator": denominator, "mu": mu, "note": note}
-    verdict.require("denominator_tension", np.logical_or(admits, ~tension), None, **fields)
-    verdict.require("denominator_shear", admits, None, **fields)
+    return (
+        ("denominator_tension", np.logical_or(admits, np.logical_not(tension))),
+        ("denominator_shear", admits),
+    )

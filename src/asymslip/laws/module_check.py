@@ -21,7 +21,7 @@ Examples
 ... def load_slope(a, k): return 2 * k * a
 ... def normal_edge_multiplier(a, k): return numpy.sqrt(2 / a) / numpy.pi * 2 * k * a
 ... ''', "cylinder.py")
->>> check_law_source("import os\\nos.system('echo hello')\\n", "evil.py")
+>>> check_law_source("import os\\nos.system('echo hello')\\n", "evil.py")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
     ...
 asymslip.errors.InputError: module: is not an asymslip law module: line 1 imports os ...

@@ -41,11 +41,14 @@ def law_parameter(name: str, value: object) -> float:
         raise InputError(name, "is missing: a law needs a value of each of its parameters")
     if isinstance(value, bool | np.bool_):
         raise InputError(name, "must be a number, not True or False", value)
-    if isinstance(value, str | bytes) or np.iscomplexobj(value):
+    if isinstance(value, str | bytes | complex | np.complexfloating):
         raise InputError(name, "must be a real number", value)
-    shape = np.shape(value) if isinstance(value, np.ndarray | list | tuple) else ()
-    if shape:
-        shown = np.asarray(value).tolist() if np.size(value) <= 4 else None
+    if isinstance(value, np.ndarray | list | tuple) and np.shape(value):
+        array = np.asarray(value)
+        if np.iscomplexobj(array):
+            raise InputError(name, "must be a real number", value)
+        shape = array.shape
+        shown = array.tolist() if array.size <= 4 else None
         raise InputError(
             name,
             f"must be one number, not an array of {int(np.prod(shape))} (a law has one value "
