@@ -13,7 +13,7 @@ from ..files.collisions import Input, Output, refuse_overwriting_inputs
 FIGURES = ("fig5", "error-map")
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     figure = commands.add_parser(
         "figure",
         help="draw one of the paper's figures, or the error map",

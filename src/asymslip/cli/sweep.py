@@ -12,7 +12,7 @@ from .laws import add_law_options, build_law, law_inputs
 from .parser import number, whole_number
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     sweep = commands.add_parser(
         "sweep",
         help="slip zone of every load cycle in a CSV file",

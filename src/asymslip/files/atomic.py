@@ -40,7 +40,7 @@ import tempfile
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
-from typing import IO, Literal
+from typing import IO, Any, Literal
 
 from ..errors import InputError
 from .partials import SUFFIX, clean_left_overs, partial_prefix
@@ -69,7 +69,7 @@ def permissions_for(target: Path) -> int:
 @contextmanager
 def atomic_write(
     path: str | Path, option: str = "out", mode: Literal["wb", "w"] = "wb"
-) -> Iterator[IO]:
+) -> Iterator[IO[Any]]:
     """Open a temporary file beside ``path``; rename it to ``path`` when the block succeeds.
 
     Parameters
@@ -101,8 +101,12 @@ def atomic_write(
         except OSError as error:
             raise InputError(option, f"cannot write {target}: {error.strerror}") from None
         try:
-            encoding = {"encoding": "utf-8"} if mode == "w" else {}
-            with os.fdopen(descriptor, mode, **encoding) as handle:
+            handle: IO[Any] = (
+                os.fdopen(descriptor, "w", encoding="utf-8")
+                if mode == "w"
+                else os.fdopen(descriptor, "wb")
+            )
+            with handle:
                 yield handle
                 handle.flush()
                 os.chmod(handle.fileno() if os.chmod in os.supports_fd else temporary, permissions)

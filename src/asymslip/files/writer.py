@@ -38,7 +38,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import IO, Literal
+from typing import IO, Any, Literal
 
 import numpy as np
 from numpy.typing import NDArray
@@ -177,6 +177,8 @@ class TableWriter:
                 if column.ndim != 1:
                     raise ValueError(f"column {name}: a float column is one-dimensional")
             elif kind == "text" and not isinstance(column, TextColumn):
+                if isinstance(column, np.ndarray | Categorical):
+                    raise ValueError(f"column {name}: a text column takes strings")
                 column = TextColumn.from_strings(column)
             elif kind == "category" and not isinstance(column, Categorical):
                 raise ValueError(f"column {name}: a category column takes a Categorical")
@@ -275,7 +277,7 @@ def open_table(
 
 
 # --- columns as Arrow arrays ---------------------------------------------------------------------
-def _arrow_type(kind: Kind):  # noqa: ANN202
+def _arrow_type(kind: Kind) -> Any:  # a pyarrow DataType (no type information)
     import pyarrow as pa
 
     return {
@@ -285,7 +287,7 @@ def _arrow_type(kind: Kind):  # noqa: ANN202
     }[kind]
 
 
-def _arrow_array(column: Column, kind: Kind):  # noqa: ANN202
+def _arrow_array(column: Column, kind: Kind) -> Any:  # a pyarrow Array
     import pyarrow as pa
 
     if kind == "float":
@@ -311,7 +313,7 @@ def _arrow_array(column: Column, kind: Kind):  # noqa: ANN202
 def _slice(column: Column, start: int, stop: int) -> Column:
     if isinstance(column, TextColumn | Categorical):
         return column.slice(start, min(stop, len(column)))
-    return column[start:stop]  # type: ignore[index]
+    return column[start:stop]
 
 
 # --- the NumPy CSV formatter ---------------------------------------------------------------------

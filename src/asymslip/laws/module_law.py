@@ -14,6 +14,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import replace
 from pathlib import Path
 from types import ModuleType
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -136,6 +137,7 @@ class ModuleLaw(ContactLaw):
         self.range_established = bool(description.get("range", {}).get("established", True))
         if not self.range_established:
             self.valid_half_widths, self.valid_loads = self._first_branch()
+        self.range_note = self._describe_range()
 
     @classmethod
     def from_file(cls, path: str | Path, **param_values: float) -> ModuleLaw:
@@ -151,10 +153,11 @@ class ModuleLaw(ContactLaw):
         increasing), from its range functions; all of (0, inf) for a module without them."""
         names = ("half_width_minimum", "half_width_maximum", "load_minimum", "load_maximum")
         functions = [getattr(self.module, name, None) for name in names]
-        if not all(callable(function) for function in functions):
+        called: list[Callable[..., Any]] = [f for f in functions if callable(f)]
+        if len(called) < len(names):
             return (0.0, np.inf), (0.0, np.inf)
         with np.errstate(all="ignore"):
-            a_min, a_max, P_min, P_max = (float(function(*self._values)) for function in functions)
+            a_min, a_max, P_min, P_max = (float(function(*self._values)) for function in called)
         return (a_min, a_max), (P_min, P_max)
 
     #: The scan of :meth:`_first_branch`: half-widths from 1e-12 to 1e12, log-spaced.
@@ -210,8 +213,8 @@ class ModuleLaw(ContactLaw):
                     low = middle
         return high if rises else low
 
-    @property
-    def range_note(self) -> str:
+    def _describe_range(self) -> str:
+        """:attr:`range_note`: the loads the law carries, where that is not every load."""
         low, high = self.valid_loads
         if low <= 0 and high == np.inf:
             return ""
@@ -253,9 +256,10 @@ class ModuleLaw(ContactLaw):
         return replace(state, found2=np.asarray(state.found2) & inside)
 
     def _call(self, function: Callable[..., FloatArray], a: ArrayLike) -> FloatArray:
-        return np.asarray(
+        values: FloatArray = np.asarray(
             function(np.asarray(a, dtype=np.float64), *self._values), dtype=np.float64
         )
+        return values
 
     def load(self, a: ArrayLike) -> FloatArray:
         return self._call(self.module.load, a)
@@ -271,5 +275,6 @@ class ModuleLaw(ContactLaw):
         """dL_I/dP from the module when it has it, else central differences."""
         function = getattr(self.module, "normal_edge_multiplier_slope", None)
         if function is None:
-            return super().normal_multiplier_slope_at(a, load_slope)
+            differences: FloatArray = super().normal_multiplier_slope_at(a, load_slope)
+            return differences
         return self._call(function, a)

@@ -185,10 +185,10 @@ def newton_from(
                 previous[index] = previous_kept
             if index is None and not moving.any():
                 break
-    x, converged = x.reshape(shape), converged.reshape(shape)
-    if x.ndim == 0:
-        return x[()], converged[()]
-    return x, converged
+    result, flags = x.reshape(shape), converged.reshape(shape)
+    if result.ndim == 0:
+        return result[()], flags[()]
+    return result, flags
 
 
 def _start(value: ArrayLike | None, goal: FloatArray) -> FloatArray:

@@ -48,7 +48,7 @@ import numpy as np
 from ..errors import InputError
 from ..files import CaseTable, Categorical, Progress, WrittenTable, open_table, read_table
 from ..files.collisions import Input, Output, refuse_overwriting_inputs
-from ..files.writer import Kind, table_format
+from ..files.writer import Column, Kind, table_format
 from ..laws.base import ContactLaw
 from .columns import (
     CYCLE_COLUMNS,
@@ -220,7 +220,7 @@ def sweep_file(
         for part in table.chunks(chunk_rows):
             values, friction, errors = _cycle_values(part, default_mu)
             result = evaluate_chunk(law, values, friction, edge, errors)
-            columns: dict[str, object] = {
+            columns: dict[str, Column] = {
                 name: part.values[name] if name in numbers else part.text[name]
                 for name in table.header
             }
