@@ -616,3 +616,19 @@ def test_a_tower_of_powers_gives_the_root_of_its_steep_law(power_towers, P):
         lambda x: mpmath.log(x) * x**x - mpmath.log(P), (1.5, 5.0), solver="illinois"
     )
     assert bool(found) and float(a) == pytest.approx(float(exact), rel=1e-14)
+
+
+def test_a_module_file_is_read_as_the_importer_reads_it(tmp_path):
+    """The check parses the file's bytes, so a byte-order mark (which Python's importer takes)
+    is no syntax error, and bytes that are not UTF-8 are named as the import would name them."""
+    law = tmp_path / "bom.py"
+    law.write_bytes(
+        "\ufeffimport numpy\n__asymslip_law__ = {'name': 'bom', 'params': []}\n"
+        "def load(a):\n    return a**2\ndef load_slope(a):\n    return 2 * a\n"
+        "def normal_edge_multiplier(a):\n    return numpy.sqrt(2 / a) / numpy.pi * 2 * a\n".encode()
+    )
+    assert ModuleLaw.from_file(law).half_width(4.0) == pytest.approx(2.0, rel=1e-15)
+    bad = tmp_path / "bad.py"
+    bad.write_bytes(b"x = '\xff'\n")
+    with pytest.raises(InputError, match=r"^module: could not be imported \(SyntaxError: .*utf-8"):
+        ModuleLaw.from_file(bad)

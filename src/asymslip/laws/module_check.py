@@ -112,7 +112,7 @@ def _check_function(node: ast.FunctionDef, path: str, names: set[str], lazy: boo
         raise _refuse(path, node.lineno, f"computes an annotation of {node.name}")
 
 
-def check_law_source(source: str, path: str) -> None:
+def check_law_source(source: str | bytes, path: str) -> None:
     """Refuse ``source`` unless it is a law module whose import runs none of its own code.
 
     Raises
@@ -123,7 +123,7 @@ def check_law_source(source: str, path: str) -> None:
     """
     try:
         tree = ast.parse(source, filename=path)
-    except (SyntaxError, ValueError) as error:  # ValueError: a NUL byte
+    except (SyntaxError, ValueError) as error:  # ValueError: a NUL byte; bad encoding too
         raise InputError(
             "module", f"could not be imported ({type(error).__name__}: {error})", path
         ) from None

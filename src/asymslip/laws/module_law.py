@@ -39,9 +39,9 @@ def import_law_module(path: str | Path) -> ModuleType:
     if not path.is_file():
         raise InputError("module", "no such file", str(path))
     try:
-        source = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as error:
-        raise InputError("module", f"cannot be read as Python text ({error})", str(path)) from None
+        source = path.read_bytes()  # decoded as the importer would (a BOM, a coding line)
+    except OSError as error:
+        raise InputError("module", f"cannot be read ({error.strerror})", str(path)) from None
     if path.suffix != ".py":
         raise InputError("module", "is not a Python module (expected a .py file)", str(path))
     check_law_source(source, str(path))
