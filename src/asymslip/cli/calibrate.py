@@ -66,10 +66,20 @@ def register(commands: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     from ..calibration import calibrate, read_traces
     from ..calibration.report import checks, format_calibration
-    from ..files.atomic import refuse_same_file
+    from ..files.collisions import Input, Output, refuse_overwriting_inputs
 
     if args.out is not None:  # before anything is read: the traces must survive a typo
-        refuse_same_file(args.out, "out", args.traces)
+        # A CalculiX .dat takes its coordinates from the job's .frd or .inp beside it.
+        beside = (
+            [args.traces.with_suffix(".frd"), args.traces.with_suffix(".inp")]
+            if args.traces.suffix.lower() == ".dat"
+            else []
+        )
+        refuse_overwriting_inputs(
+            [Input(args.traces, "traces", "the traces")]
+            + [Input(path, "traces", "the job's coordinates") for path in beside],
+            [Output(args.out, "out")],
+        )
     traces = read_traces(args.traces, loads=args.loads, field=args.field)
     calibration = calibrate(traces, noise=args.noise, origin=args.origin)
     if args.out is not None:
