@@ -59,8 +59,11 @@ for fit in calibration.right:
 
 # %%
 # The slip zone from the calibrated law (with the error its data propagate to it), from Hertz,
-# and the FE model's own.  Four loads of a coarse mesh fix a(P) only roughly, and the slope
-# a'(P) that (17) needs through L_II even less: the calibrated b says how far it can be trusted.
+# and the FE model's own.  On this coarse mesh each edge is known to half an element (0.025
+# mm) while it moves 0.06 mm from P1 to P2: the slope a'(P) that (17) needs through L_II is
+# barely resolved, and the calibrated b comes with an error to match (about 1 mm here).  The
+# tests' mesh (a(P2)/30) halves the error of a; a study's (a(P2)/100 or finer) is what the
+# calibrated slip zone needs.
 cycle = LoadCycle(**CYCLE)
 law = calibration.law()
 from_data = slip_zone(law, cycle, MU, edge="both")
