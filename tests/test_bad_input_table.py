@@ -207,6 +207,7 @@ FILES = {
         for P, x, p in (row.split(",") for row in hertz_traces().splitlines()[1:])
     ),
     "not_frd.frd": "hello\n",
+    "surface.vtu": "<VTKFile/>\n",  # a mesh file: reading it needs meshio (the fe extra)
     # law modules written by hand in the form `asymslip derive` writes (which refuses these)
     "inverse.py": "import numpy\n__asymslip_law__ = {'name': 'inverse', 'params': []}\n"
     "def load(a):\n    return 1 / a\ndef load_slope(a):\n    return -1 / a**2\n"
@@ -2597,6 +2598,12 @@ MISSING_EXTRAS = [
         ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/out.parquet"),
         "out.parquet",
     ),
+    (
+        "fe",
+        "meshio",
+        ("calibrate", "{d}/surface.vtu", "--out", "{d}/cal_without_meshio.json"),
+        "cal_without_meshio.json",
+    ),
 ]
 #: (package, a command that must work without it): only what needs an extra may refuse.
 WITHOUT_EXTRAS = [
@@ -2628,7 +2635,7 @@ WITHOUT_EXTRAS = [
 #: JSON one after the other and printing each one's (exit status, stdout, stderr) as JSON.
 WITHOUT_OPTIONAL_PACKAGES = """
 import contextlib, io, json, sys
-for package in ("matplotlib", "scipy", "sympy", "pyarrow"):
+for package in ("matplotlib", "scipy", "sympy", "pyarrow", "meshio"):
     sys.modules[package] = None
 from asymslip.cli import main
 results = []
