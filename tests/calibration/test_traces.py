@@ -289,7 +289,9 @@ def test_a_load_balance_off_by_ten_percent_is_a_warning_in_the_calibration(tmp_p
     rows = [[P, x, repr(1.1 * float(p))] for P, x, p in _rows(121)]
     calibration = calibrate(read_traces(_write(tmp_path, rows)))
     assert [round(ratio, 2) for _, ratio in calibration.load_balance] == [1.1, 1.1, 1.1]
-    assert any("the pressures integrate to 1.1" in w for w in calibration.warnings)
+    assert any("the pressures integrate to 1.1 times the load" in w for w in calibration.warnings)
+    # The two edges' balance (AS6) sees it too, far beyond its error.
+    assert any("the balance of the two edges (AS6) is 1.1" in w for w in calibration.warnings)
     assert calibration.to_dict()["warnings"] == list(calibration.warnings)
 
 

@@ -449,9 +449,9 @@ def _balance_warnings(balances: list[tuple[float, float]]) -> list[str]:
     off = [(P, ratio) for P, ratio in balances if abs(ratio - 1) > BALANCE_WARNING]
     if not off:
         return []
-    listed = ", ".join(f"{ratio:.4g} at P = {P:.6g}" for P, ratio in off)
+    listed = ", ".join(f"{ratio:.4g} times the load at P = {P:.6g}" for P, ratio in off)
     return [
-        f"the pressures integrate to {listed} times the load (1 for consistent data; more "
+        f"the pressures integrate to {listed} (1 for consistent data; more "
         f"than {BALANCE_WARNING:.0%} off): check the loads and the units; a(P) and L_I(P), "
         "and the slip zone with them, are only as right as the loads"
     ]
