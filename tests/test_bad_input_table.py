@@ -173,6 +173,7 @@ FILES = {
     "cases_comments.csv": "# no header\n\n",
     "cases_no_Q2.csv": "P1,Q1,P2\n100,0,105\n",
     "cases_header_only.csv": "P1,Q1,P2,Q2\n",
+    "cases_field_counts.csv": "P1,Q1,P2,Q2\n100,0,105\n1,000,0,105,1\n",
     "cases_binary.csv": b"P1,Q1,P2,Q2\n100,0,105,1\n100,0,\xff05,1\n",
     "cases_clash.csv": "P1,Q1,P2,Q2,b\n100,0,105,1,3\n",
     "cases_wide.csv": "P1,Q1,P2,Q2\n100,-9,1e4,999\n100,0,105,1\n",
@@ -191,9 +192,22 @@ FILES = {
     "path.csv": "P,Q\n100,0\n105,1\n",
     "profile.csv": "x,h\n" + "".join(f"{x:g},{x * x / 2!r}\n" for x in range(-30, 31)),
     "profile_one_point.csv": "x,h\n0,0\n",
+    # inputs named like the files solve --out writes (tractions.csv, slip.csv)
+    "tractions.csv": "P,Q\n100,0\n105,1\n",
+    "slip.csv": "x,h\n" + "".join(f"{x:g},{x * x / 2!r}\n" for x in range(-30, 31)),
     "traces.csv": hertz_traces(),
     "traces_nan.csv": hertz_traces().replace("\n80.0,0.0,", "\n80.0,nan,", 1),
     "calibration_bad.json": "{not json",
+    # issue 17: semicolons, a load given twice, pressures integrating to twice the load
+    "traces_semicolons.csv": hertz_traces().replace(",", ";"),
+    "traces_twice.csv": hertz_traces() + hertz_traces().split("\n", 1)[1].split("\n100.0,")[0],
+    "traces_double.csv": "P,x,p\n"
+    + "".join(
+        f"{P},{x},{2 * float(p)!r}\n"
+        for P, x, p in (row.split(",") for row in hertz_traces().splitlines()[1:])
+    ),
+    "not_frd.frd": "hello\n",
+    "surface.vtu": "<VTKFile/>\n",  # a mesh file: reading it needs meshio (the fe extra)
     # law modules written by hand in the form `asymslip derive` writes (which refuses these)
     "inverse.py": "import numpy\n__asymslip_law__ = {'name': 'inverse', 'params': []}\n"
     "def load(a):\n    return 1 / a\ndef load_slope(a):\n    return -1 / a**2\n"
@@ -203,6 +217,10 @@ FILES = {
     "def normal_edge_multiplier(a, k):\n"
     "    return numpy.sqrt(2 / a) / numpy.pi * load_slope(a, k)\n",
     "broken_law.py": "def load(a:\n",
+    # a law module in form, but its import would run code (line 2)
+    "runs_code.py": "__asymslip_law__ = {'name': 'runs', 'params': []}\nprint('ran')\n"
+    "def load(a):\n    return a\ndef load_slope(a):\n    return 1 + 0 * a\n"
+    "def normal_edge_multiplier(a):\n    return a\n",
     "law.txt": "P(a) = a**2\n",
 }
 
@@ -217,6 +235,8 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
         else:
             path.write_bytes(content.encode("utf-8"))
     (folder / "a_file").write_text("not a folder\n")
+    os.symlink(folder / "cases.csv", folder / "cases_symlink.csv")
+    os.link(folder / "cases.csv", folder / "cases_hardlink.csv")
     (folder / "a_folder").mkdir()
     (folder / "folder.py").mkdir()
     # The law modules of `asymslip derive` that the table uses (their derivation is a case of
@@ -228,6 +248,8 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
     for name, formula, params in (
         ("cubic", "E_star*a**2 - k*a**3", "E_star k"),
         ("tanh_law", "k*tanh(a)", "k"),
+        ("selfpow", "a**a", ""),
+        ("tower", "a**a**a", ""),
     ):
         status, out, err = run(
             [
@@ -590,8 +612,28 @@ def physics_cases() -> list[Bad]:
         Bad(
             "bulk tension that overflows the denominator of (17)",
             ("slip-zone", *hertz(R="1e300", P1="1e-300", sigma2="1.7e308")),
-            "--mu",
-            r"is not positive \(a negative number beyond double precision\)",
+            "--sigma2",
+            r"bulk-tension change sigma2 - sigma1 is too large for mu = 0\.1: .* is not "
+            r"positive \(a negative number beyond double precision\)",
+        ),
+        Bad(
+            "--sigma2 1e300 names the tension, not --mu",
+            ("slip-zone", *hertz(sigma2="1e300")),
+            "--sigma2",
+            r"bulk-tension change sigma2 - sigma1 is too large for mu = 0\.1: at the right edge "
+            r"the denominator of \(17\).*is not positive \(-1\.569\d*e\+299\)",
+        ),
+        Bad(
+            "--sigma1 -1e300 names the tension (at state 2's option)",
+            ("slip-zone", *hertz(sigma1="-1e300")),
+            "--sigma2",
+            r"bulk-tension change sigma2 - sigma1 is too large",
+        ),
+        Bad(
+            "gross sliding with a subnormal P1 and Q1 (mu P1 rounds to 0)",
+            ("slip-zone", *hertz(P1="5e-324", Q1="5e-324", P2="1e-323", Q2="0")),
+            "--Q1",
+            r"gross sliding",
         ),
         Bad(
             "power law: A = 1e300 overflows",
@@ -614,8 +656,8 @@ def physics_cases() -> list[Bad]:
         Bad(
             "zero denominator of (17) (bulk tension)",
             ("slip-zone", *hertz(Q2="0", sigma2=repr(eta_zero * (P2 - P1)))),
-            "--mu",
-            r"denominator of \(17\).*not positive",
+            "--sigma2",
+            r"bulk-tension change .* denominator of \(17\).*not positive",
         ),
         Bad(
             "stick boundary beyond the contact (bulk tension)",
@@ -822,6 +864,24 @@ def law_cases() -> list[Bad]:
             r"not an asymslip law module",
         ),
         Bad(
+            "module file is a folder",
+            (*module, "{d}/a_folder", *cycle()),
+            "--module",
+            r"is a folder, not a law module file",
+        ),
+        Bad(
+            "module file whose import would run code",
+            (*module, "{d}/runs_code.py", *cycle()),
+            "--module",
+            r"not an asymslip law module: line 2 evaluates an expression.*nothing of it was run",
+        ),
+        Bad(
+            "a**a below its rising branch",
+            (*module, "{d}/selfpow.py", *cycle(P1="0.5", P2="0.6", Q2="0.01")),
+            "--P1",
+            r"no contact half-width of the selfpow law .* loads above 0\.692201 only",
+        ),
+        Bad(
             "module file with a syntax error",
             (*module, "{d}/broken_law.py", *cycle()),
             "--module",
@@ -988,6 +1048,24 @@ def derive_cases() -> list[Bad]:
             "--out",
             r"cannot write",
         ),
+        Bad(
+            "derive --out numpy.py (would shadow NumPy)",
+            derive("k*a**2", name="numpy", out="{d}/numpy.py"),
+            "--out",
+            r"numpy\.py would shadow an installed module .*numpy.*choose another file name",
+        ),
+        Bad(
+            "derive --out json.py (would shadow the standard library)",
+            derive("k*a**2", out="{d}/json.py"),
+            "--out",
+            r"json\.py would shadow a module of Python's standard library",
+        ),
+        Bad(
+            "derive --out asymslip.py (would shadow asymslip)",
+            derive("k*a**2", out="{d}/asymslip.py"),
+            "--out",
+            r"asymslip\.py would shadow asymslip's own package",
+        ),
         Bad("derive a parameter named a", derive("k*a**2", "a k"), "--params", r"\ba\b"),
         Bad("derive a parameter twice", derive("k*a**2", "k k"), "--params", r"distinct|twice"),
         Bad(
@@ -1078,13 +1156,78 @@ def sweep_cases() -> list[Bad]:
             "sweep: --out is the input",
             sweep("{d}/cases.csv", out="{d}/cases.csv"),
             "--out",
-            r"is also the input",
+            r"is also an input",
         ),
         Bad(
             "sweep: --out is the input by another path",
             sweep("{d}/cases.csv", out="{d}/a_folder/../cases.csv"),
             "--out",
-            r"is also the input",
+            r"is also an input",
+        ),
+        Bad(
+            "sweep: --out a symbolic link to the input",
+            sweep("{d}/cases.csv", out="{d}/cases_symlink.csv"),
+            "--out",
+            r"cases_symlink\.csv is also an input \(the cases, .*cases\.csv\)",
+        ),
+        Bad(
+            "sweep: --out a hard link of the input",
+            sweep("{d}/cases.csv", out="{d}/cases_hardlink.csv"),
+            "--out",
+            r"cases_hardlink\.csv is also an input \(the cases",
+        ),
+        Bad(
+            "sweep: --out is the table law's file",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "table",
+                "--table",
+                "{d}/hertz.csv",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/hertz.csv",
+            ),
+            "--out",
+            r"hertz\.csv is also an input \(the table law",
+        ),
+        Bad(
+            "sweep: --out is the law module",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "module",
+                "--module",
+                "{d}/tanh_law.py",
+                "--param",
+                "k=10",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/./tanh_law.py",
+            ),
+            "--out",
+            r"tanh_law\.py is also an input \(the law module",
+        ),
+        Bad(
+            "sweep: --out is the calibration",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "calibrated",
+                "--calibration",
+                "{d}/calibration.json",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/calibration.json",
+            ),
+            "--out",
+            r"calibration\.json is also an input \(the calibration",
         ),
         Bad(
             "sweep: --out in a missing folder",
@@ -1215,6 +1358,145 @@ def command_line_cases() -> list[Bad]:
     ]
 
 
+def match_cases() -> list[Bad]:
+    """The laboratory match: the rig's options, and the requests no rig can answer."""
+
+    def match(*options: str) -> tuple[str, ...]:
+        return ("match", *hertz(), *options)
+
+    near_flat = (
+        "--law",
+        "flat-rounded",
+        "--flat-half-width",
+        "10",
+        "--R",
+        "1",
+        "--E-star",
+        "1",
+        "--mu",
+        "0.3",
+        "--P1",
+        "0.0960507665409116",
+        "--Q1",
+        "-0.025256618057330878",
+        "--P2",
+        "0.14251897820901327",
+        "--Q2",
+        "0.037475467694606364",
+    )
+    return [
+        Bad("match without --rig", match(), "--rig", r"required"),
+        Bad("match --rig cylinder", match("--rig", "cylinder"), "--rig", r"invalid choice"),
+        Bad(
+            "match --rig-E-star -1",
+            match("--rig", "hertz", "--rig-E-star", "-1"),
+            "--rig-E-star",
+            r"must be > 0",
+        ),
+        Bad("match --rig-mu 0", match("--rig", "hertz", "--rig-mu", "0"), "--rig-mu", r"> 0"),
+        Bad(
+            "match --rig-mu -inf",
+            match("--rig", "hertz", "--rig-mu", "-inf"),
+            "--rig-mu",
+            FINITE,
+        ),
+        Bad(
+            "match --rig-R -1",
+            match("--rig", "hertz", "--rig-R", "-1", "2"),
+            "--rig-R",
+            r"every value must be > 0",
+        ),
+        Bad(
+            "match --rig-R and --rig-R-range",
+            match("--rig", "hertz", "--rig-R", "1", "--rig-R-range", "1", "2"),
+            "--rig-R",
+            r"either --rig-R or --rig-R-range",
+        ),
+        Bad(
+            "match --rig-R-range upside down",
+            match("--rig", "hertz", "--rig-R-range", "2", "1"),
+            "--rig-R",
+            r"upper end must be >= the lower end",
+        ),
+        Bad(
+            "match: a flat half-width on a Hertz rig",
+            match("--rig", "hertz", "--rig-flat-half-width", "1"),
+            "--rig-flat-half-width",
+            r"needs --rig flat-rounded",
+        ),
+        Bad(
+            "match --rig-max-P 0",
+            match("--rig", "hertz", "--rig-max-P", "0"),
+            "--rig-max-P",
+            r"must be > 0",
+        ),
+        Bad(
+            "match --rig-max-Q nan",
+            match("--rig", "hertz", "--rig-max-Q", "nan"),
+            "--rig-max-Q",
+            r"must be > 0",
+        ),
+        Bad(
+            "match: an edge that does not slip",
+            ("match", *hertz(Q2="0.1"), "--rig", "hertz"),
+            "--edge",
+            r"does not slip in this cycle",
+        ),
+        Bad(
+            "match: the prototype's L_I falls along the path",
+            (
+                "match",
+                "--law",
+                "power",
+                "--A",
+                "0.05",
+                "--n",
+                "1.2",
+                "--E-star",
+                "1",
+                "--mu",
+                "0.3",
+                "--P1",
+                "1",
+                "--Q1",
+                "0",
+                "--P2",
+                "1.05",
+                "--Q2",
+                "0.02",
+                "--rig",
+                "hertz",
+            ),
+            "--law",
+            r"L_I does not rise along the path",
+        ),
+        Bad(
+            "match: every rig cycle slides grossly",
+            ("match", *near_flat, "--rig", "hertz"),
+            "--rig",
+            r"every rig cycle .* slides grossly",
+        ),
+        Bad(
+            "match: no rig within the limits comes near",
+            match("--rig", "hertz", "--rig-R", "1000", "--rig-max-P", "1e-3"),
+            "--rig",
+            r"no rig within its limits",
+        ),
+        Bad(
+            "match --verify-profile without --verify-E-star",
+            match("--rig", "hertz", "--verify", "--verify-profile", "x**2/2"),
+            "--verify-E-star",
+            r"is required with a --verify profile",
+        ),
+        Bad(
+            "match --elements 10 --verify",
+            match("--rig", "hertz", "--verify", "--elements", "10"),
+            "--elements",
+            r"must be at least 64",
+        ),
+    ]
+
+
 SOLVE = ("--elements", "100", "--steps", "3")
 
 
@@ -1316,12 +1598,41 @@ def solve_cases() -> list[Bad]:
             r"reference solver overflows double precision",
         ),
         Bad(
+            "solve: --path inside --out, named as a file solve writes",
+            solve(*HERTZ, "--mu", "0.1", "--path", "{d}/tractions.csv", "--out", "{d}"),
+            "--out",
+            r"tractions\.csv is also an input \(the load path",
+        ),
+        Bad(
+            "solve: --profile-table inside --out, named as a file solve writes",
+            solve("--profile-table", "{d}/slip.csv", *profile, "--out", "{d}/."),
+            "--out",
+            r"slip\.csv is also an input \(the profile table",
+        ),
+        Bad(
             "solve --out under a file",
             solve(*hertz(), "--out", "{d}/a_file/solver"),
             "--out",
             r"cannot create",
         ),
     ]
+
+
+#: fe-model's options but --Q2 (steel, R = 50, the cycle of tests/fe).
+FE_MODEL = (
+    "--R",
+    "50",
+    "--E-star",
+    "115384.6",
+    "--mu",
+    "0.5",
+    "--P1",
+    "1000",
+    "--Q1",
+    "-100",
+    "--P2",
+    "1100",
+)
 
 
 def calibrate_cases() -> list[Bad]:
@@ -1384,13 +1695,88 @@ def calibrate_cases() -> list[Bad]:
             "calibrate --out is TRACES",
             ("calibrate", traces, "--out", traces),
             "--out",
-            r"is also the input",
+            r"is also an input",
+        ),
+        Bad(
+            "calibrate --out is TRACES by another path",
+            ("calibrate", traces, "--out", "{d}/a_folder/../traces.csv"),
+            "--out",
+            r"is also an input \(the traces",
         ),
         Bad(
             "calibrate --out in a missing folder",
             ("calibrate", traces, "--out", "{d}/missing/calibration.json"),
             "--out",
             r"cannot write",
+        ),
+        Bad(
+            "calibrate: semicolons between fields",
+            ("calibrate", "{d}/traces_semicolons.csv"),
+            "TRACES",
+            r"the fields are separated by ';'",
+        ),
+        Bad(
+            "calibrate: a load given twice",
+            ("calibrate", "{d}/traces_twice.csv"),
+            "TRACES",
+            r"P = 80 is given twice",
+        ),
+        Bad(
+            "calibrate: pressures integrating to twice the load",
+            ("calibrate", "{d}/traces_double.csv"),
+            "TRACES",
+            r"the pressures integrate to 2(\.0+)? times the load",
+        ),
+        Bad(
+            "calibrate --field on a CSV",
+            ("calibrate", traces, "--field", "CPRESS"),
+            "--field",
+            r"is for mesh files",
+        ),
+        Bad(
+            "calibrate: an .frd that is not one",
+            ("calibrate", "{d}/not_frd.frd"),
+            "TRACES",
+            r"not a CalculiX .frd file",
+        ),
+        Bad(
+            "fe-model: gross sliding",
+            ("fe-model", *FE_MODEL, "--Q2", "600", "--out", "{d}/fe"),
+            "--Q2",
+            r"gross sliding at state 2",
+        ),
+        Bad(
+            "fe-model --nu 0.5",
+            ("fe-model", *FE_MODEL, "--Q2", "150", "--nu", "0.5", "--out", "{d}/fe"),
+            "--nu",
+            r"must be in \[0, 0.5\)",
+        ),
+        Bad(
+            "fe-model --elements-per-half-width 4",
+            (
+                "fe-model",
+                *FE_MODEL,
+                "--Q2",
+                "150",
+                "--elements-per-half-width",
+                "4",
+                "--out",
+                "{d}/fe",
+            ),
+            "--elements-per-half-width",
+            r"must be an integer >= 8",
+        ),
+        Bad(
+            "fe-model: a contact not small beside R",
+            ("fe-model", *FE_MODEL, "--Q2", "150", "--R", "0.5", "--out", "{d}/fe"),
+            "--R",
+            r"is not small beside",
+        ),
+        Bad(
+            "fe-model --out is a file",
+            ("fe-model", *FE_MODEL, "--Q2", "150", "--out", "{d}/a_file"),
+            "--out",
+            r"is not a folder",
         ),
         Bad(
             "calibrated law without --calibration",
@@ -1522,6 +1908,7 @@ BAD: list[Bad] = [
     *command_line_cases(),
     *solve_cases(),
     *calibrate_cases(),
+    *match_cases(),
     *stress_cases(),
 ]
 
@@ -1541,11 +1928,13 @@ def solve_increasing(
 
 
 def module_law_check(
-    law: Callable[[float], float], high: float, P1: float, P2: float
+    law: Callable[[float], float], high: float, P1: float, P2: float, low: float = 0.0
 ) -> Callable[..., None]:
+    """a1, a2 against bisection of the law on (low, high), where it increases."""
+
     def check(result: dict, folder: Path) -> None:
         for key, P in (("a1", P1), ("a2", P2)):
-            assert result[key] == pytest.approx(solve_increasing(law, P, 0.0, high), rel=1e-12)
+            assert result[key] == pytest.approx(solve_increasing(law, P, low, high), rel=1e-12)
         assert 0 < result["b"] <= result["a2"]
 
     return check
@@ -1731,6 +2120,11 @@ def valid_cases() -> list[Valid]:
             slip_zone_check(1e-320, 0, 2e-320, 0, 0.1, slips=False, rel=1e-3),
         ),
         Valid(
+            "P1 = 5e-324 (mu P1 rounds to 0), Q1 = 0: not gross sliding",
+            ("slip-zone", *hertz(P1="5e-324", P2="1e-323", Q2="0"), "--json"),
+            slip_zone_check(5e-324, 0, 1e-323, 0, 0.1, slips=False, rel=1e-3),
+        ),
+        Valid(
             "P1 = 1, P2 = 1e6 (no slip; eq24 flagged)",
             ("slip-zone", *hertz(P1="1", P2="1e6"), "--json"),
             slip_zone_check(1, 0, 1e6, 1, 0.1, slips=False, warns=r"^eq24 > 0\.1"),
@@ -1840,6 +2234,22 @@ def valid_cases() -> list[Valid]:
             ),
             module_law_check(lambda a: 10 * math.tanh(a), 50.0, 1.0, 1.05),
         ),
+        Valid(
+            "a**a module law on its rising branch",
+            (*module, "{d}/selfpow.py", *cycle(P1="2", P2="2.1", Q2="0.01"), "--json"),
+            module_law_check(lambda a: a**a, 3.0, 2.0, 2.1, low=1 / math.e),
+        ),
+        Valid(
+            "a**a**a module law at P = 1e300",
+            (*module, "{d}/tower.py", *cycle(P1="1e300", P2="1.05e300", Q2="1e298"), "--json"),
+            module_law_check(
+                lambda a: math.exp(math.log(a) * a**a) if a < 4.27 else math.inf,
+                4.3,
+                1e300,
+                1.05e300,
+                low=1.0,
+            ),
+        ),
         # tractions and slip: far from the edge is reported, not refused
         Valid(
             "traction --x 0.1 -1e-2",
@@ -1942,6 +2352,11 @@ def valid_cases() -> list[Valid]:
                 "{d}/minus.py",
             ),
             derive_check("minus", r"positive and increasing for a > 1/k"),
+        ),
+        Valid(
+            "derive a tower of powers",
+            ("derive", "--P-of-a", "a**a**a**a", "--name", "tower4", "--out", "{d}/tower4.py"),
+            derive_check("tower4", r"was not established symbolically"),
         ),
         Valid(
             "derive a long sum",
@@ -2092,6 +2507,23 @@ ROW_ERRORS = [
             8: r"^Q1: missing",
         },
         (3, 9),
+    ),
+    RowErrors(
+        "sweep: no row with the header's field count (pyarrow read it as an empty file)",
+        (
+            "sweep",
+            "{d}/cases_field_counts.csv",
+            *HERTZ,
+            "--mu",
+            "0.1",
+            "--out",
+            "{d}/field_counts.csv",
+        ),
+        "field_counts.csv",
+        {
+            2: r"^line has 3 fields, the header has 4: '100,0,105'",
+            3: r"^line has 5 fields, the header has 4: '1,000,0,105,1'",
+        },
     ),
     RowErrors(
         "sweep: bad values in the mu column",
@@ -2263,6 +2695,12 @@ MISSING_EXTRAS = [
         ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/out.parquet"),
         "out.parquet",
     ),
+    (
+        "fe",
+        "meshio",
+        ("calibrate", "{d}/surface.vtu", "--out", "{d}/cal_without_meshio.json"),
+        "cal_without_meshio.json",
+    ),
 ]
 #: (package, a command that must work without it): only what needs an extra may refuse.
 WITHOUT_EXTRAS = [
@@ -2294,7 +2732,7 @@ WITHOUT_EXTRAS = [
 #: JSON one after the other and printing each one's (exit status, stdout, stderr) as JSON.
 WITHOUT_OPTIONAL_PACKAGES = """
 import contextlib, io, json, sys
-for package in ("matplotlib", "scipy", "sympy", "pyarrow"):
+for package in ("matplotlib", "scipy", "sympy", "pyarrow", "meshio"):
     sys.modules[package] = None
 from asymslip.cli import main
 results = []

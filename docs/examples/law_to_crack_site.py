@@ -17,8 +17,13 @@ bulk tension, tension positive, plane strain).
 # the bulk tension by pi eta a1 / (4 mu) = 0.5 of it.  The slip zone comes from the paper's
 # edge asymptotes (the headline b is second order, with its stated accuracy).
 import numpy as np
+from matplotlib.figure import Figure
 
 from asymslip import FlatRoundedLaw, LoadCycle, slip_zone
+from asymslip.nucleation import Criterion, Material, nucleation
+from asymslip.solver import solve
+from asymslip.stress.asymptote import edge_amplitude
+from asymslip.stress.solver_source import solver_stress
 
 law = FlatRoundedLaw(c=1.0, R=10.0, E_star=1.0)
 mu = 0.3
@@ -26,7 +31,9 @@ P1, P2 = float(law.load(2.0)), float(law.load(2.1))
 eta = 0.5 * 4 * mu / (np.pi * 2.0)
 cycle = LoadCycle(P1, 0.0, P2, 0.6 * mu * (P2 - P1), 0.0, eta * (P2 - P1))
 zone = slip_zone(law, cycle, mu, edge="both")
-print(f"right edge: a1 = {zone.a1:.4f}, a2 = {zone.a2:.4f}, b = {zone.b:.4f} +- {zone.b_accuracy:.1e}")
+print(
+    f"right edge: a1 = {zone.a1:.4f}, a2 = {zone.a2:.4f}, b = {zone.b:.4f} +- {zone.b_accuracy:.1e}"
+)
 print(f"left edge slips: {bool(zone.left.slip_direction)}")
 
 # %%
@@ -34,8 +41,6 @@ print(f"left edge slips: {bool(zone.left.slip_direction)}")
 # --------------------------------------------------------------
 # No solver: the field of the square-root loads (4) and (49), state 2 minus state 1, each
 # value with a stated accuracy that grows with the distance from the edge.
-from asymslip.stress.asymptote import edge_amplitude
-
 x = np.linspace(zone.a2 - 0.15, zone.a2 + 0.05, 41)
 depth = np.linspace(0.0, 0.1, 21)
 X, Y = np.meshgrid(x, depth)
@@ -49,9 +54,6 @@ print(f"largest stated accuracy there: {asymptote.accuracy.max():.2e}")
 # ------------------------------------------------------
 # The criteria need the stress at each extreme (the locked-in shear of the history), which
 # only the solver gives.  Its amplitude agrees with the asymptote within the stated accuracy.
-from asymslip.solver import solve
-from asymslip.stress.solver_source import solver_stress
-
 result = solve(law, cycle, mu, elements=2000)
 solver = solver_stress(result, X.ravel(), Y.ravel())
 difference = np.abs(solver.amplitude.sxx - asymptote.amplitude.sxx)
@@ -68,8 +70,6 @@ print(
 # Smith-Watson-Topper and Findley on the critical plane, searched over the planes through
 # every point near both edges, and the theory of critical distances (L = 0.02) below the
 # surface hot spot; E and nu of the specimen give the strains.
-from asymslip.nucleation import Criterion, Material, nucleation
-
 material = Material(E=2 * (1 - 0.3**2), nu=0.3, k_findley=0.3, L=0.02)
 found = nucleation(result, material, [Criterion.SWT, Criterion.FINDLEY, Criterion.RUIZ])
 for finding in found.findings:
@@ -82,11 +82,6 @@ for finding in found.findings:
 # %%
 # The picture
 # -----------
-import matplotlib
-
-matplotlib.use("Agg")
-from matplotlib.figure import Figure
-
 figure = Figure(figsize=(10, 3.6))
 left, right = figure.subplots(1, 2)
 image = left.contourf(x, depth, amplitude, levels=24, cmap="RdBu_r")

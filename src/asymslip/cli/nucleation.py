@@ -12,6 +12,7 @@ import argparse
 import json
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -19,6 +20,9 @@ from ..errors import InputError
 from .cycle_options import add_cycle_options, build_cycle
 from .laws import add_law_options, build_law
 from .parser import number, whole_number
+
+if TYPE_CHECKING:  # the command's own imports are lazy, for a fast start
+    from ..nucleation import Criterion, NucleationResult
 
 UNITS = {
     "swt": "stress x strain",
@@ -29,7 +33,7 @@ UNITS = {
 }
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     from ..solver import DEFAULT_ELEMENTS
 
     parser = commands.add_parser(
@@ -75,7 +79,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.set_defaults(run=run)
 
 
-def _criteria(args: argparse.Namespace):  # noqa: ANN202 - a tuple of Criterion
+def _criteria(args: argparse.Namespace) -> tuple[Criterion, ...]:
     from ..nucleation import criteria_from_names
 
     if args.criteria is not None:
@@ -143,7 +147,7 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _summary(found, warnings: list[str]) -> str:  # noqa: ANN001 - a NucleationResult
+def _summary(found: NucleationResult, warnings: list[str]) -> str:
     lines = []
     for edge in ("right", "left"):
         lines.append(f"{edge}-hand edge:")

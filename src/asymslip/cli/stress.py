@@ -13,6 +13,7 @@ import argparse
 import json
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -21,10 +22,13 @@ from .cycle_options import add_cycle_options, build_cycle
 from .laws import add_law_options, build_law
 from .parser import number, whole_number
 
+if TYPE_CHECKING:  # the command's own imports are lazy, for a fast start
+    from ..stress.field import CycleStress
+
 SOURCES = ("solver", "asymptote")
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     from ..solver import DEFAULT_ELEMENTS
 
     stress = commands.add_parser(
@@ -89,7 +93,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     stress.set_defaults(run=run)
 
 
-def _field(args: argparse.Namespace):  # noqa: ANN202 - a CycleStress
+def _field(args: argparse.Namespace) -> CycleStress:
     law, cycle = build_law(args), build_cycle(args)
     x = np.asarray(args.x, dtype=float)
     depth = np.asarray(args.depth, dtype=float)
@@ -136,7 +140,7 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _write(field, args: argparse.Namespace) -> None:  # noqa: ANN001 - a CycleStress
+def _write(field: CycleStress, args: argparse.Namespace) -> None:
     from ..stress.output import draw, write_table
 
     target = Path(args.out)
@@ -161,7 +165,7 @@ def _write(field, args: argparse.Namespace) -> None:  # noqa: ANN001 - a CycleSt
         print(f"wrote {path}", file=sys.stderr)
 
 
-def _summary(field) -> str:  # noqa: ANN001 - a CycleStress
+def _summary(field: CycleStress) -> str:
     """One line per point: the amplitude (and the accuracy) or the states."""
     shown = field.amplitude if field.amplitude is not None else field.states[-1]
     what = "amplitude (state 2 - state 1)" if field.amplitude is not None else "last state"
@@ -174,7 +178,8 @@ def _summary(field) -> str:  # noqa: ANN001 - a CycleStress
         row = [field.x[i], field.depth[i], shown.sxx[i], shown.syy[i], shown.sxy[i]]
         cells = [f"{value:14.7g}" for value in row]
         if field.accuracy is not None:
-            cells += [f"{field.accuracy[i]:14.3g}", f"{'yes' if field.near_edge[i] else 'no':>14}"]
+            near = field.near_edge is not None and bool(field.near_edge[i])
+            cells += [f"{field.accuracy[i]:14.3g}", f"{'yes' if near else 'no':>14}"]
         lines.append("  " + "  ".join(cells))
     lines.append(
         "warnings: "

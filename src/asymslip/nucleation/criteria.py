@@ -105,22 +105,24 @@ def on_planes(
 ) -> FloatArray:
     """The criterion at every point on planes ``theta`` (broadcast: points, or points x
     angles), from the states' stresses."""
-    angles = theta if theta.ndim == 2 else theta[:, None]
-    s = [component[:, :, None] for component in (history.sxx, history.syy, history.sxy)]
-    normal = plane_normal_stress(*s, angles[None])
+    angles = (theta if theta.ndim == 2 else theta[:, None])[None]
+    sxx, syy, sxy = (c[:, :, None] for c in (history.sxx, history.syy, history.sxy))
+    normal = np.asarray(plane_normal_stress(sxx, syy, sxy, angles))
     largest = normal.max(axis=0)
     if criterion is Criterion.FINDLEY:
-        shear = plane_shear_stress(*s, angles[None])
+        assert material.k_findley is not None  # Material.require
+        shear = np.asarray(plane_shear_stress(sxx, syy, sxy, angles))
         amplitude = 0.5 * (shear.max(axis=0) - shear.min(axis=0))
         value = findley_parameter(amplitude, largest, material.k_findley)
     elif criterion is Criterion.FATEMI_SOCIE:
-        strain = plane_shear_strain(*s, angles[None], material.E, material.nu)
+        assert material.k_fatemi_socie is not None and material.sigma_y is not None
+        strain = np.asarray(plane_shear_strain(sxx, syy, sxy, angles, material.E, material.nu))
         amplitude = 0.5 * (strain.max(axis=0) - strain.min(axis=0))
         value = fatemi_socie_parameter(
             amplitude, largest, material.k_fatemi_socie, material.sigma_y
         )
     elif criterion is Criterion.SWT:
-        strain = plane_normal_strain(*s, angles[None], material.E, material.nu)
+        strain = np.asarray(plane_normal_strain(sxx, syy, sxy, angles, material.E, material.nu))
         amplitude = 0.5 * (strain.max(axis=0) - strain.min(axis=0))
         value = smith_watson_topper_parameter(largest, amplitude)
     else:

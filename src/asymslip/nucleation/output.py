@@ -17,10 +17,10 @@ import numpy as np
 from ..errors import InputError
 from ..files import Categorical
 from ..files.atomic import atomic_write
-from ..files.writer import open_table
+from ..files.writer import Kind, open_table
 from .assessment import NucleationResult
 
-SCHEMA = [
+SCHEMA: list[tuple[str, Kind]] = [
     ("edge", "category"),
     ("criterion", "category"),
     ("method", "category"),

@@ -71,7 +71,7 @@ SAFETY = 2.0
 #: Points farther than this many a1 from the edge are refused.
 FARTHEST = 0.5
 
-_EIGENFIELDS: dict[str, tuple[Callable[..., FloatArray], Callable[..., FloatArray]]] = {
+_EIGENFIELDS: dict[str, tuple[Callable[..., object], Callable[..., object]]] = {
     "sxx": (edge_eigenfield_pressure_sxx, edge_eigenfield_shear_sxx),
     "syy": (edge_eigenfield_pressure_syy, edge_eigenfield_shear_syy),
     "sxy": (edge_eigenfield_pressure_sxy, edge_eigenfield_shear_sxy),
@@ -127,7 +127,7 @@ def _polar_parts(offset: FloatArray, y: FloatArray, power: float) -> tuple[Float
     return _trigonometric_parts(offset, y, power)
 
 
-def _trigonometric_parts(offset: FloatArray, y: FloatArray, power: float) -> tuple:
+def _trigonometric_parts(offset: FloatArray, y: FloatArray, power: float) -> tuple[FloatArray, ...]:
     """The same parts by trigonometric functions (tests compare the two)."""
     rho = np.hypot(offset, y)
     sine = np.divide(y, rho, out=np.zeros_like(rho), where=rho > 0)
@@ -137,16 +137,18 @@ def _trigonometric_parts(offset: FloatArray, y: FloatArray, power: float) -> tup
     return rho**power, np.cos(angle), np.sin(angle), sine, np.cos(slope), np.sin(slope)
 
 
-def _field(loads: Sequence[EdgeLoad], X: FloatArray, y: FloatArray, power: float) -> dict:
+def _field(
+    loads: Sequence[EdgeLoad], X: FloatArray, y: FloatArray, power: float
+) -> dict[str, FloatArray]:
     """sxx, syy, sxy of the loads (c - t)^power at outward positions X, depth y."""
     result = {name: np.zeros_like(X) for name in COMPONENTS}
     for load in loads:
         parts = _polar_parts(X - load.edge, y, power)
         for name, (pressure, shear) in _EIGENFIELDS.items():
             if load.pressure != 0:
-                result[name] += load.pressure * pressure(*parts, power)
+                result[name] += load.pressure * np.asarray(pressure(*parts, power))
             if load.shear != 0:
-                result[name] += load.shear * shear(*parts, power)
+                result[name] += load.shear * np.asarray(shear(*parts, power))
     return result
 
 
@@ -172,9 +174,11 @@ def edge_loads(law: ContactLaw, cycle: LoadCycle, mu: float, edge: Side = "right
     lam, eta = float(result.lam), float(result.eta)
     M_II1 = float(edge_shear_next_coefficient(a1, lam, eta, L_I1, slopes[0]))
     M_II2 = float(edge_shear_next_coefficient(a2, lam, eta, L_I2, slopes[1]))
-    warnings = list(result.warnings)
-    pressure = (EdgeLoad(a2, L_I2, 0.0), EdgeLoad(a1, -L_I1, 0.0))  # (4)
-    next_pressure = (EdgeLoad(a2, M_I2, 0.0), EdgeLoad(a1, -M_I1, 0.0))
+    warnings = [str(w) for w in result.warnings]
+    pressure: tuple[EdgeLoad, ...] = (EdgeLoad(a2, L_I2, 0.0), EdgeLoad(a1, -L_I1, 0.0))  # (4)
+    next_pressure: tuple[EdgeLoad, ...] = (EdgeLoad(a2, M_I2, 0.0), EdgeLoad(a1, -M_I1, 0.0))
+    shear: tuple[EdgeLoad, ...]
+    next_shear: tuple[EdgeLoad, ...]
     if direction == 0:
         # No slip at this edge: the full-stick change (6), on the lower body.
         b = None
@@ -234,7 +238,8 @@ def _boundary_error(loads: EdgeLoads, X: FloatArray, y: FloatArray) -> FloatArra
     depth = np.where(distance == 0, 0.0, y * scale)
     derivative = EdgeLoad(0.0, 0.0, 0.5 * loads.boundary_strength * db)
     shifted = _field([derivative], offset, depth, -0.5)
-    return np.max(np.abs(np.stack(list(shifted.values()))), axis=0)
+    largest: FloatArray = np.max(np.abs(np.stack(list(shifted.values()))), axis=0)
+    return largest
 
 
 def edge_amplitude(

@@ -2,9 +2,9 @@
 
 For a grid of the paper's cycles -- four contact laws (Hertz; a rounded flat, c = 1, R = 10;
 power laws n = 1.5 and 3), a1 = 2, a2/a1 in ``RATIOS``, mu = 0.3 and the pairs ``PAIRS`` of
-lambda/mu and tau = pi eta a1/(4 mu) (18): the other edge slipping the same way, the opposite way or not at all, every pair at
-least 0.2 from either edge's threshold of slip (the solver settles slowly at a threshold) --
-and both edges, the amplitude of
+lambda/mu and tau = pi eta a1/(4 mu) (18): the other edge slipping the same way, the
+opposite way or not at all, every pair at least 0.2 from either edge's threshold of slip (the
+solver settles slowly at a threshold) -- and both edges, the amplitude of
 :func:`~asymslip.stress.asymptote.edge_amplitude` is set against the reference solver's
 (N = ``ELEMENTS``) on half circles of radius r about the state-2 edge (``ANGLES`` points from
 the surface outside to the surface inside), r/a1 in ``DISTANCES``; for Hertz without tension
@@ -43,7 +43,8 @@ from ..laws import FlatRoundedLaw, HertzLaw, PowerLaw
 from ..laws.base import ContactLaw
 from ..slip_zones import slip_zone
 from ..solver import solve
-from .asymptote import edge_amplitude, edge_loads
+from .asymptote import Side, edge_amplitude, edge_loads
+from .field import StressField
 from .semi_elliptic import SemiEllipticLoad, semi_elliptic_stress
 from .solver_source import solver_stress
 
@@ -114,22 +115,19 @@ def _number(value: float) -> str:
     return f"{value:.4g}"
 
 
-def _exact(law: ContactLaw, cycle: LoadCycle, x: np.ndarray, y: np.ndarray):  # noqa: ANN202
+def _exact(law: ContactLaw, cycle: LoadCycle, x: np.ndarray, y: np.ndarray) -> StressField:
     """The Jaeger-Ciavarella amplitude of a Hertz cycle without tension (47): the pressure
     change and -mu (p2 + p1 - 2 pK) on the lower body."""
-    P_K = (cycle.P1 + cycle.P2) / 2 - abs(cycle.Q2 - cycle.Q1) / (2 * MU)
-    direction = np.sign(cycle.Q2 - cycle.Q1)
+    P1, P2 = float(cycle.P1), float(cycle.P2)
+    P_K = (P1 + P2) / 2 - abs(float(cycle.Q2) - float(cycle.Q1)) / (2 * MU)
+    direction = float(np.sign(float(cycle.Q2) - float(cycle.Q1)))
 
     def peak(P: float) -> float:
         return 2 * P / (np.pi * float(law.half_width(P)))
 
     loads = [
-        SemiEllipticLoad(
-            float(law.half_width(cycle.P2)), peak(cycle.P2), -direction * MU * peak(cycle.P2)
-        ),
-        SemiEllipticLoad(
-            float(law.half_width(cycle.P1)), -peak(cycle.P1), -direction * MU * peak(cycle.P1)
-        ),
+        SemiEllipticLoad(float(law.half_width(P2)), peak(P2), -direction * MU * peak(P2)),
+        SemiEllipticLoad(float(law.half_width(P1)), -peak(P1), -direction * MU * peak(P1)),
         SemiEllipticLoad(float(law.half_width(P_K)), 0.0, 2 * direction * MU * peak(P_K)),
     ]
     return semi_elliptic_stress(loads, x, y)
@@ -142,19 +140,21 @@ def rows_of(case: Case) -> list[dict[str, str]]:
     h = result.element_size
     zone = slip_zone(law, cycle, MU, edge="both")
     rows: list[dict[str, str]] = []
-    for side in ("right", "left"):
+    sides: tuple[Side, Side] = ("right", "left")
+    for side in sides:
         sign = 1.0 if side == "right" else -1.0
         edge_result = zone if side == "right" else zone.left
-        loads = edge_loads(law, cycle, MU, side)  # type: ignore[arg-type]
-        solver_b = result.edge(side).b  # type: ignore[arg-type]
+        assert edge_result is not None
+        loads = edge_loads(law, cycle, MU, side)
+        solver_b = result.edge(side).b
         marks = [loads.a1, loads.a2] + ([solver_b] if solver_b is not None else [])
-        warned = bool(edge_result.warnings)  # type: ignore[union-attr]
+        warned = bool(edge_result.warnings)
         references = ["solver"] + (["exact"] if case.law == "hertz" and case.tau == 0 else [])
         for r in DISTANCES:
             angles = np.linspace(0.0, np.pi, ANGLES)
             outward = loads.a2 + r * A1 * np.cos(angles)
             x, y = sign * outward, r * A1 * np.sin(angles)
-            field = edge_amplitude(law, cycle, MU, x, y, edge=side)  # type: ignore[arg-type]
+            field = edge_amplitude(law, cycle, MU, x, y, edge=side)
             for reference in references:
                 if reference == "solver":
                     truth = solver_stress(result, x, y).amplitude
@@ -186,7 +186,7 @@ def rows_of(case: Case) -> list[dict[str, str]]:
                         "lam_mu": _number(case.lam_mu),
                         "tau": _number(case.tau),
                         "edge": side,
-                        "slip_direction": str(int(edge_result.slip_direction)),  # type: ignore[union-attr]
+                        "slip_direction": str(int(edge_result.slip_direction)),
                         "reference": reference,
                         "r_a1": _number(r),
                         "points": str(x.size),

@@ -184,10 +184,12 @@ def _pair_sums(
             )
         )
     (Qr, Qi, dQr, dQi), (_, Pi, dPr, dPi) = parts
-    return Qr, Qi, Pi, dQr, dQi, dPr, dPi
+    return tuple(np.asarray(part, dtype=float) for part in (Qr, Qi, Pi, dQr, dQi, dPr, dPi))
 
 
-def _accumulate(target: _Potentials, index: NDArray[np.intp] | slice, parts: tuple) -> None:
+def _accumulate(
+    target: _Potentials, index: NDArray[np.intp] | slice, parts: tuple[FloatArray, ...]
+) -> None:
     for name, part in zip(("Qr", "Qi", "Pi", "dQr", "dQi", "dPr", "dPi"), parts, strict=True):
         getattr(target, name)[index] += part
 
@@ -329,8 +331,8 @@ def _far_field(
     fill = NEAR_FACTOR * boxes.radius[chunk] + cy
     u0 = np.where(near_columns, fill[:, None], u0)
     y0 = np.broadcast_to(cy[:, None], u0.shape)
-    log_r = half_plane_node_log_distance(u0, y0)
-    theta = half_plane_node_angle(u0, y0)
+    log_r = np.asarray(half_plane_node_log_distance(u0, y0), dtype=float)
+    theta = np.asarray(half_plane_node_angle(u0, y0), dtype=float)
     near = [(b, int(lo[b]), int(hi[b])) for b in range(chunk.size) if hi[b] > lo[b]]
     columns = [np.ascontiguousarray(weights[:, column]) for column in (0, 1)]
 
@@ -349,8 +351,8 @@ def _far_field(
 
     coefficients = np.empty((chunk.size, ORDER + 1, 2), dtype=complex)
     coefficients[:, 0] = far_sum(
-        half_plane_node_potential_real(u0, y0, log_r, theta),
-        half_plane_node_potential_imag(u0, y0, log_r, theta),
+        np.asarray(half_plane_node_potential_real(u0, y0, log_r, theta), dtype=float),
+        np.asarray(half_plane_node_potential_imag(u0, y0, log_r, theta), dtype=float),
     )
     coefficients[:, 1] = far_sum(log_r, theta)
     # 1/v, v = u0 - i y0, and its powers v^(1 - k), k >= 2, in real arithmetic.

@@ -26,11 +26,11 @@ import numpy as np
 from ..errors import InputError
 from ..files import Categorical
 from ..files.atomic import atomic_write
-from ..files.writer import open_table
+from ..files.writer import Kind, open_table
 from .field import COMPONENTS, CycleStress, StressField
 
 COLUMNS = ("point", "x", "depth", "state", "S11", "S22", "S33", "S12", "S13", "S23")
-SCHEMA = [
+SCHEMA: list[tuple[str, Kind]] = [
     ("point", "float"),
     ("x", "float"),
     ("depth", "float"),
