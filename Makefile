@@ -34,6 +34,7 @@ check-generated: $(STAMP) ## regenerate every tree under two hash seeds and diff
 	$(PY) -m asymslip.codegen check
 	$(PY) -m asymslip figure fig5 --check generated/figures
 	$(PY) -m asymslip figure error-map --check generated/report
+	$(PY) -m asymslip.stress.error_map --check --data generated/report
 
 verify: $(STAMP) ## run every derivation, one line per paper equation
 	$(PY) -m asymslip.codegen verify

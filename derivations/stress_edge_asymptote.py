@@ -275,6 +275,9 @@ def error_map_summary(text: str) -> list[str]:
         return ["the committed near-edge error map is empty: run `make stress-error-map`"]
     quiet = [r for r in rows if r["near_edge"] == "1" and r["warned"] == "0"]
     loud = [r for r in rows if r not in quiet]
+    near = [r for r in rows if r["near_edge"] == "1"]
+    dominated = [r for r in near if abs(float(r["tau"])) > abs(float(r["lam_mu"]))]
+    driven = [r for r in near if r not in dominated]
 
     def worst(chosen: list[dict[str, str]], column: str) -> str:
         values = [float(r[column]) for r in chosen]
@@ -293,6 +296,10 @@ def error_map_summary(text: str) -> list[str]:
         f"{worst([r for r in quiet if r['reference'] == 'exact'], 'error_over_stated')} against "
         f"the exact Hertz field ({sum(r['reference'] == 'exact' for r in quiet)} rows); with a "
         f"warning: {worst(loud, 'error_over_stated')} ({len(loud)} rows)",
+        "near the edge (near_edge) where the shear force drives the slip at least as much as "
+        f"the tension: {worst(driven, 'error_over_stated')} ({len(driven)} rows); where the "
+        "tension dominates (pi eta a1/(4 mu) > |lam/mu|, warned by edge_amplitude): "
+        f"{worst(dominated, 'error_over_stated')} ({len(dominated)} rows)",
     ]
     for reference in ("solver", "exact"):
         chosen = [r for r in rows if r["reference"] == reference]
@@ -525,9 +532,9 @@ def derive() -> Derivation:
         returns="sxx [force/length^2].",
     )
     for key, name, text in (
-        ("a2", "state2", "sqrt(a2 - x): the slip zone's traction at state 2"),
-        ("a1", "state1", "sqrt(a1 - x)_+: the slip zone's traction at state 1"),
-        ("b", "stick", "sqrt(b - x)_+: the stick boundary's term, -K"),
+        ("a2", "state2", "sqrt(a2 - x), the slip zone's traction at state 2"),
+        ("a1", "state1", "sqrt(a1 - x)_+, the slip zone's traction at state 1"),
+        ("b", "stick", "sqrt(b - x)_+, the stick boundary's term -K"),
     ):
         expr = amplitudes[key]
         used = sorted(expr.free_symbols, key=lambda symbol: symbol.name)
@@ -536,7 +543,7 @@ def derive() -> Derivation:
             args=arguments(*used),
             expr=expr,
             equations=("49", "EA-4"),
-            summary=f"Coefficient of {text} in the shear change (49) at b from (17).",
+            summary=f"In (49) at b17: the coefficient of {text}.",
             doc="(49) with the density (15) on b from (17) is a sum of three square-root loads "
             "in the paper's frame (the traction on the indenter, forward slip at the right "
             "edge; the lower body carries the negative).",

@@ -341,7 +341,7 @@ def edge_uniform_sxx(dsigma: ArrayLike) -> FloatArray:
 
 
 def edge_shear_amplitude_state2(L_I2: ArrayLike, mu: ArrayLike) -> FloatArray:
-    """Coefficient of sqrt(a2 - x): the slip zone's traction at state 2 in the shear change (49) at b from (17).
+    """In (49) at b17: the coefficient of sqrt(a2 - x), the slip zone's traction at state 2.
 
     (49) with the density (15) on b from (17) is a sum of three square-root loads in the paper's
     frame (the traction on the indenter, forward slip at the right edge; the lower body carries
@@ -366,7 +366,7 @@ def edge_shear_amplitude_state2(L_I2: ArrayLike, mu: ArrayLike) -> FloatArray:
 
 
 def edge_shear_amplitude_state1(L_I1: ArrayLike, mu: ArrayLike) -> FloatArray:
-    """Coefficient of sqrt(a1 - x)_+: the slip zone's traction at state 1 in the shear change (49) at b from (17).
+    """In (49) at b17: the coefficient of sqrt(a1 - x)_+, the slip zone's traction at state 1.
 
     (49) with the density (15) on b from (17) is a sum of three square-root loads in the paper's
     frame (the traction on the indenter, forward slip at the right edge; the lower body carries
@@ -393,7 +393,7 @@ def edge_shear_amplitude_state1(L_I1: ArrayLike, mu: ArrayLike) -> FloatArray:
 def edge_shear_amplitude_stick(
     L_I1: ArrayLike, L_I2: ArrayLike, L_II1: ArrayLike, L_II2: ArrayLike, mu: ArrayLike
 ) -> FloatArray:
-    """Coefficient of sqrt(b - x)_+: the stick boundary's term, -K in the shear change (49) at b from (17).
+    """In (49) at b17: the coefficient of sqrt(b - x)_+, the stick boundary's term -K.
 
     (49) with the density (15) on b from (17) is a sum of three square-root loads in the paper's
     frame (the traction on the indenter, forward slip at the right edge; the lower body carries

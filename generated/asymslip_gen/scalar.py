@@ -1123,7 +1123,7 @@ def edge_uniform_sxx(dsigma: float) -> float:
 
 
 def edge_shear_amplitude_state2(L_I2: float, mu: float) -> float:
-    """Coefficient of sqrt(a2 - x): the slip zone's traction at state 2 in the shear change (49) at b from (17).
+    """In (49) at b17: the coefficient of sqrt(a2 - x), the slip zone's traction at state 2.
 
     (49) with the density (15) on b from (17) is a sum of three square-root loads in the paper's
     frame (the traction on the indenter, forward slip at the right edge; the lower body carries
@@ -1149,7 +1149,7 @@ def edge_shear_amplitude_state2(L_I2: float, mu: float) -> float:
 
 
 def edge_shear_amplitude_state1(L_I1: float, mu: float) -> float:
-    """Coefficient of sqrt(a1 - x)_+: the slip zone's traction at state 1 in the shear change (49) at b from (17).
+    """In (49) at b17: the coefficient of sqrt(a1 - x)_+, the slip zone's traction at state 1.
 
     (49) with the density (15) on b from (17) is a sum of three square-root loads in the paper's
     frame (the traction on the indenter, forward slip at the right edge; the lower body carries
@@ -1177,7 +1177,7 @@ def edge_shear_amplitude_state1(L_I1: float, mu: float) -> float:
 def edge_shear_amplitude_stick(
     L_I1: float, L_I2: float, L_II1: float, L_II2: float, mu: float
 ) -> float:
-    """Coefficient of sqrt(b - x)_+: the stick boundary's term, -K in the shear change (49) at b from (17).
+    """In (49) at b17: the coefficient of sqrt(b - x)_+, the stick boundary's term -K.
 
     (49) with the density (15) on b from (17) is a sum of three square-root loads in the paper's
     frame (the traction on the indenter, forward slip at the right edge; the lower body carries

@@ -339,19 +339,19 @@ double asymslip_edge_uniform_sxx(double dsigma)
     return (1.0/2.0)*dsigma;
 }
 
-/* Coefficient of sqrt(a2 - x): the slip zone's traction at state 2 in the shear change (49) at b from (17). See asymslip_gen.h. */
+/* In (49) at b17: the coefficient of sqrt(a2 - x), the slip zone's traction at state 2. See asymslip_gen.h. */
 double asymslip_edge_shear_amplitude_state2(double L_I2, double mu)
 {
     return L_I2*mu;
 }
 
-/* Coefficient of sqrt(a1 - x)_+: the slip zone's traction at state 1 in the shear change (49) at b from (17). See asymslip_gen.h. */
+/* In (49) at b17: the coefficient of sqrt(a1 - x)_+, the slip zone's traction at state 1. See asymslip_gen.h. */
 double asymslip_edge_shear_amplitude_state1(double L_I1, double mu)
 {
     return L_I1*mu;
 }
 
-/* Coefficient of sqrt(b - x)_+: the stick boundary's term, -K in the shear change (49) at b from (17). See asymslip_gen.h. */
+/* In (49) at b17: the coefficient of sqrt(b - x)_+, the stick boundary's term -K. See asymslip_gen.h. */
 double asymslip_edge_shear_amplitude_stick(
     double L_I1,
     double L_I2,

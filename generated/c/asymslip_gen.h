@@ -773,8 +773,7 @@ double asymslip_edge_eigenfield_shear_sxy(
 double asymslip_edge_uniform_sxx(double dsigma);
 
 /**
- * Coefficient of sqrt(a2 - x): the slip zone's traction at state 2 in the shear change
- * (49) at b from (17).
+ * In (49) at b17: the coefficient of sqrt(a2 - x), the slip zone's traction at state 2.
  *
  * (49) with the density (15) on b from (17) is a sum of three square-root loads in the
  * paper's frame (the traction on the indenter, forward slip at the right edge; the lower
@@ -793,8 +792,7 @@ double asymslip_edge_uniform_sxx(double dsigma);
 double asymslip_edge_shear_amplitude_state2(double L_I2, double mu);
 
 /**
- * Coefficient of sqrt(a1 - x)_+: the slip zone's traction at state 1 in the shear change
- * (49) at b from (17).
+ * In (49) at b17: the coefficient of sqrt(a1 - x)_+, the slip zone's traction at state 1.
  *
  * (49) with the density (15) on b from (17) is a sum of three square-root loads in the
  * paper's frame (the traction on the indenter, forward slip at the right edge; the lower
@@ -813,8 +811,7 @@ double asymslip_edge_shear_amplitude_state2(double L_I2, double mu);
 double asymslip_edge_shear_amplitude_state1(double L_I1, double mu);
 
 /**
- * Coefficient of sqrt(b - x)_+: the stick boundary's term, -K in the shear change (49) at
- * b from (17).
+ * In (49) at b17: the coefficient of sqrt(b - x)_+, the stick boundary's term -K.
  *
  * (49) with the density (15) on b from (17) is a sum of three square-root loads in the
  * paper's frame (the traction on the indenter, forward slip at the right edge; the lower

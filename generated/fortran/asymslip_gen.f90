@@ -1286,8 +1286,7 @@ contains
         asymslip_result = asymslip_edge_uniform_sxx(dsigma)
     end function asymslip_edge_uniform_sxx_c
 
-    !> Coefficient of sqrt(a2 - x): the slip zone's traction at state 2 in the shear change
-    !! (49) at b from (17).
+    !> In (49) at b17: the coefficient of sqrt(a2 - x), the slip zone's traction at state 2.
     !!
     !! (49) with the density (15) on b from (17) is a sum of three square-root loads in the
     !! paper's frame (the traction on the indenter, forward slip at the right edge; the lower
@@ -1316,8 +1315,7 @@ contains
         asymslip_result = asymslip_edge_shear_amplitude_state2(L_I2, mu)
     end function asymslip_edge_shear_amplitude_state2_c
 
-    !> Coefficient of sqrt(a1 - x)_+: the slip zone's traction at state 1 in the shear change
-    !! (49) at b from (17).
+    !> In (49) at b17: the coefficient of sqrt(a1 - x)_+, the slip zone's traction at state 1.
     !!
     !! (49) with the density (15) on b from (17) is a sum of three square-root loads in the
     !! paper's frame (the traction on the indenter, forward slip at the right edge; the lower
@@ -1346,8 +1344,7 @@ contains
         asymslip_result = asymslip_edge_shear_amplitude_state1(L_I1, mu)
     end function asymslip_edge_shear_amplitude_state1_c
 
-    !> Coefficient of sqrt(b - x)_+: the stick boundary's term, -K in the shear change (49) at
-    !! b from (17).
+    !> In (49) at b17: the coefficient of sqrt(b - x)_+, the stick boundary's term -K.
     !!
     !! (49) with the density (15) on b from (17) is a sum of three square-root loads in the
     !! paper's frame (the traction on the indenter, forward slip at the right edge; the lower

@@ -1,6 +1,5 @@
 function result = asymslip_edge_shear_amplitude_state1(L_I1, mu)
-% ASYMSLIP_EDGE_SHEAR_AMPLITUDE_STATE1  Coefficient of sqrt(a1 - x)_+: the slip zone's traction at state 1 in the shear change
-% (49) at b from (17).
+% ASYMSLIP_EDGE_SHEAR_AMPLITUDE_STATE1  In (49) at b17: the coefficient of sqrt(a1 - x)_+, the slip zone's traction at state 1.
 %
 % (49) with the density (15) on b from (17) is a sum of three square-root loads in the
 % paper's frame (the traction on the indenter, forward slip at the right edge; the lower

@@ -1,6 +1,5 @@
 function result = asymslip_edge_shear_amplitude_state2(L_I2, mu)
-% ASYMSLIP_EDGE_SHEAR_AMPLITUDE_STATE2  Coefficient of sqrt(a2 - x): the slip zone's traction at state 2 in the shear change
-% (49) at b from (17).
+% ASYMSLIP_EDGE_SHEAR_AMPLITUDE_STATE2  In (49) at b17: the coefficient of sqrt(a2 - x), the slip zone's traction at state 2.
 %
 % (49) with the density (15) on b from (17) is a sum of three square-root loads in the
 % paper's frame (the traction on the indenter, forward slip at the right edge; the lower

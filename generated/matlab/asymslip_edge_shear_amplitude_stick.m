@@ -1,6 +1,5 @@
 function result = asymslip_edge_shear_amplitude_stick(L_I1, L_I2, L_II1, L_II2, mu)
-% ASYMSLIP_EDGE_SHEAR_AMPLITUDE_STICK  Coefficient of sqrt(b - x)_+: the stick boundary's term, -K in the shear change (49) at
-% b from (17).
+% ASYMSLIP_EDGE_SHEAR_AMPLITUDE_STICK  In (49) at b17: the coefficient of sqrt(b - x)_+, the stick boundary's term -K.
 %
 % (49) with the density (15) on b from (17) is a sum of three square-root loads in the
 % paper's frame (the traction on the indenter, forward slip at the right edge; the lower

@@ -15,6 +15,18 @@ API
     distances below the surface hot spot.
 :func:`critical_plane`
     the largest value of a criterion over the planes through each point of a stress history.
+
+Examples
+--------
+Findley's parameter of a uniaxial stress from 0 to 100 (k = 0.3): 25 sin 2t + 15 (1 + cos
+2t) is largest, sqrt(850) + 15, where tan 2t = 25/15:
+
+>>> import numpy as np
+>>> history = History(np.array([[0.0], [100.0]]), np.zeros((2, 1)), np.zeros((2, 1)))
+>>> material = Material(E=2e5, nu=0.3, k_findley=0.3)
+>>> value, angle = critical_plane(history, Criterion.FINDLEY, material)
+>>> round(float(value[0]), 3), round(float(np.degrees(angle[0])), 2)
+(44.155, 29.52)
 """
 
 from .assessment import Finding, NucleationResult, nucleation

@@ -22,6 +22,19 @@ Ruiz
 The asymptotic source cannot give these: it gives the change of the stress over the cycle,
 not the stress at each extreme (whose locked-in shear depends on the history), and every
 criterion here needs a maximum over the cycle.
+
+Examples
+--------
+The frictional work of the paper's Fig. 5 cycle peaks in the right edge's slip zone, between
+b = 11.14 and a2 = 11.56:
+
+>>> from asymslip import HertzLaw, LoadCycle
+>>> from asymslip.solver import solve
+>>> result = solve(HertzLaw(1, 1), LoadCycle(100, 0, 105, 1), mu=0.1, elements=200)
+>>> found = nucleation(result, Material(E=1.82, nu=0.3), [Criterion.RUIZ], edges=["right"])
+>>> work = found.find("right", "ruiz", "frictional_work")
+>>> bool(11.14 < work.x < 11.56), work.angle
+(True, None)
 """
 
 from __future__ import annotations

@@ -10,6 +10,12 @@ and Findley's are mapped near both edges, with the critical distance L = 0.05 mm
 ``python -m asymslip.nucleation.blade_root --out generated/figures`` (``make
 nucleation-figure``) writes ``nucleation_blade_root.png`` and ``nucleation_blade_root.csv``
 (the findings); it takes about half a minute.
+
+Examples
+--------
+>>> state = cycle()
+>>> round(float(state.P1), 1), round(float(state.P2), 1), float(state.sigma2)
+(1757.1, 3430.0, 300.0)
 """
 
 from __future__ import annotations

@@ -5,6 +5,15 @@ plane-strain strain on a plane whose normal makes the angle theta with +x toward
 (the plane contains the z axis), and the criteria of Ruiz, Smith-Watson-Topper, Fatemi-Socie
 and Findley.  Over a cycle given by its states (the extremes of the load path), an amplitude
 is half the range of the states' values and a maximum the largest of them.
+
+Examples
+--------
+>>> criteria_from_names(["findley", "ruiz"])
+(<Criterion.RUIZ: 'ruiz'>, <Criterion.FINDLEY: 'findley'>)
+>>> Material(E=2e5, nu=0.3).require(Criterion.FINDLEY)
+Traceback (most recent call last):
+    ...
+asymslip.errors.InputError: criteria: findley needs its constant k
 """
 
 from __future__ import annotations

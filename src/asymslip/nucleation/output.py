@@ -5,6 +5,19 @@ peaks near both edges.
 resolution`` (angle in degrees, empty where none).  ``nucleation.png``: each critical-plane
 criterion over the window of each edge (depth downwards), its peak marked with a cross and,
 with a critical distance, the point (L/2) and line (0..2L) below the hot spot.
+
+Examples
+--------
+>>> import tempfile
+>>> from asymslip import HertzLaw, LoadCycle
+>>> from asymslip.nucleation import Criterion, Material, nucleation
+>>> from asymslip.solver import solve
+>>> result = solve(HertzLaw(1, 1), LoadCycle(100, 0, 105, 1), mu=0.1, elements=200)
+>>> found = nucleation(result, Material(E=1.82, nu=0.3), [Criterion.RUIZ])
+>>> with tempfile.TemporaryDirectory() as folder:
+...     (path,) = write_outputs(found, folder)
+...     print(path.name, path.read_text().splitlines()[0])
+nucleation.csv edge,criterion,method,value,x,depth,angle,resolution
 """
 
 from __future__ import annotations

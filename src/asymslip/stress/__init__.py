@@ -29,6 +29,20 @@ API
     fast or directly.
 :class:`SemiEllipticLoad` and :func:`semi_elliptic_stress`
     the exact fields of Hertz and McEwen loads and their sums.
+:func:`~asymslip.stress.solver_source.solver_stress`
+    every state of a steady solver result (with the locked-in shear of its history).
+:func:`~asymslip.stress.asymptote.edge_amplitude`
+    the amplitude near one edge from the edge asymptotes, with a stated accuracy.
+
+Examples
+--------
+Under the Hertz pressure p0 sqrt(1 - x^2/a^2) with the sliding shear 0.3 p, the surface
+carries syy = -p (-p0 at the centre) and the trailing surface outside the edge is in tension:
+
+>>> from asymslip.stress import SemiEllipticLoad, semi_elliptic_stress
+>>> field = semi_elliptic_stress([SemiEllipticLoad(1.0, p0=1.0, q0=0.3)], [0.0, -1.0], [0.0, 0.0])
+>>> [round(float(v), 4) for v in field.syy], [round(float(v), 4) for v in field.sxx]
+([-1.0, 0.0], [-1.0, 0.6])
 """
 
 from .field import CycleStress, StressField

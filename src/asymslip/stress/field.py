@@ -1,6 +1,14 @@
 """Typed records of stress fields at points: one state, and a cycle's states and amplitude.
 
 Conventions: :mod:`asymslip.stress`.
+
+Examples
+--------
+>>> import numpy as np
+>>> one = StressField(np.array([0.0]), np.array([1.0]), np.array([-2.0]), np.array([-1.0]),
+...                   np.array([0.5]))
+>>> (one.with_bulk(3.0) - one).sxx, one.out_of_plane(0.3)
+(array([3.]), array([-0.9]))
 """
 
 from __future__ import annotations

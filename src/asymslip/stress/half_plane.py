@@ -24,6 +24,16 @@ Surface points (y = 0) get the principal value: HP-2's limit from inside the bod
 angle of a node taken from above (atan2(-0.0, u)).  A surface point exactly on a node has the
 node's logarithm replaced by a finite number: every term it enters is multiplied by u or y,
 both zero there.
+
+Examples
+--------
+A triangular pressure and shear on (-1, 1): on the surface the body carries minus them.
+
+>>> from asymslip.stress import SurfaceLoad
+>>> load = SurfaceLoad.from_nodes([-1.0, 0.0, 1.0], [0.0, 2.0, 0.0], [0.0, 0.5, 0.0])
+>>> field = half_plane_stress(load, [0.0, 0.5], [0.0, 0.0])
+>>> field.syy.tolist(), field.sxy.tolist()
+([-2.0, -1.0], [-0.5, -0.25])
 """
 
 from __future__ import annotations

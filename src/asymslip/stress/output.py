@@ -14,6 +14,17 @@ nu is given, else empty; S13 = S23 = 0):
     the asymptote's stated bound on every component's error and its flag (empty otherwise).
 
 Conventions: :mod:`asymslip.stress`.
+
+Examples
+--------
+>>> import pathlib, tempfile
+>>> from asymslip import HertzLaw, LoadCycle
+>>> from asymslip.stress.asymptote import edge_amplitude
+>>> field = edge_amplitude(HertzLaw(1, 1), LoadCycle(100, 0, 105, 1), 0.1, [11.5], [0.0])
+>>> with tempfile.TemporaryDirectory() as folder:
+...     path = write_table(field, pathlib.Path(folder) / "field.csv", nu=0.3)
+...     print(path.read_text().splitlines()[0])
+point,x,depth,state,S11,S22,S33,S12,S13,S23,accuracy,near_edge
 """
 
 from __future__ import annotations

@@ -6,6 +6,18 @@ c)/a)^2) on |x - c| < a, exerted by the indenter (conventions: :mod:`asymslip.st
 field is closed form (``derivations/stress_half_plane.py``, HP-6), finite at every point of
 the body, so the exact fields of a Hertz contact -- full sliding, or the steady partial-slip
 cycle of (47), a sum of three semi-ellipses -- need no discretisation.
+
+Examples
+--------
+Below the centre of a Hertz contact the largest principal shear is 0.300 p0, at depth
+0.786 a (Johnson, Contact Mechanics, Sec. 4.2):
+
+>>> import numpy as np
+>>> depth = np.linspace(0.0, 2.0, 2001)
+>>> field = semi_elliptic_stress([SemiEllipticLoad(1.0, p0=1.0)], 0.0, depth)
+>>> shear = (field.sxx - field.syy) / 2
+>>> round(float(shear.max()), 3), round(float(depth[shear.argmax()]), 3)
+(0.3, 0.786)
 """
 
 from __future__ import annotations

@@ -16,6 +16,17 @@ surface, 6.6e-4 p0 one element deep and 7e-5 p0 five deep -- the resolution of t
 grid there (its edge lies 0.08 element from the exact one).  Laying the last stretch on the
 square root (4), or ending the load at the solver's fitted edge, was measured to be no better
 (4.7e-3 and 6.0e-3 p0 on the surface).
+
+Examples
+--------
+Far below the contact only the bulk tension of each state is left:
+
+>>> from asymslip import HertzLaw, LoadCycle
+>>> from asymslip.solver import solve
+>>> result = solve(HertzLaw(1, 1), LoadCycle(100, 0, 105, 1, 0.1, 0.5), mu=0.1, elements=200)
+>>> field = solver_stress(result, [0.0], [1e5])
+>>> [round(float(state.sxx[0]), 3) for state in field.states]
+[0.1, 0.5]
 """
 
 from __future__ import annotations

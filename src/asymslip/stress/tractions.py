@@ -4,6 +4,12 @@ A :class:`SurfaceLoad` is what the half-plane evaluator sums: a pressure p and a
 q, exerted by the indenter on the lower body (conventions: :mod:`asymslip.stress`), linear
 between strictly increasing nodes and zero at the first and the last node (a contact's
 tractions vanish beyond it).
+
+Examples
+--------
+>>> load = SurfaceLoad.from_nodes([-1.0, 0.0, 1.0], [0.0, 2.0, 0.0], [0.0, 0.5, 0.0])
+>>> [jumps.tolist() for jumps in load.slope_jumps()]  # W'' = sum c_j delta(t - t_j)
+[[2.0, -4.0, 2.0], [0.5, -1.0, 0.5]]
 """
 
 from __future__ import annotations
