@@ -33,6 +33,7 @@ How
       by O(delta^2) and a by O(delta^3) over a window of width delta).  The first alone came
       within a factor 1 to 2.3 of the true error on exact traces; the second sees the end of
       the expansion's validity (the rounded flat's corner) that the first may not.
+
   kappa = 4.  Measured on traces of every built-in law (1,280 fits: 20 to 200 nodes across
   the contact, uniform and graded meshes, exact or with 1 % noise -- relative or of the peak
   pressure -- half of them with a wrong last node): the true error never exceeded the reported

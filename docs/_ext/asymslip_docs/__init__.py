@@ -1,0 +1,29 @@
+"""Sphinx helpers of the asymslip site: pages written from the sources at build time.
+
+Loaded by ``docs/conf.py`` by file path (nothing edits ``sys.path``); :func:`setup` connects
+each helper.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from sphinx.application import Sphinx
+
+from . import (
+    api_pages,
+    cli_pages,
+    derivation_pages,
+    docstrings,
+    language_pages,
+    mathjax_local,
+    paper_equations,
+    short_names,
+)
+
+
+def setup(app: Sphinx) -> dict[str, Any]:
+    helpers = (mathjax_local, api_pages, derivation_pages, paper_equations, language_pages)
+    for helper in (*helpers, cli_pages, short_names, docstrings):
+        helper.setup(app)
+    return {"parallel_read_safe": True, "parallel_write_safe": True}

@@ -1,0 +1,9 @@
+"""
+The paper's Fig. 5 cycle
+========================
+
+Stub.
+"""
+
+# %%
+print("hello")
