@@ -82,7 +82,9 @@ def documented_data(module: ModuleType) -> list[str]:
         analyzer.analyze()
     except PycodeError:
         return []
-    names = [name for (scope, name) in analyzer.attr_docs if scope == "" and not name.startswith("_")]
+    names = [
+        name for (scope, name) in analyzer.attr_docs if scope == "" and not name.startswith("_")
+    ]
     tree = ast.parse(analyzer.code)
     for node in tree.body:
         targets = node.targets if isinstance(node, ast.Assign) else [getattr(node, "target", None)]

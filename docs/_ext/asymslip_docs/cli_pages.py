@@ -18,7 +18,9 @@ from sphinx.application import Sphinx
 from sphinx.util.docutils import SphinxDirective
 
 
-def _subcommands(parser: argparse.ArgumentParser) -> Iterator[tuple[str, str, argparse.ArgumentParser]]:
+def _subcommands(
+    parser: argparse.ArgumentParser,
+) -> Iterator[tuple[str, str, argparse.ArgumentParser]]:
     """(name, one-line help, parser) of each sub-command, in the order they were added."""
     for action in parser._actions:
         if isinstance(action, argparse._SubParsersAction):
@@ -45,7 +47,9 @@ def _option_rows(parser: argparse.ArgumentParser) -> list[tuple[str, list[tuple[
                     invocation = ", ".join(action.option_strings)
                 else:
                     metavar = formatter._format_args(action, action.dest.upper())
-                    invocation = ", ".join(f"{option} {metavar}" for option in action.option_strings)
+                    invocation = ", ".join(
+                        f"{option} {metavar}" for option in action.option_strings
+                    )
             else:
                 invocation = formatter._format_args(action, action.dest)
             text = formatter._expand_help(action) if action.help else ""

@@ -53,7 +53,9 @@ def render(path: Path, docname_depth: int = 3) -> str:
         lines += ["**Generated functions it registers:**", ""]
         for record in registered:
             equations = ", ".join(f"({number})" for number in record.equations) or "no paper number"
-            lines.append(f"- :py:func:`{record.python}` -- {equations}: {escape_line(record.summary)}")
+            lines.append(
+                f"- :py:func:`{record.python}` -- {equations}: {escape_line(record.summary)}"
+            )
         lines.append("")
     source = "../" * docname_depth + relative
     lines += [

@@ -90,7 +90,10 @@ def plain_text_lines(lines: list[str]) -> list[str]:
 
 
 def _process(app: Sphinx, what: str, name: str, obj: Any, options: Any, lines: list[str]) -> None:
-    if not name.startswith(("asymslip.", "asymslip_gen.")) and name not in {"asymslip", "asymslip_gen"}:
+    if not name.startswith(("asymslip.", "asymslip_gen.")) and name not in {
+        "asymslip",
+        "asymslip_gen",
+    }:
         return
     lines[:] = plain_text_lines(lines)
 

@@ -31,7 +31,9 @@ def _row(record: FormulaRecord) -> list[str]:
     def has(language: str) -> str:
         return f"``{symbol}``" if language in record.languages else "--"
 
-    matlab = f":ref:`{symbol}.m <matlab-{record.name}>`" if "MATLAB/Octave" in record.languages else "--"
+    matlab = (
+        f":ref:`{symbol}.m <matlab-{record.name}>`" if "MATLAB/Octave" in record.languages else "--"
+    )
     return [
         f":py:func:`~{record.python}`",
         equations,

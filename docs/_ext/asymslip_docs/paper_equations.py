@@ -42,7 +42,9 @@ def derivation_doc(path: str) -> str:
     return f"{DERIVATION_DOCS}/{path.removeprefix('derivations/').removesuffix('.py')}"
 
 
-def _xref(domain: str, kind: str, target: str, text: str, code: bool = True) -> addnodes.pending_xref:
+def _xref(
+    domain: str, kind: str, target: str, text: str, code: bool = True
+) -> addnodes.pending_xref:
     inner: nodes.Node = nodes.literal(text, text) if code else nodes.inline(text, text)
     node = addnodes.pending_xref(
         "", inner, refdomain=domain, reftype=kind, reftarget=target, refexplicit=True, refwarn=True

@@ -85,7 +85,9 @@ _SECTION = re.compile(r'^<a id="eq-(?P<id>[^"]+)"></a>\n\n### (?P<heading>.+)$',
 _STATUS = re.compile(r"^\*\*Status:\*\* (?P<status>[^·\n]+?)(?: ·|$)", re.M)
 _DERIVATION = re.compile(r"\*\*Derivation:\*\* \[`(?P<path>derivations/[\w./]+\.py)`\]")
 _ALSO = re.compile(r"^Also recorded: (.+)$", re.M)
-_DISPLAY = re.compile(r"^(?P<label>As printed in the paper|As derived here):\n\n\$\$\n(?P<tex>.*?)\n\$\$", re.M | re.S)
+_DISPLAY = re.compile(
+    r"^(?P<label>As printed in the paper|As derived here):\n\n\$\$\n(?P<tex>.*?)\n\$\$", re.M | re.S
+)
 
 
 def _unescape(text: str) -> str:
@@ -158,6 +160,4 @@ def printed_form(number: str) -> str:
 
 def derivation_scripts() -> list[Path]:
     """The derivation scripts (not the package's private helpers), in name order."""
-    return sorted(
-        path for path in DERIVATIONS.glob("*.py") if not path.name.startswith("__")
-    )
+    return sorted(path for path in DERIVATIONS.glob("*.py") if not path.name.startswith("__"))

@@ -101,7 +101,7 @@ def resolve(
         found = _candidates(domain, target, node.get("reftype", "obj"))
     if len(found) != 1:
         return None
-    (name, docname), = found
+    ((name, docname),) = found
     entry = domain.objects[name]
     return make_refnode(app.builder, node["refdoc"], docname, entry.node_id, contnode, name)
 
