@@ -17,7 +17,7 @@ On the command line::
 # A grid of cycles
 # ----------------
 # 600 Hertzian cycles: ten load ranges dP/P1 from 1 % to 10 % and sixty slopes lambda/mu
-# from 1.05 to 4, plus one row that slides as a whole (|Q2| > mu P2), to show how an invalid
+# from 1.05 to 4, plus one row that slides as a whole (abs(Q2) > mu P2), to show how an invalid
 # row is reported.
 import tempfile
 from pathlib import Path
