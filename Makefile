@@ -76,7 +76,8 @@ bench: $(STAMP) ## issue 10's targets vs the strongest baselines (BENCH_ARGS="--
 # time (docs/_ext), so new modules, commands and examples appear without editing the docs.
 DOCS_OUT := docs/_build/html
 docs: $(STAMP) ## build the documentation site into docs/_build/html (offline, warnings as errors)
-	$(PY) -m sphinx -b html -W --keep-going -n -q -j 1 docs $(DOCS_OUT)
+	@rm -rf $(DOCS_OUT)  # no page of an earlier build survives (the link check reads them all)
+	$(PY) -m sphinx -b html -W --keep-going -n -q -d docs/_build/doctrees docs $(DOCS_OUT)
 	@echo "docs: open $(DOCS_OUT)/index.html"
 
 docs-tools: ## install Chromium for the documentation's browser test (Debian, as root; idempotent)

@@ -6,6 +6,8 @@ each helper.
 
 from __future__ import annotations
 
+import hashlib
+from pathlib import Path
 from typing import Any
 
 from sphinx.application import Sphinx
@@ -22,7 +24,16 @@ from . import (
 )
 
 
+def _digest() -> str:
+    """Of these helpers' sources: a change re-reads every page (their output is in doctrees)."""
+    digest = hashlib.sha256()
+    for path in sorted(Path(__file__).parent.glob("*.py")):
+        digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
 def setup(app: Sphinx) -> dict[str, Any]:
+    app.add_config_value("asymslip_docs_digest", _digest(), "env")
     helpers = (mathjax_local, api_pages, derivation_pages, paper_equations, language_pages)
     for helper in (*helpers, cli_pages, short_names, docstrings):
         helper.setup(app)

@@ -32,6 +32,21 @@ DERIVATION_DOCS = "/theory/derivations"
 ERRATUM = "erratum found"
 
 
+def displayable(latex: str) -> str:
+    """The printed LaTeX with any unbalanced ``\\right`` written as a plain delimiter.
+
+    Printed errors are kept as printed -- (25)'s bars are unbalanced -- but MathJax refuses a
+    ``\\right`` without its ``\\left``; shown as a plain bar, the formula typesets and still
+    looks as the paper prints it (the errata page says what is wrong with it).
+    """
+    excess = latex.count("\\right") - latex.count("\\left")
+    while excess > 0:
+        index = latex.rindex("\\right")
+        latex = latex[:index] + "\\big" + latex[index + len("\\right") :]
+        excess -= 1
+    return latex
+
+
 def label(number: str) -> str:
     """The target name of paper equation ``number``."""
     return f"paper-eq-{number}"
@@ -65,13 +80,15 @@ class PaperEquation(SphinxDirective):
         entries = report_equations().get(number)
         if entries is None:
             raise self.error(f"the derivation report has no equation ({number})")
-        latex = f"{printed_form(number)} \\tag{{{number}}}"
+        # Written out with its own delimiters (nowrap): Sphinx would wrap a formula with line
+        # breaks in a split environment, where MathJax allows no \tag.
+        latex = f"\\[{displayable(printed_form(number))} \\tag{{{number}}}\\]"
         block = nodes.container(classes=["paper-equation", *self.options.get("class", [])])
         block["ids"] = [label(number)]
         block["names"] = [label(number)]
         self.state.document.note_explicit_target(block)
         block += nodes.math_block(
-            latex, latex, docname=self.env.docname, number=None, label=None, nowrap=False
+            latex, latex, docname=self.env.docname, number=None, label=None, nowrap=True
         )
         notes = nodes.bullet_list(classes=["paper-equation-notes"])
         for entry in entries:
