@@ -8,7 +8,7 @@ STAMP  := $(VENV)/.installed-stamp
 EXTRAS := derive,dev,plot,bench,dask,special,parquet,docs
 
 .DEFAULT_GOAL := all
-.PHONY: all env demo generate check-generated check-wheel verify test test-languages toolchains bench \
+.PHONY: all env demo generate check-generated check-wheel verify test lint test-languages toolchains bench \
         figures error-map check-error-map report docs docs-tools test-docs \
         accuracy clean help
 
@@ -40,8 +40,13 @@ verify: $(STAMP) ## run every derivation, one line per paper equation
 demo: $(STAMP) ## the paper's Fig. 5 example: a1, a2, b and the slip-zone width
 	$(PY) -m asymslip slip-zone --law hertz --R 1 --E-star 1 --mu 0.1 --P1 100 --Q1 0 --P2 105 --Q2 1
 
-test: $(STAMP) ## run the whole test suite (pytest -W error)
+test: $(STAMP) lint ## the type checker, the formatter and linter, then the test suite (pytest -W error)
 	$(PY) -m pytest
+
+lint: $(STAMP) ## mypy over src/ (strict; pyproject.toml), ruff format --check and ruff check
+	$(VENV)/bin/mypy
+	$(VENV)/bin/ruff format --check src tests derivations
+	$(VENV)/bin/ruff check src tests derivations
 
 figures: $(STAMP) error-map ## write Fig. 5 (generated/figures/fig5.png, .csv) and the error map
 	$(PY) -m asymslip figure fig5 --out generated/figures

@@ -7,7 +7,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .errors import as_numbers
+from .errors import InputError, as_numbers
+from .laws.base import Number
 from .rules import Verdict, check_changes, check_cycle_inputs
 
 FloatArray = NDArray[np.float64]
@@ -75,8 +76,7 @@ class LoadCycle:
         arrays = [as_numbers(name, value) for name, value in zip(FIELDS, loads, strict=True)]
         for name, value in zip(FIELDS, arrays, strict=True):
             object.__setattr__(self, name, value)
-        shapes = [value.shape for value in arrays]
-        shape = () if not any(shapes) else np.broadcast_shapes(*shapes)
+        shape = _broadcast_shape(arrays)
         object.__setattr__(self, "shape", shape)
         numbers = tuple(float(value) for value in arrays) if shape == () else None
         object.__setattr__(self, "numbers", numbers)
@@ -101,7 +101,7 @@ class LoadCycle:
         object.__setattr__(cycle, "checked", False)
         return cycle
 
-    def values(self) -> dict[str, FloatArray | float]:
+    def values(self) -> dict[str, Number]:
         """The six loads, broadcast to :attr:`shape` (Python floats for a single cycle)."""
         if self.shape == ():
             return {name: float(getattr(self, name)) for name in FIELDS}
@@ -148,3 +148,34 @@ class LoadCycle:
     def eta(self) -> FloatArray:
         """eta = dsigma/dP (18)."""
         return self.dsigma / self.dP
+
+
+def _broadcast_shape(arrays: list[FloatArray]) -> tuple[int, ...]:
+    """The shape the six loads broadcast to, or an error naming two that do not."""
+    shapes = [value.shape for value in arrays]
+    if not any(shapes):
+        return ()
+    shape: tuple[int, ...] = ()
+    for index, (name, value) in enumerate(zip(FIELDS, shapes, strict=True)):
+        try:
+            shape = np.broadcast_shapes(shape, value)
+        except ValueError:
+            other = (
+                next(FIELDS[j] for j in range(index) if not _broadcastable(shapes[j], value))
+                if any(not _broadcastable(shapes[j], value) for j in range(index))
+                else "the others"
+            )
+            raise InputError(
+                name,
+                f"has shape {value}, which does not broadcast with {other}'s shape "
+                f"{shapes[FIELDS.index(other)] if other in FIELDS else shape}",
+            ) from None
+    return shape
+
+
+def _broadcastable(first: tuple[int, ...], second: tuple[int, ...]) -> bool:
+    try:
+        np.broadcast_shapes(first, second)
+    except ValueError:
+        return False
+    return True

@@ -24,11 +24,13 @@ from numpy.typing import ArrayLike
 from asymslip_gen.slip_displacement import slip_on_loading
 from asymslip_gen.tractions import jaeger_ciavarella_traction_difference, shear_traction_difference
 
+from .core.edge_state import EdgeState
+from .core.evaluation import Evaluation, evaluate
+from .core.flags import warning_texts
 from .cycle import LoadCycle
-from .edge_flags import warning_texts
+from .edge import Edge
 from .errors import InputError, as_float_array, positive, require
 from .laws.base import ContactLaw
-from .slip_zones import Evaluation, evaluate
 
 StickBoundaryChoice = Literal["consistent", "exact"]
 Side = Literal["right", "left"]
@@ -83,11 +85,9 @@ def _one_cycle(law: ContactLaw, cycle: LoadCycle, mu: float) -> Evaluation:
     return evaluation
 
 
-def _edge_values(evaluation: Evaluation, edge: str) -> dict[str, float]:
-    if edge not in ("right", "left"):
-        raise InputError("edge", "must be 'right' or 'left'", edge)
-    values = {key: float(value) for key, value in evaluation.edges[edge].values.items()}
-    if values["slip_direction"] == 0:
+def _edge_values(evaluation: Evaluation, edge: Edge) -> EdgeState:
+    values = evaluation.edges[edge]
+    if values.slip_direction == 0:
         raise InputError(
             "cycle",
             f"the {edge} edge does not slip (|lam + pi eta a2/4| <= mu): "
@@ -149,49 +149,52 @@ def traction_difference(
     >>> round(result.q_diff_exact[0], 4)
     0.0281
     """
+    side = Edge.named(edge)
     evaluation = _one_cycle(law, cycle, mu)
-    q = _edge_values(evaluation, edge)
-    points, outward = _positions(x, edge, q["a2"])
+    q = _edge_values(evaluation, side)
+    points, outward = _positions(x, edge, float(q.a2))
     if stick_boundary == "consistent":
-        b = q["b_consistent"]  # (17)/(22): the b for which the density (15) solves (12)
+        b = float(q.b_consistent)  # (17)/(22): the b for which the density (15) solves (12)
     elif stick_boundary == "exact":
-        if np.isnan(q["b_exact"]):
+        if np.isnan(float(q.b_exact)):
             raise InputError(
                 "b",
                 "the exact stick boundary a(P_K) does not exist for this "
                 "cycle (it needs a symmetric law and eta = 0)",
             )
-        b = q["b_exact"]
+        b = float(q.b_exact)
     else:
         raise InputError("b", "must be 'consistent' or 'exact'", stick_boundary)
     # Backward slip is forward slip of the reversed loads, with q_diff negated (edge_symmetry).
-    direction = q["slip_direction"]
+    direction = float(q.slip_direction)
     asymptotic = direction * shear_traction_difference(
         outward,
         b,
-        q["a1"],
-        q["a2"],
+        float(q.a1),
+        float(q.a2),
         mu,
-        q["L_I1"],
-        q["L_I2"],
-        direction * q["L_II1"],
-        direction * q["L_II2"],
+        float(q.L_I1),
+        float(q.L_I2),
+        direction * float(q.L_II1),
+        direction * float(q.L_II2),
     )
     exact = None
-    if not np.isnan(q["b_exact"]):
+    if not np.isnan(float(q.b_exact)):
         # The wedge's pressure is infinite at its apex, so (47) is inf - inf there; a pressure
         # can also overflow (a huge contact).  Such points are left out below, not warned.
         with np.errstate(all="ignore"):
             try:
                 pressures = [
-                    law.pressure(points, P) for P in (float(cycle.P2), float(cycle.P1), q["P_K"])
+                    law.pressure(points, P)
+                    for P in (float(cycle.P2), float(cycle.P1), float(q.P_K))
                 ]
             except NotImplementedError:
                 pressures = None
             if pressures is not None:
-                exact = direction * jaeger_ciavarella_traction_difference(*pressures, mu)
-    near_from = q["a2"] * (1 - NEAR_EDGE_FRACTION)
-    flags = int(evaluation.edges[edge].flags)
+                at_P2, at_P1, at_P_K = pressures
+                exact = direction * jaeger_ciavarella_traction_difference(at_P2, at_P1, at_P_K, mu)
+    near_from = float(q.a2) * (1 - NEAR_EDGE_FRACTION)
+    flags = int(q.flags)
     warnings = warning_texts(flags, law.for_edge(edge))
     exact_values = None
     if exact is not None:
@@ -209,9 +212,9 @@ def traction_difference(
             )
     # The left edge is the right edge of the mirrored cycle: back in the global frame a
     # traction along x changes sign.
-    global_sign = 1.0 if edge == "right" else -1.0
+    global_sign = side.sign
     return TractionResult(
-        edge=edge,
+        edge=side.value,
         x=points.tolist(),
         q_diff=(global_sign * np.asarray(asymptotic, dtype=float)).tolist(),
         q_diff_exact=None
@@ -252,8 +255,9 @@ def slip_displacement(
     E_star
         Plane-strain modulus E* (the slip scales as 1/E*); taken from the law when it has one.
     """
+    side = Edge.named(edge)
     evaluation = _one_cycle(law, cycle, mu)
-    q = _edge_values(evaluation, edge)
+    q = _edge_values(evaluation, side)
     if E_star is None:
         E_star = getattr(law, "E_star", None)
         if E_star is None:
@@ -263,23 +267,23 @@ def slip_displacement(
                 "law does not define the modulus E*",
             )
     E_star = float(positive("E_star", E_star))
-    points, outward = _positions(x, edge, q["a2"])
-    direction = q["slip_direction"]
+    points, outward = _positions(x, edge, float(q.a2))
+    direction = float(q.slip_direction)
     # Along the edge's outward direction, then back to the global x (the left edge's outward
     # direction is -x, which flips the sign of a displacement measured along x).
     with np.errstate(all="ignore"):  # an overflow is refused below, not warned
         along = direction * slip_on_loading(
             outward,
-            q["b_consistent"],
-            q["a1"],
+            float(q.b_consistent),
+            float(q.a1),
             mu,
-            q["L_I1"],
-            q["L_I2"],
-            direction * q["L_II1"],
-            direction * q["L_II2"],
+            float(q.L_I1),
+            float(q.L_I2),
+            direction * float(q.L_II1),
+            direction * float(q.L_II2),
             E_star,
         )
-        global_sign = 1.0 if edge == "right" else -1.0
+        global_sign = side.sign
         slip = global_sign * np.asarray(along, dtype=float)
         inverse_modulus = np.float64(1.0) / np.float64(E_star)
     if not np.isfinite(slip).all():
@@ -294,9 +298,9 @@ def slip_displacement(
             "cycle", "the slip displacement overflows double precision at these positions"
         )
     return SlipResult(
-        edge=edge,
+        edge=side.value,
         x=points.tolist(),
         slip=slip.tolist(),
-        b=q["b_consistent"],
-        warnings=warning_texts(int(evaluation.edges[edge].flags), law.for_edge(edge)),
+        b=float(q.b_consistent),
+        warnings=warning_texts(int(q.flags), law.for_edge(edge)),
     )

@@ -11,7 +11,7 @@ from .cycle_options import add_cycle_options, build_cycle
 from .laws import add_law_options, build_law
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = commands.add_parser(
         "slip-zone",
         help="slip-zone size at the contact edges for one load cycle",

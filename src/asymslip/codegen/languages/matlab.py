@@ -80,7 +80,7 @@ class MatlabGeneratedPrinter(OctaveCodePrinter):
 
     def __init__(self) -> None:
         super().__init__({"strict": True, "user_functions": {"log1p": "log1p", "expm1": "expm1"}})
-        self.known_functions = {
+        self.known_functions: dict[str, str] = {
             name: printed
             for name, printed in self.known_functions.items()
             if name in BASE_FUNCTIONS
