@@ -45,8 +45,8 @@ test: $(STAMP) lint ## the type checker, the formatter and linter, then the test
 
 lint: $(STAMP) ## mypy over src/ (strict; pyproject.toml), ruff format --check and ruff check
 	$(VENV)/bin/mypy
-	$(VENV)/bin/ruff format --check src tests derivations
-	$(VENV)/bin/ruff check src tests derivations
+	$(VENV)/bin/ruff format --check src tests derivations docs
+	$(VENV)/bin/ruff check src tests derivations docs
 
 figures: $(STAMP) error-map ## write Fig. 5 (generated/figures/fig5.png, .csv) and the error map
 	$(PY) -m asymslip figure fig5 --out generated/figures

@@ -76,6 +76,11 @@ class CommandLine(SphinxDirective):
         from asymslip.cli import build_parser
 
         parser = build_parser()
+        # The parser is built from code all over the package: the page is read again on every
+        # build (see _always_outdated), so a new command or option is never missing.
+        users = getattr(self.env, "asymslip_command_line_docs", set())
+        users.add(self.env.docname)
+        self.env.asymslip_command_line_docs = users  # type: ignore[attr-defined]
         result: list[nodes.Node] = _paragraphs(parser.description or "")
         result.append(nodes.literal_block(parser.format_usage(), parser.format_usage()))
         commands = nodes.bullet_list()
@@ -119,6 +124,13 @@ class CommandLine(SphinxDirective):
         return section
 
 
+def _always_outdated(
+    app: Sphinx, env: Any, added: set[str], changed: set[str], removed: set[str]
+) -> list[str]:
+    return sorted(getattr(env, "asymslip_command_line_docs", set()) - removed)
+
+
 def setup(app: Sphinx) -> dict[str, Any]:
     app.add_directive("asymslip-command-line", CommandLine)
+    app.connect("env-get-outdated", _always_outdated)
     return {"parallel_read_safe": True}

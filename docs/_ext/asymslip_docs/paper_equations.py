@@ -22,7 +22,7 @@ from sphinx.environment import BuildEnvironment
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxDirective
 
-from .records import formulas_of, printed_form, report_equations
+from .records import FORMULAS, REPORT, formulas_of, printed_form, report_equations
 
 logger = logging.getLogger(__name__)
 PAPER_EQUATIONS = tuple(str(number) for number in range(1, 52))
@@ -77,6 +77,9 @@ class PaperEquation(SphinxDirective):
 
     def run(self) -> list[nodes.Node]:
         number = self.arguments[0].strip().strip("()")
+        # Read again whenever the records or the report change.
+        self.env.note_dependency(str(FORMULAS))
+        self.env.note_dependency(str(REPORT))
         entries = report_equations().get(number)
         if entries is None:
             raise self.error(f"the derivation report has no equation ({number})")
