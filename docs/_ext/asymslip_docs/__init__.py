@@ -20,6 +20,7 @@ from . import (
     language_pages,
     mathjax_local,
     paper_equations,
+    report_sections,
     short_names,
 )
 
@@ -34,7 +35,8 @@ def _digest() -> str:
 
 def setup(app: Sphinx) -> dict[str, Any]:
     app.add_config_value("asymslip_docs_digest", _digest(), "env")
-    helpers = (mathjax_local, api_pages, derivation_pages, paper_equations, language_pages)
-    for helper in (*helpers, cli_pages, short_names, docstrings):
+    pages = (api_pages, derivation_pages, language_pages)
+    directives = (paper_equations, report_sections, cli_pages)
+    for helper in (mathjax_local, *pages, *directives, short_names, docstrings):
         helper.setup(app)
     return {"parallel_read_safe": True, "parallel_write_safe": True}

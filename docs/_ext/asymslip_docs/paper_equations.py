@@ -22,7 +22,7 @@ from sphinx.environment import BuildEnvironment
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxDirective
 
-from .records import FORMULAS, REPORT, formulas_of, printed_form, report_equations
+from .records import FORMULAS, REPORT, displayable, formulas_of, printed_form, report_equations
 
 logger = logging.getLogger(__name__)
 PAPER_EQUATIONS = tuple(str(number) for number in range(1, 52))
@@ -30,21 +30,6 @@ PAPER_EQUATIONS = tuple(str(number) for number in range(1, 52))
 DERIVATION_DOCS = "/theory/derivations"
 #: Status words of the report that send the reader to the errata page.
 ERRATUM = "erratum found"
-
-
-def displayable(latex: str) -> str:
-    """The printed LaTeX with any unbalanced ``\\right`` written as a plain delimiter.
-
-    Printed errors are kept as printed -- (25)'s bars are unbalanced -- but MathJax refuses a
-    ``\\right`` without its ``\\left``; shown as a plain bar, the formula typesets and still
-    looks as the paper prints it (the errata page says what is wrong with it).
-    """
-    excess = latex.count("\\right") - latex.count("\\left")
-    while excess > 0:
-        index = latex.rindex("\\right")
-        latex = latex[:index] + "\\big" + latex[index + len("\\right") :]
-        excess -= 1
-    return latex
 
 
 def label(number: str) -> str:

@@ -161,3 +161,36 @@ def printed_form(number: str) -> str:
 def derivation_scripts() -> list[Path]:
     """The derivation scripts (not the package's private helpers), in name order."""
     return sorted(path for path in DERIVATIONS.glob("*.py") if not path.name.startswith("__"))
+
+
+def displayable(latex: str) -> str:
+    """The printed LaTeX with any unbalanced ``\\right`` written as a plain delimiter.
+
+    Printed errors are kept as printed -- (25)'s bars are unbalanced -- but MathJax refuses a
+    ``\\right`` without its ``\\left``; shown as a plain bar, the formula typesets and still
+    looks as the paper prints it (the errata page says what is wrong with it).
+    """
+    excess = latex.count("\\right") - latex.count("\\left")
+    while excess > 0:
+        index = latex.rindex("\\right")
+        latex = latex[:index] + "\\big" + latex[index + len("\\right") :]
+        excess -= 1
+    return latex
+
+
+_DISPLAY_MATH = re.compile(r"^\$\$\n(.*?)\n\$\$$", re.M | re.S)
+_LINK = re.compile(r"\[([^\]]+)\]\((?!https?:)[^)]*\)")
+
+
+def report_section(heading: str) -> str:
+    """The Markdown body of the report's ``## HEADING...`` section (without its heading line),
+    its links into the repository written as plain text (the site has no such pages)."""
+    text = REPORT.read_text(encoding="utf-8")
+    start = text.find(f"\n## {heading}")
+    if start < 0:
+        raise SourceLayoutError(f"{REPORT}: no section '## {heading}'")
+    body_start = text.index("\n", start + 1) + 1
+    end = text.find("\n## ", body_start)
+    body = text[body_start : end if end >= 0 else None]
+    body = _DISPLAY_MATH.sub(lambda match: f"$$\n{displayable(match.group(1))}\n$$", body)
+    return _LINK.sub(lambda match: match.group(1), body).strip() + "\n"
