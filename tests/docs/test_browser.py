@@ -26,7 +26,12 @@ FLAGS = [
 ]
 SCREENSHOTS = SITE.parent / "screenshots"
 #: Pages with display math that MathJax must typeset, and the rest opened for their images.
-MATH_PAGES = ["theory/section2.html", "theory/section3.html", "theory/errata.html", "theory/beyond.html"]
+MATH_PAGES = [
+    "theory/section2.html",
+    "theory/section3.html",
+    "theory/errata.html",
+    "theory/beyond.html",
+]
 OTHER_PAGES = [
     "index.html",
     "getting-started.html",

@@ -24,6 +24,8 @@ from sphinx.application import Sphinx
 from sphinx.errors import PycodeError
 from sphinx.pycode import ModuleAnalyzer
 
+from .docstrings import escape_line
+
 #: The packages documented, with the title of their part of the reference.
 PACKAGES = {
     "asymslip": "The API (hand-written, in src/asymslip)",
@@ -66,6 +68,30 @@ def _directive(value: Any) -> str | None:
     if callable(value) and inspect.isfunction(getattr(value, "__wrapped__", None)):
         return "function"  # a decorated function (functools.lru_cache and the like)
     return None
+
+
+def _is_type_alias(value: Any) -> bool:
+    """``Parsed = tuple[...]``, ``Engine = Literal[...]``, ``X = A | B``: a typing construct."""
+    kind = type(value)
+    return kind.__module__ in {"typing", "types"} and kind.__name__ in {
+        "GenericAlias",
+        "UnionType",
+        "_GenericAlias",
+        "_LiteralGenericAlias",
+        "_UnionGenericAlias",
+        "_SpecialGenericAlias",
+        "_CallableGenericAlias",
+    }
+
+
+def _attribute_doc(module: str, name: str) -> list[str]:
+    """The ``#:`` comment of a module-level name, as written."""
+    try:
+        analyzer = ModuleAnalyzer.for_module(module)
+        analyzer.analyze()
+    except PycodeError:
+        return []
+    return list(analyzer.attr_docs.get(("", name), []))
 
 
 def _canonical(value: Any, name: str) -> str | None:
@@ -127,6 +153,8 @@ def describe(name: str) -> ModulePage:
         home = getattr(value, "__module__", None)
         if directive is not None and home != name and canonical is not None:
             reexported.append((member, directive, canonical))
+        elif directive is None and _is_type_alias(value):
+            defined.append((member, "alias"))
         else:
             defined.append((member, directive or "data"))
     doc = inspect.getdoc(module) or ""
@@ -159,6 +187,15 @@ def render(page: ModulePage) -> str:
     if page.defined:
         lines += [".. rubric:: Defined here", ""]
         for member, directive in page.defined:
+            if directive == "alias":
+                # autodoc cannot format every typing construct (a tuple[...] of five members
+                # fails): a type alias is declared by hand with its #: comment and its value.
+                value = getattr(importlib.import_module(page.name), member)
+                lines += [f".. py:data:: {member}", f"   :module: {page.name}", ""]
+                doc = _attribute_doc(page.name, member)
+                lines += [f"   {escape_line(line)}" for line in doc if line]
+                lines += ["", "   A type alias of::", "", f"      {value!r}", ""]
+                continue
             lines.append(f".. auto{directive}:: {page.name}.{member}")
             if directive in ("class", "exception"):
                 lines += ["   :members:", "   :undoc-members:"]
