@@ -94,7 +94,7 @@ def test_a_zero_denominator_in_eq17_is_refused():
     L_I1, L_I2 = (2 * P / np.pi * np.sqrt(2 / a**3) for P, a in ((P1, a1), (P2, a2)))
     eta = mu * (L_I1 + L_I2) / (np.pi / 4 * (a2 * L_I2 - a1 * L_I1))
     cycle = LoadCycle(P1=P1, Q1=0.0, P2=P2, Q2=0.0, sigma1=0.0, sigma2=eta * (P2 - P1))
-    with pytest.raises(InputError, match=r"^mu: at the right edge the denominator of \(17\)"):
+    with pytest.raises(InputError, match=r"^sigma2: at the right edge the denominator of \(17\)"):
         slip_zone(LAW, cycle, mu)
 
 

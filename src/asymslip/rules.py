@@ -176,6 +176,16 @@ def _rule_table() -> dict[str, Rule]:
             "{b_sum} <= 0): no stick zone is left, so the contact cannot be in steady partial "
             "slip",
         ),
+        # The denominator rule where the change of bulk tension, not the shear, drives the edge
+        # (|pi eta a1/4| > |lambda|): the same test, naming the tension.
+        (
+            "denominator_tension",
+            "sigma2",
+            "at the {side} edge the denominator of (17), mu (L_I1 + L_I2) + "
+            "L_II1 - L_II2, is not positive ({denominator}): the bulk-tension change "
+            "sigma2 - sigma1 is too large for this friction coefficient and load change, so no "
+            "steady partial-slip state exists (the stick boundary would lie beyond a2){note}",
+        ),
     ]
     return {
         key: Rule(code, parameter, text)
@@ -344,6 +354,9 @@ def check_friction(verdict: Verdict, mu: FloatArray) -> None:
     verdict.require("mu_positive", mu > 0, mu)
 
 
+_SMALLEST_NORMAL = float(np.finfo(np.float64).tiny)
+
+
 def check_partial_slip(verdict: Verdict, mu: FloatArray, values: Mapping[str, FloatArray]) -> None:
     """No gross sliding at either state: |Q_i| < mu P_i.
 
@@ -353,11 +366,14 @@ def check_partial_slip(verdict: Verdict, mu: FloatArray, values: Mapping[str, Fl
     range is simply very large: call inside ``numpy.errstate(over="ignore")``.)
     """
     for state in ("1", "2"):
-        capacity = mu * values[f"P{state}"]
+        load = values[f"P{state}"]
+        capacity = mu * load
         shear = abs(values[f"Q{state}"])
+        # Where mu P underflows (a subnormal P), compare |Q|/mu with P instead of 0.
+        holds = (shear < capacity) | ((capacity < _SMALLEST_NORMAL) & (shear / mu < load))
         verdict.require(
             f"sliding_{state}",
-            shear < capacity,
+            holds,
             None,
             **{f"abs_Q{state}": shear, f"mu_P{state}": capacity},
         )

@@ -202,7 +202,9 @@ def slip_zone(
     Returns
     -------
     SlipZoneResult
-        b from (22), the slip-zone width a1 - b (cancellation-free), b to first order (28),
+        The headline b (b2: second order in dP with both edges and bulk tension) and its
+        stated accuracy, the slip-zone width a1 - b (cancellation-free), the paper's (22) as
+        ``b_paper``, b to first order (28),
         the corrective-stick b (40), the exact b = a(P_K) of (33) when eta = 0, the slip
         direction, the validity measures (24)-(27) and warnings.  Floats for one cycle,
         arrays for many.

@@ -44,6 +44,7 @@ from .estimates import (
     stated_accuracy,
 )
 from .flags import (
+    BEYOND_A1,
     ESTIMATES_CHECKED,
     EXTRAPOLATED_P1,
     EXTRAPOLATED_P2,
@@ -51,7 +52,9 @@ from .flags import (
     NO_SLIP,
     OTHER_EDGE_STICKS,
     OUTSIDE_FLAGS,
+    OWN_MULTIPLIERS_TENSION,
     VALIDITY_THRESHOLD,
+    WITH_TENSION,
 )
 from .operations import Flags, Operations
 
@@ -179,6 +182,8 @@ def edge_state(
     b_corrective_stick = ops.where(slips, a1 - estimates.corrective_stick_width, a1)
     compared = (b_paper, b_first_order, b_corrective_stick, b_exact)
     disagree: Flags = ops.flag(slips & (other.direction == 0), OTHER_EDGE_STICKS)
+    disagree = disagree | ops.flag(eta != 0, WITH_TENSION)
+    disagree = disagree | ops.flag(slips & (b_exact > a1), BEYOND_A1["b_exact"])
     limits = disagreement_limits(a1, da, width, accuracy)
     for value, (_, bit), limit in zip(compared, DISAGREEMENTS, limits, strict=True):
         disagree = disagree | ops.flag(slips & (abs(value - b) > limit), bit)
@@ -189,6 +194,8 @@ def edge_state(
         law,
         state,
         mu,
+        lam,
+        eta,
         edge,
         shear,
         estimates.denominator,
@@ -275,6 +282,8 @@ def _own_multipliers_edge(
         law,
         state,
         mu,
+        lam,
+        eta,
         edge,
         shear,
         denominator,
@@ -282,7 +291,7 @@ def _own_multipliers_edge(
         width,
         (eq24, eq25, eq26, eq27),
         (missing, ops.where(slips, first_order, a1), missing),
-        0,
+        ops.flag(slips & (eta != 0), OWN_MULTIPLIERS_TENSION),
     )
     return EdgeState(
         a1=a1,
@@ -326,6 +335,8 @@ def _checked(
     law: ContactLaw,
     state: LawState,
     mu: Number,
+    lam: Number,
+    eta: Number,
     edge: Edge,
     shear: Shear,
     denominator: Number,
@@ -346,7 +357,12 @@ def _checked(
     admits = sticks | (denominator > DENOMINATOR_TOLERANCE * scale)
     if not ops.everywhere(admits):
         note = law.resolution_note(*ops.refused(admits, state.P1, state.P2))
-        ops.require("denominator", admits, mu, side=edge, denominator=denominator, note=note)
+        # Name what drives the edge beyond a steady state: the tension where its slope
+        # pi eta a1/4 outweighs the shear's lambda (18), else the friction coefficient.
+        tension = abs(eta) * state.a1 * (math.pi / 4) > abs(lam)
+        fields = {"side": edge, "denominator": denominator, "note": note}
+        ops.require("denominator", admits | tension, mu, **fields)
+        ops.require("denominator_tension", admits, None, **fields)
     eq24, eq25, eq26, eq27 = measures
     # Non-finite results first: a b that overflowed is not "outside the contact".
     checked = {
@@ -381,4 +397,8 @@ def _checked(
         if not ops.everywhere(inside):
             kept[index] = ops.where(inside, value, ops.missing(value))
             flags = ops.keep_flags(inside, flags, (flags & ~disagreement) | OUTSIDE_FLAGS[key])
+    # A stick boundary beyond a1 where the edge slips: no slip zone inside a1 (in words).
+    slips = ~sticks if not ops.scalar else not sticks
+    for key, value in (("b", b), *zip(ESTIMATES_CHECKED, kept, strict=True)):
+        flags = flags | ops.flag(slips & (value > state.a1), BEYOND_A1[key])
     return _Checked(kept[0], kept[1], kept[2], flags)

@@ -391,6 +391,11 @@ def gives_own_shear_multipliers(law: object) -> bool:
     return isinstance(law, _GivesShearMultiplier)
 
 
+def modulus_of(law: object) -> float | None:
+    """The law's own modulus E* (:attr:`ContactLaw.E_star`), None where it has none."""
+    return law.E_star if isinstance(law, ContactLaw) else None
+
+
 def computes_on_floats(law: object) -> bool:
     """True when a law computes one cycle on Python floats alone (``ContactLaw.floats_only``)."""
     return isinstance(law, ContactLaw) and law.floats_only
