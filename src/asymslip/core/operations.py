@@ -66,8 +66,6 @@ class Operations(Protocol):
 
     def where(self, condition: Condition, yes: Number, no: Number) -> Number: ...
 
-    def flag(self, condition: Condition, bit: int) -> Flags: ...
-
     def keep_flags(self, condition: Condition, yes: Flags, no: Flags) -> Flags: ...
 
     def maximum(self, first: Number, second: Number) -> Number: ...
@@ -94,9 +92,6 @@ class FloatOperations:
 
     def where(self, condition: Condition, yes: Number, no: Number) -> Number:
         return yes if condition else no
-
-    def flag(self, condition: Condition, bit: int) -> Flags:
-        return bit if condition else 0
 
     def keep_flags(self, condition: Condition, yes: Flags, no: Flags) -> Flags:
         return yes if condition else no
@@ -137,9 +132,6 @@ class ArrayOperations:
         if isinstance(condition, (bool, np.bool_)):  # a condition the same for every element
             return yes if condition else no
         return np.where(condition, yes, no)
-
-    def flag(self, condition: Condition, bit: int) -> Flags:
-        return np.where(condition, bit, 0)
 
     def keep_flags(self, condition: Condition, yes: Flags, no: Flags) -> Flags:
         return np.where(condition, yes, no)
