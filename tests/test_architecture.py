@@ -18,7 +18,7 @@ LAYERS = (
     {"core"},
     {"slip_zones", "edge_flags", "solver"},
     {"tractions", "sweep", "calibration"},
-    {"figures"},
+    {"figures", "match"},
     {"cli"},
     {"__main__"},
 )

@@ -1228,6 +1228,145 @@ def command_line_cases() -> list[Bad]:
     ]
 
 
+def match_cases() -> list[Bad]:
+    """The laboratory match: the rig's options, and the requests no rig can answer."""
+
+    def match(*options: str) -> tuple[str, ...]:
+        return ("match", *hertz(), *options)
+
+    near_flat = (
+        "--law",
+        "flat-rounded",
+        "--flat-half-width",
+        "10",
+        "--R",
+        "1",
+        "--E-star",
+        "1",
+        "--mu",
+        "0.3",
+        "--P1",
+        "0.0960507665409116",
+        "--Q1",
+        "-0.025256618057330878",
+        "--P2",
+        "0.14251897820901327",
+        "--Q2",
+        "0.037475467694606364",
+    )
+    return [
+        Bad("match without --rig", match(), "--rig", r"required"),
+        Bad("match --rig cylinder", match("--rig", "cylinder"), "--rig", r"invalid choice"),
+        Bad(
+            "match --rig-E-star -1",
+            match("--rig", "hertz", "--rig-E-star", "-1"),
+            "--rig-E-star",
+            r"must be > 0",
+        ),
+        Bad("match --rig-mu 0", match("--rig", "hertz", "--rig-mu", "0"), "--rig-mu", r"> 0"),
+        Bad(
+            "match --rig-mu -inf",
+            match("--rig", "hertz", "--rig-mu", "-inf"),
+            "--rig-mu",
+            FINITE,
+        ),
+        Bad(
+            "match --rig-R -1",
+            match("--rig", "hertz", "--rig-R", "-1", "2"),
+            "--rig-R",
+            r"every value must be > 0",
+        ),
+        Bad(
+            "match --rig-R and --rig-R-range",
+            match("--rig", "hertz", "--rig-R", "1", "--rig-R-range", "1", "2"),
+            "--rig-R",
+            r"either --rig-R or --rig-R-range",
+        ),
+        Bad(
+            "match --rig-R-range upside down",
+            match("--rig", "hertz", "--rig-R-range", "2", "1"),
+            "--rig-R",
+            r"upper end must be >= the lower end",
+        ),
+        Bad(
+            "match: a flat half-width on a Hertz rig",
+            match("--rig", "hertz", "--rig-flat-half-width", "1"),
+            "--rig-flat-half-width",
+            r"needs --rig flat-rounded",
+        ),
+        Bad(
+            "match --rig-max-P 0",
+            match("--rig", "hertz", "--rig-max-P", "0"),
+            "--rig-max-P",
+            r"must be > 0",
+        ),
+        Bad(
+            "match --rig-max-Q nan",
+            match("--rig", "hertz", "--rig-max-Q", "nan"),
+            "--rig-max-Q",
+            r"must be > 0",
+        ),
+        Bad(
+            "match: an edge that does not slip",
+            ("match", *hertz(Q2="0.1"), "--rig", "hertz"),
+            "--edge",
+            r"does not slip in this cycle",
+        ),
+        Bad(
+            "match: the prototype's L_I falls along the path",
+            (
+                "match",
+                "--law",
+                "power",
+                "--A",
+                "0.05",
+                "--n",
+                "1.2",
+                "--E-star",
+                "1",
+                "--mu",
+                "0.3",
+                "--P1",
+                "1",
+                "--Q1",
+                "0",
+                "--P2",
+                "1.05",
+                "--Q2",
+                "0.02",
+                "--rig",
+                "hertz",
+            ),
+            "--law",
+            r"L_I does not rise along the path",
+        ),
+        Bad(
+            "match: every rig cycle slides grossly",
+            ("match", *near_flat, "--rig", "hertz"),
+            "--rig",
+            r"every rig cycle .* slides grossly",
+        ),
+        Bad(
+            "match: no rig within the limits comes near",
+            match("--rig", "hertz", "--rig-R", "1000", "--rig-max-P", "1e-3"),
+            "--rig",
+            r"no rig within its limits",
+        ),
+        Bad(
+            "match --verify-profile without --verify-E-star",
+            match("--rig", "hertz", "--verify", "--verify-profile", "x**2/2"),
+            "--verify-E-star",
+            r"is required with a --verify profile",
+        ),
+        Bad(
+            "match --elements 10 --verify",
+            match("--rig", "hertz", "--verify", "--elements", "10"),
+            "--elements",
+            r"must be at least 64",
+        ),
+    ]
+
+
 SOLVE = ("--elements", "100", "--steps", "3")
 
 
@@ -1441,6 +1580,7 @@ BAD: list[Bad] = [
     *command_line_cases(),
     *solve_cases(),
     *calibrate_cases(),
+    *match_cases(),
 ]
 
 

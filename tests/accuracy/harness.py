@@ -126,6 +126,7 @@ def draw_problem(
         "L_II1": L_II1,
         "L_II2": L_II2,
         "b": b,
+        "width": a1 - b,
         "dP_da1": dP_da1,
         "da_dP": 1 / dP_da1,
         "dL_I_dP": dL_I_dP,

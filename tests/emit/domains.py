@@ -288,6 +288,26 @@ def _asymmetric_edges(draw: Draw) -> Points:
     return points
 
 
+def _lab_transfer(draw: Draw) -> Points:
+    """A forward-slipping cycle's edge (slip zone inside a1) and its width w = a1 - b > 0."""
+    points = draw.cycle()
+    # a1 - b of (17), written here from the paper: -A da/(A + C), A = mu L_I2 - L_II2 < 0,
+    # C = mu L_I1 + L_II1.
+    A = points["mu"] * points["L_I2"] - points["L_II2"]
+    C = points["mu"] * points["L_I1"] + points["L_II1"]
+    points["w"] = -A * points["da"] / (A + C)
+    return points
+
+
+def _flat_rounded_pair(draw: Draw) -> Points:
+    """A rounded flat at two half-widths a2 > a1 > c, and a multiplier L_I to reproduce."""
+    points = draw.flat_rounded()
+    points["a1"] = points["a"]
+    points["a2"] = points["a"] * (1 + draw.log_uniform(1e-9, 0.1))
+    points["L_I"] = draw.log_uniform(1e-2, 1e3)
+    return points
+
+
 #: Function name -> how to draw points inside its documented domain.
 DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     # corrective_slip, validity: one steady partial-slip cycle
@@ -384,6 +404,14 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "gap_opening_influence": _influence,
     "relative_slip_influence": _influence,
     "tension_relative_displacement": _tension,
+    # lab_transfer: the laboratory match
+    "peak_shear_change": _lab_transfer,
+    "hertz_matched_half_width": _lab_transfer,
+    "hertz_matched_radius": _lab_transfer,
+    "matched_tension_slope": _lab_transfer,
+    "matched_shear_slope": _lab_transfer,
+    "flat_rounded_matched_radius": _flat_rounded_pair,
+    "flat_rounded_multiplier_ratio": _flat_rounded_pair,
 }
 
 
