@@ -323,7 +323,7 @@ def slip_displacement(
         # slip_on_loading gives the lower body's displacement relative to the indenter's
         # (derivations/section3_slip_displacement.py); delta is the indenter's relative to
         # the lower body's, hence the minus.
-        slip = -side.sign * np.asarray(along, dtype=float)
+        slip = -side.sign * np.asarray(along, dtype=float) + 0.0  # + 0.0: no -0 printed
         inverse_modulus = np.float64(1.0) / np.float64(E_star)
     if not np.isfinite(slip).all():
         if not np.isfinite(inverse_modulus):
