@@ -155,9 +155,12 @@ def oriented(
     differ in sign (the left edge's frame is mirrored); +1 too where it does not slip
     (derivations/second_order_slip_zone.py).
     """
-    direction = shear.direction
+    direction, other_direction = shear.direction, other.direction
+    # Where both edges slip (the common case) the factors are the directions themselves.
+    if ops.everywhere((direction != 0) & (other_direction != 0)):
+        return direction * lam, direction * eta, -direction * other_direction
     orientation = ops.where(direction != 0, direction, 1.0)
-    other_edge = ops.where(other.direction == 0, 1.0, -direction * other.direction)
+    other_edge = ops.where(other_direction == 0, 1.0, -direction * other_direction)
     return orientation * lam, orientation * eta, other_edge
 
 
@@ -180,11 +183,18 @@ def edge_state(
         return _own_multipliers_edge(ops, law, state, mu, lam, eta, dP, edge, shear)
     a1, da, P1 = state.a1, state.da, state.P1
     slips = shear.direction != 0
-    # (22), the paper's headline, and the headline b2, as widths a1 - b (no cancellation).
-    paper_width = ops.where(slips, estimates.paper_width, 0.0)
-    width = ops.where(slips, estimates.width, 0.0)
+    # (22), the paper's headline, and the headline b2, as widths a1 - b (no cancellation);
+    # where the edge does not slip: no slip zone, b = a1, and P_K = P1 (no permanent stick).
+    paper_width, width, P_K = estimates.paper_width, estimates.width, estimates.P_K
+    b_first_order = estimates.b_first_order
+    b_corrective_stick = a1 - estimates.corrective_stick_width
+    eq27 = estimates.eq27
+    if not ops.everywhere(slips):
+        paper_width, width = ops.where(slips, paper_width, 0.0), ops.where(slips, width, 0.0)
+        P_K, eq27 = ops.where(slips, P_K, P1), ops.where(slips, eq27, 0.0)
+        b_first_order = ops.where(slips, b_first_order, a1)
+        b_corrective_stick = ops.where(slips, b_corrective_stick, a1)
     b = a1 - width
-    P_K = ops.where(slips, estimates.P_K, P1)
     # Jaeger-Ciavarella: b = a(P_K) is exact for a symmetric law without bulk tension.
     exact = (eta == 0) & law.symmetric
     if ops.somewhere(exact):
@@ -194,8 +204,6 @@ def edge_state(
         b_exact = ops.missing(a1)
     accuracy = stated_accuracy(a1, da, width)
     b_paper = a1 - paper_width
-    b_first_order = ops.where(slips, estimates.b_first_order, a1)
-    b_corrective_stick = ops.where(slips, a1 - estimates.corrective_stick_width, a1)
     # A flag is its bit times its condition: an int for one cycle, an array for many.
     paper_limit, first_limit, stick_limit, exact_limit = disagreement_limits(
         a1, da, width, accuracy
@@ -208,7 +216,7 @@ def edge_state(
         | DISAGREE_CORRECTIVE_STICK * (abs(b_corrective_stick - b) > stick_limit)
         | DISAGREE_EXACT * (abs(b_exact - b) > exact_limit)
     )
-    eq25, eq27 = abs(width) / a1, ops.where(slips, estimates.eq27, 0.0)
+    eq25 = abs(width) / a1
     measures = (estimates.eq24, eq25, estimates.eq26, eq27)
     checked = _checked(
         ops,

@@ -267,16 +267,17 @@ def _check_meeting(ops: Operations, right: EdgeState, left: EdgeState) -> None:
 
 def _check_law(ops: Operations, state: LawState, law: ContactLaw) -> None:
     """The law at the cycle's loads: defined, finite, increasing."""
-    slope = -ops.maximum(-state.load_slope1, -state.load_slope2)
     first = state.a1 + state.L_I1 + state.load_slope1
     second = state.a2 + state.da + state.L_I2 + state.load_slope2
-    if ops.everywhere(state.found1 & state.found2 & finite(first + second) & (slope > 0)):
+    increasing = (state.load_slope1 > 0) & (state.load_slope2 > 0)
+    if ops.everywhere(state.found1 & state.found2 & finite(first + second) & increasing):
         return  # the common case: one test
     name = law.name
     ops.require("law_range_1", state.found1, state.P1, law=name, range=law.range_note)
     ops.require("law_range_2", state.found2, state.P2, law=name, range=law.range_note)
     ops.require("law_finite_1", finite(first), state.P1, law=name)
     ops.require("law_finite_2", finite(second), state.P2, law=name)
+    slope = -ops.maximum(-state.load_slope1, -state.load_slope2)
     ops.require("law_increasing", slope > 0, slope, law=name, slope=slope)
 
 
