@@ -119,13 +119,12 @@ def test_without_tension_the_mirrored_left_edge_reuses_the_right_edges_estimates
 
 
 def test_a_rule_broken_on_floats_ends_the_cycle_and_is_named_as_on_arrays():
-    # Tension so large that (17) has no steady partial-slip state at an edge (the denominator
-    # rule, naming sigma2):
+    # Tension so large that (17) has no steady partial-slip state at an edge (denominator):
     # the float run stops there, and its message is the array run's.
     law, cycle = LAWS["hertz"], LoadCycle(100, 0, 105, 1, 0, 30)
     evaluation = core_evaluation.evaluate(law, cycle, 0.1)
     assert isinstance(evaluation.checked, RuleBroken)
-    assert evaluation.checked.key == "denominator_tension"  # the tension drives it
+    assert evaluation.checked.key == "denominator_tension"  # the tension change is to blame
     array = _array_result(law, (100, 0, 105, 1, 0, 30), 0.1)
     with pytest.raises(InputError) as refusal:
         slip_zone(law, cycle, 0.1)

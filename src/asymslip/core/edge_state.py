@@ -33,7 +33,7 @@ from typing import NamedTuple
 
 from ..edge import Edge
 from ..laws.base import ContactLaw, LawState, Number, gives_own_shear_multipliers
-from ..rules import finite
+from ..rules import denominator_checks, finite
 from .estimates import (
     DENOMINATOR_TOLERANCE,
     EdgeEstimates,
@@ -383,12 +383,9 @@ def _checked(
     admits = sticks | (denominator > DENOMINATOR_TOLERANCE * scale)
     if not ops.everywhere(admits):
         note = law.resolution_note(*ops.refused(admits, state.P1, state.P2))
-        # Name what drives the edge beyond a steady state: the tension where its slope
-        # pi eta a1/4 outweighs the shear's lambda (18), else the friction coefficient.
-        tension = abs(eta) * state.a1 * (math.pi / 4) > abs(lam)
-        fields = {"side": edge, "denominator": denominator, "note": note}
-        ops.require("denominator", admits | tension, mu, **fields)
-        ops.require("denominator_tension", admits, None, **fields)
+        # Named by the load change to blame (the tension's or the shear force's), not mu.
+        for key, ok in denominator_checks(admits, mu, lam, eta, state.L_I1, state.L_I2):
+            ops.require(key, ok, None, side=edge, denominator=denominator, mu=mu, note=note)
     eq24, eq25, eq26, eq27 = measures
     # Non-finite results first: a b that overflowed is not "outside the contact".
     first_order = estimates[1]
