@@ -184,7 +184,9 @@ def slip_zone(
     invalid
         ``"raise"`` (default): an :class:`InputError` for the first invalid element, naming the
         parameter, the rule and how many elements break one.  ``"mark"``: invalid elements
-        are NaN and ``result.errors`` gives each one's reason.
+        are NaN and ``result.errors`` gives each one's reason.  A :class:`LoadCycle` refuses
+        its own bad elements (NaN, P2 <= P1) when built; to have them marked too, build it
+        with :meth:`LoadCycle.unchecked`.
 
     Returns
     -------
