@@ -18,7 +18,7 @@ LAYERS = (
     {"core"},
     {"slip_zones", "edge_flags", "solver"},
     {"tractions", "sweep", "calibration"},
-    {"figures", "match"},
+    {"figures", "match", "fe"},
     {"cli"},
     {"__main__"},
 )
