@@ -15,11 +15,11 @@ import sys
 from collections.abc import Sequence
 
 from ..errors import InputError
-from . import calibrate, derive, figure, match, slip_zone, solve, sweep, traction
+from . import calibrate, derive, figure, match, slip_zone, solve, solve_batch, sweep, traction
 from .laws import OPTION_OF
 from .parser import Parser
 
-COMMANDS = (slip_zone, traction, solve, calibrate, figure, derive, sweep, match)
+COMMANDS = (slip_zone, traction, solve, calibrate, figure, derive, sweep, match, solve_batch)
 
 
 def build_parser() -> Parser:
