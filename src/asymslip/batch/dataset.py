@@ -271,12 +271,6 @@ def refuse_unsafe_target(
         return
     if target.exists() and not target.is_dir():
         raise InputError(option, f"{target} is a file, not a folder")
-    if target.is_dir() and any(target.iterdir()) and not is_dataset_folder(target):
-        raise InputError(
-            option,
-            f"{target} is a folder this tool did not write (no {MANIFEST}): it would be "
-            "replaced whole; choose a new or empty folder",
-        )
     resolved = target.resolve()
     for source in inputs:
         place = Path(source).resolve()
@@ -286,6 +280,12 @@ def refuse_unsafe_target(
                 f"{target} holds an input ({source}): replacing the folder would destroy the "
                 "data being read; choose another folder",
             )
+    if target.is_dir() and any(target.iterdir()) and not is_dataset_folder(target):
+        raise InputError(
+            option,
+            f"{target} is a folder this tool did not write (no {MANIFEST}): it would be "
+            "replaced whole; choose a new or empty folder",
+        )
 
 
 class Staging:
