@@ -7,13 +7,18 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+import pyarrow as pa
+import pyarrow.csv
 import pyarrow.parquet as pq
 import pytest
 
+from asymslip import HertzLaw
 from asymslip.batch import BatchSettings, Cluster, solve_batch
 from asymslip.batch.solving import TIMING_COLUMNS
+from asymslip.batch.sweep import sweep_study
+from asymslip.sweep import sweep_file
 
-from .helpers import ExitOnce
+from .helpers import ExitOnce, ExitOnceHertz
 
 pytestmark = pytest.mark.slow
 
@@ -78,3 +83,59 @@ def test_a_worker_killed_in_the_middle_of_a_batch_still_gives_the_complete_resul
     assert marker.exists()  # a worker did die
     assert rows_of(tmp_path / "results") == one_process
     assert [path.name for path in tmp_path.iterdir() if path.name.startswith(".")] == []
+
+
+def sweep_cases(rows: int) -> str:
+    lines = ["case,P1,Q1,P2,Q2,sigma2"]
+    for k in range(rows):
+        dP = 1.0 + k % 7
+        lines.append(
+            f"c{k},{100 + k},0,{100 + k + dP},{(0.15 + 0.01 * (k % 26)) * dP},{0.001 * (k % 3)}"
+        )
+    return "\n".join(lines + ["sliding,100,0,105,50,0"]) + "\n"
+
+
+def test_a_sweep_on_two_workers_writes_the_one_process_file_byte_for_byte(tmp_path: Path):
+    """CSV in, CSV out: the parts the workers write, joined, are the file ``sweep_file`` writes
+    in one process with the same chunks."""
+    (tmp_path / "cases.csv").write_text(sweep_cases(3000))
+    law = HertzLaw(R=1.0, E_star=1.0)
+    sweep_file(tmp_path / "cases.csv", law, tmp_path / "one.csv", mu=0.1, chunk_rows=400)
+    summary = sweep_study(
+        tmp_path / "cases.csv",
+        law,
+        tmp_path / "two.csv",
+        mu=0.1,
+        rows_per_task=400,
+        cluster=Cluster(workers=2),
+        progress=False,
+    )
+    assert summary.rows == 3001 and summary.invalid[0][0] == 3002
+    assert (tmp_path / "two.csv").read_bytes() == (tmp_path / "one.csv").read_bytes()
+
+
+def test_a_sweep_survives_a_worker_killed_in_the_middle(tmp_path: Path):
+    """A Parquet dataset in, a folder out: the chunk holding P1 = 1500 ends its worker the
+    first time; the folder is complete and equals the one-process folder."""
+    (tmp_path / "cases.csv").write_text(sweep_cases(3000))
+    table = pa.csv.read_csv(tmp_path / "cases.csv")
+    (tmp_path / "cases").mkdir()
+    pq.write_table(table.slice(0, 1700), tmp_path / "cases" / "a.parquet", row_group_size=300)
+    pq.write_table(table.slice(1700), tmp_path / "cases" / "b.parquet")
+    plain = HertzLaw(R=1.0, E_star=1.0)
+    sweep_study(tmp_path / "cases", plain, f"{tmp_path}/one/", mu=0.1, rows_per_task=250)
+    marker = tmp_path / "killed"
+    law = ExitOnceHertz(R=1.0, E_star=1.0, marker=str(marker), P1=1500.0)
+    sweep_study(
+        tmp_path / "cases",
+        law,
+        f"{tmp_path}/two/",
+        mu=0.1,
+        rows_per_task=250,
+        cluster=Cluster(workers=2),
+        progress=False,
+    )
+    assert marker.exists()
+    one = pq.read_table(sorted((tmp_path / "one").glob("part-*.parquet")))
+    two = pq.read_table(sorted((tmp_path / "two").glob("part-*.parquet")))
+    assert two.num_rows == 3001 and two.equals(one)

@@ -54,12 +54,19 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
         help="the results: a Parquet or CSV file, or a folder (ending in /) for a "
         "partitioned Parquet dataset; complete or absent",
     )
-    add_cluster_options(batch, "cases", CASES_PER_TASK)
+    add_cluster_options(batch)
+    batch.add_argument(
+        "--cases-per-task",
+        dest="cases_per_task",
+        type=whole_number,
+        default=CASES_PER_TASK,
+        help=f"cases one task solves: one part of a folder output (default {CASES_PER_TASK})",
+    )
     batch.set_defaults(run=run)
 
 
-def add_cluster_options(parser: argparse.ArgumentParser, unit: str, per_task: int) -> None:
-    """``--workers``, ``--scheduler``, ``--retries`` and the task size, in one group."""
+def add_cluster_options(parser: argparse.ArgumentParser) -> None:
+    """``--workers``, ``--scheduler`` and ``--retries``, in one group (solve-batch, sweep)."""
     group = parser.add_argument_group("Dask (the dask extra; default: this process)")
     group.add_argument(
         "--workers", type=whole_number, help="start a local Dask cluster of N worker processes"
@@ -76,13 +83,6 @@ def add_cluster_options(parser: argparse.ArgumentParser, unit: str, per_task: in
         default=2,
         help="re-runs of a task that raised (a task whose worker died is re-run by the "
         "scheduler); default 2",
-    )
-    group.add_argument(
-        f"--{unit}-per-task",
-        dest=f"{unit}_per_task",
-        type=whole_number,
-        default=per_task,
-        help=f"{unit} in one task, one part of a folder output (default {per_task})",
     )
 
 
