@@ -184,6 +184,9 @@ FILES = {
     "cases_bad_rows.csv": "# cycles\nP1,Q1,P2,Q2,case\n100,0,105,1,good\n100,0,1o5,1,typo\n"
     "100,0,100,1,flat\n100,900,105,1,sliding\n100,nan,105,1,nan\n100,,105,1,empty\n"
     "1e2,-1e-1,1.05e2,5e-1,good\n",
+    # solve-batch: a case, and a table with neither a cycle nor a path
+    "batch.csv": "case,P1,Q1,P2,Q2\nfig5,100,0,105,1\n",
+    "batch_no_cycle.csv": "case,P1,Q1\na,100,0\n",
     # module laws: one row inside the cubic's range, one beyond its maximum load
     "cases_cubic.csv": "P1,Q1,P2,Q2\n1,0,1.05,0.01\n100,0,105,1\n2,0,2.1,0.02\n",
     "not_a_law.py": "x = 1\n",
@@ -1558,6 +1561,112 @@ def calibrate_cases() -> list[Bad]:
     ]
 
 
+def solve_batch_cases() -> list[Bad]:
+    def batch(*options: str, cases: str = "{d}/batch.csv", out: str = "{d}/o.parquet") -> tuple:
+        return ("solve-batch", cases, *HERTZ, "--mu", "0.1", *options, "--out", out)
+
+    return [
+        Bad("solve-batch: CASES missing", batch(cases="{d}/nowhere.csv"), "CASES", "cannot read"),
+        Bad(
+            "solve-batch: CASES an empty folder",
+            batch(cases="{d}/a_folder"),
+            "CASES",
+            r"cannot read .*no \.parquet file",
+        ),
+        Bad(
+            "solve-batch: CASES with neither a cycle nor a path",
+            batch(cases="{d}/batch_no_cycle.csv"),
+            "CASES",
+            r"no column P2, Q2 and no path column",
+        ),
+        Bad(
+            "solve-batch: a law without a profile",
+            (
+                "solve-batch",
+                "{d}/batch.csv",
+                "--law",
+                "table",
+                "--table",
+                "{d}/table.csv",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/o.parquet",
+            ),
+            "--law",
+            r"solves a law's profile",
+        ),
+        Bad(
+            "solve-batch: no radius",
+            ("solve-batch", "{d}/batch.csv", "--E-star", "1", "--mu", "0.1", "--out", "{d}/o.csv"),
+            "--R",
+            r"is required with --law hertz",
+        ),
+        Bad(
+            "solve-batch: no friction coefficient",
+            ("solve-batch", "{d}/batch.csv", *HERTZ, "--out", "{d}/o.parquet"),
+            "--mu",
+            r"is required",
+        ),
+        Bad("solve-batch: --mu 0", batch("--mu", "0"), "--mu", r"must be > 0"),
+        Bad("solve-batch: too few elements", batch("--elements", "10"), "--elements", "at least"),
+        Bad("solve-batch: no steps", batch("--steps", "0"), "--steps", "at least 1"),
+        Bad(
+            "solve-batch: no cases per task",
+            batch("--cases-per-task", "0"),
+            "--cases-per-task",
+            ">= 1",
+        ),
+        Bad("solve-batch: no workers", batch("--workers", "0"), "--workers", ">= 1"),
+        Bad(
+            "solve-batch: workers and a scheduler",
+            batch("--workers", "2", "--scheduler", "tcp://127.0.0.1:8786"),
+            "--scheduler",
+            r"either --workers or --scheduler",
+        ),
+        Bad(
+            "solve-batch: --out is the input",
+            batch(out="{d}/batch.csv"),
+            "--out",
+            r"is also the input",
+        ),
+        Bad(
+            "solve-batch: --out a folder without its slash",
+            batch(out="{d}/a_folder"),
+            "--out",
+            r"is a folder: end it with /",
+        ),
+        Bad(
+            "solve-batch: --out a folder holding the input",
+            batch(out="{d}/"),
+            "--out",
+            r"holds an input",
+        ),
+        Bad(
+            "solve-batch: --out a bad extension",
+            batch(out="{d}/o.txt"),
+            "--out",
+            r"name a \.csv or \.parquet file",
+        ),
+        Bad(
+            "sweep: no workers",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                *HERTZ,
+                "--mu",
+                "0.1",
+                "--workers",
+                "0",
+                "--out",
+                "{d}/o.csv",
+            ),
+            "--workers",
+            ">= 1",
+        ),
+    ]
+
+
 BAD: list[Bad] = [
     *number_option_cases(),
     *physics_cases(),
@@ -1568,6 +1677,7 @@ BAD: list[Bad] = [
     *solve_cases(),
     *calibrate_cases(),
     *match_cases(),
+    *solve_batch_cases(),
 ]
 
 

@@ -107,11 +107,8 @@ def open_source(path: str | Path, option: str = "cases") -> ParquetSource:
         Naming ``option``: no such file, an empty folder, a file that is not Parquet, files of
         different columns, a dataset with no rows.
     """
-    import pyarrow.parquet as pq
-
     from ..files import arrow
 
-    arrow.require(option, "Parquet input")
     path = Path(path)
     if path.is_dir():
         files = sorted(
@@ -122,11 +119,14 @@ def open_source(path: str | Path, option: str = "cases") -> ParquetSource:
             and not entry.name.startswith((".", "_"))
         )
         if not files:
-            raise InputError(option, f"{path}: the folder holds no .parquet file")
+            raise InputError(option, f"cannot read {path}: the folder holds no .parquet file")
     elif path.is_file():
         files = [path]
     else:
         raise InputError(option, f"cannot read {path}: no such file or folder")
+    arrow.require(option, "Parquet input")
+    import pyarrow.parquet as pq
+
     rows: list[int] = []
     header: tuple[str, ...] | None = None
     types: dict[str, str] = {}

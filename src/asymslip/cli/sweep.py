@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
@@ -56,7 +57,7 @@ def register(commands: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from ..batch import cluster_from_options
-    from ..batch.dataset import is_parquet_input, output_kind
+    from ..batch.dataset import is_parquet_input
     from ..batch.sweep import sweep_study
     from ..sweep import sweep_file
 
@@ -66,7 +67,8 @@ def run(args: argparse.Namespace) -> int:
         positive("mu", args.mu)  # a bad default is one error, not one per row
     law = build_law(args)
     cluster = cluster_from_options(args.workers, args.scheduler, args.retries)
-    if cluster is None and not is_parquet_input(args.cases) and output_kind(args.out) != "folder":
+    folder = args.out.endswith(("/", os.sep))  # a partitioned Parquet dataset
+    if cluster is None and not is_parquet_input(args.cases) and not folder:
         summary = sweep_file(
             args.cases, law, args.out, mu=args.mu, edge=args.edge, chunk_rows=args.chunk_rows
         )
