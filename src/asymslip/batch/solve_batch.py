@@ -20,7 +20,7 @@ from __future__ import annotations
 import functools
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TextIO
+from typing import Any, TextIO
 
 from ..errors import InputError
 from ..files import CaseTable, read_table
@@ -85,6 +85,7 @@ def solve_batch(
     cases_per_task: int = CASES_PER_TASK,
     progress: bool | None = None,
     stream: TextIO | None = None,
+    client: Any = None,
     solver: Solve = solve,
 ) -> BatchSummary:
     """Solve every case of ``cases`` and write two rows per case to ``out``.
@@ -163,8 +164,9 @@ def solve_batch(
         progress=progress,
         stream=stream,
         total=total,
+        client=client,
     )
-    where = "one process"
+    where = "one process" if client is None else "the given Dask client's cluster"
     if cluster is not None:
         where = (
             f"a local cluster of {cluster.workers} workers"

@@ -122,6 +122,7 @@ def run_study(
     progress: bool | None = None,
     stream: TextIO | None = None,
     total: int = 0,
+    client: Any = None,
 ) -> StudyRun:
     """Evaluate every partition of ``source`` and write the results to ``out``.
 
@@ -149,12 +150,15 @@ def run_study(
         a cluster; default only on a terminal.
     total
         Input rows, for the progress bar.
+    client
+        An open ``distributed.Client`` to run on instead of connecting to ``cluster`` (one
+        cluster for several studies).
     """
     started = time.perf_counter()
     pieces = _pieces(source, rows_per_task)
     frozen = tuple(schema)
     failed: list[tuple[int, str]] = []
-    if cluster is None and kind != "folder":
+    if cluster is None and client is None and kind != "folder":
         bar = Progress(total, stream or sys.stderr, progress, label=command)
         done = 0
         with open_table(out, frozen, option="out") as writer:
@@ -176,7 +180,7 @@ def run_study(
             Job(piece, evaluate, reading, frozen, part)
             for piece, part in zip(pieces, parts, strict=True)
         ]
-        results = run_tasks(run_job, jobs, cluster, progress=progress, name=command)
+        results = run_tasks(run_job, jobs, cluster, progress=progress, name=command, client=client)
         rows = sum(result.rows for result in results)
         for result in results:
             failed.extend(result.failed)

@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import functools
 from pathlib import Path
-from typing import TextIO
+from typing import Any, TextIO
 
 from ..errors import InputError
 from ..files import CaseTable, read_table
@@ -67,6 +67,7 @@ def sweep_study(
     cluster: Cluster | None = None,
     progress: bool | None = None,
     stream: TextIO | None = None,
+    client: Any = None,
 ) -> SweepSummary:
     """Evaluate the slip zone of every cycle in ``cases``; one output row per case.
 
@@ -141,6 +142,7 @@ def sweep_study(
         progress=progress,
         stream=stream,
         total=total,
+        client=client,
     )
     unit = "row" if isinstance(source, ParquetSource) else "line"
     return SweepSummary(total, out, run.seconds, sorted(run.failed), None, comments, unit)
