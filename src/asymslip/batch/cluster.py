@@ -132,7 +132,7 @@ def connect(cluster: Cluster) -> Iterator[Any]:
         n_workers=cluster.workers,
         threads_per_worker=1,
         processes=True,
-        dashboard_address=None,
+        dashboard_address=":0",  # the HTTP server on a free port: 8787 may be taken
         silence_logs=quiet,
     )
     try:
