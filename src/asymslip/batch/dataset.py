@@ -42,7 +42,6 @@ import numpy as np
 from ..errors import InputError
 from ..files import CaseTable, TextColumn
 from ..files.atomic import atomic_write
-from ..files.text import quote
 from ..files.writer import FORMATS
 
 OutputKind = Literal["csv", "parquet", "folder"]
@@ -375,8 +374,3 @@ def merge_parts(parts: Sequence[Path], target: Path, kind: OutputKind, option: s
         finally:
             writer.close()
     return target.stat().st_size
-
-
-def csv_header(names: Sequence[str]) -> bytes:
-    """The header line the CSV writer writes for these column names."""
-    return (",".join(quote(name) for name in names) + "\n").encode("utf-8")
