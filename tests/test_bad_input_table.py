@@ -31,6 +31,8 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import pyarrow
+import pyarrow.parquet
 import pytest
 
 from asymslip import HertzLaw, LoadCycle, cli, slip_zone
@@ -173,6 +175,7 @@ FILES = {
     "cases_comments.csv": "# no header\n\n",
     "cases_no_Q2.csv": "P1,Q1,P2\n100,0,105\n",
     "cases_header_only.csv": "P1,Q1,P2,Q2\n",
+    "cases_field_counts.csv": "P1,Q1,P2,Q2\n100,0,105\n1,000,0,105,1\n",
     "cases_binary.csv": b"P1,Q1,P2,Q2\n100,0,105,1\n100,0,\xff05,1\n",
     "cases_clash.csv": "P1,Q1,P2,Q2,b\n100,0,105,1,3\n",
     "cases_wide.csv": "P1,Q1,P2,Q2\n100,-9,1e4,999\n100,0,105,1\n",
@@ -194,6 +197,9 @@ FILES = {
     "path.csv": "P,Q\n100,0\n105,1\n",
     "profile.csv": "x,h\n" + "".join(f"{x:g},{x * x / 2!r}\n" for x in range(-30, 31)),
     "profile_one_point.csv": "x,h\n0,0\n",
+    # inputs named like the files solve --out writes (tractions.csv, slip.csv)
+    "tractions.csv": "P,Q\n100,0\n105,1\n",
+    "slip.csv": "x,h\n" + "".join(f"{x:g},{x * x / 2!r}\n" for x in range(-30, 31)),
     "traces.csv": hertz_traces(),
     "traces_nan.csv": hertz_traces().replace("\n80.0,0.0,", "\n80.0,nan,", 1),
     "calibration_bad.json": "{not json",
@@ -206,6 +212,10 @@ FILES = {
     "def normal_edge_multiplier(a, k):\n"
     "    return numpy.sqrt(2 / a) / numpy.pi * load_slope(a, k)\n",
     "broken_law.py": "def load(a:\n",
+    # a law module in form, but its import would run code (line 2)
+    "runs_code.py": "__asymslip_law__ = {'name': 'runs', 'params': []}\nprint('ran')\n"
+    "def load(a):\n    return a\ndef load_slope(a):\n    return 1 + 0 * a\n"
+    "def normal_edge_multiplier(a):\n    return a\n",
     "law.txt": "P(a) = a**2\n",
 }
 
@@ -220,7 +230,14 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
         else:
             path.write_bytes(content.encode("utf-8"))
     (folder / "a_file").write_text("not a folder\n")
+    os.symlink(folder / "cases.csv", folder / "cases_symlink.csv")
+    os.link(folder / "cases.csv", folder / "cases_hardlink.csv")
     (folder / "a_folder").mkdir()
+    (folder / "batch_dataset").mkdir()  # a Parquet dataset of solve-batch cases
+    pyarrow.parquet.write_table(
+        pyarrow.table({"P1": [100.0], "Q1": [0.0], "P2": [105.0], "Q2": [1.0]}),
+        folder / "batch_dataset" / "part.parquet",
+    )
     (folder / "folder.py").mkdir()
     # The law modules of `asymslip derive` that the table uses (their derivation is a case of
     # its own below too).
@@ -231,6 +248,8 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
     for name, formula, params in (
         ("cubic", "E_star*a**2 - k*a**3", "E_star k"),
         ("tanh_law", "k*tanh(a)", "k"),
+        ("selfpow", "a**a", ""),
+        ("tower", "a**a**a", ""),
     ):
         status, out, err = run(
             [
@@ -593,8 +612,28 @@ def physics_cases() -> list[Bad]:
         Bad(
             "bulk tension that overflows the denominator of (17)",
             ("slip-zone", *hertz(R="1e300", P1="1e-300", sigma2="1.7e308")),
-            "--mu",
-            r"is not positive \(a negative number beyond double precision\)",
+            "--sigma2",
+            r"bulk-tension change sigma2 - sigma1 is too large for mu = 0\.1: .* is not "
+            r"positive \(a negative number beyond double precision\)",
+        ),
+        Bad(
+            "--sigma2 1e300 names the tension, not --mu",
+            ("slip-zone", *hertz(sigma2="1e300")),
+            "--sigma2",
+            r"bulk-tension change sigma2 - sigma1 is too large for mu = 0\.1: at the right edge "
+            r"the denominator of \(17\).*is not positive \(-1\.569\d*e\+299\)",
+        ),
+        Bad(
+            "--sigma1 -1e300 names the tension (at state 2's option)",
+            ("slip-zone", *hertz(sigma1="-1e300")),
+            "--sigma2",
+            r"bulk-tension change sigma2 - sigma1 is too large",
+        ),
+        Bad(
+            "gross sliding with a subnormal P1 and Q1 (mu P1 rounds to 0)",
+            ("slip-zone", *hertz(P1="5e-324", Q1="5e-324", P2="1e-323", Q2="0")),
+            "--Q1",
+            r"gross sliding",
         ),
         Bad(
             "power law: A = 1e300 overflows",
@@ -617,8 +656,8 @@ def physics_cases() -> list[Bad]:
         Bad(
             "zero denominator of (17) (bulk tension)",
             ("slip-zone", *hertz(Q2="0", sigma2=repr(eta_zero * (P2 - P1)))),
-            "--mu",
-            r"denominator of \(17\).*not positive",
+            "--sigma2",
+            r"bulk-tension change .* denominator of \(17\).*not positive",
         ),
         Bad(
             "stick boundary beyond the contact (bulk tension)",
@@ -825,6 +864,24 @@ def law_cases() -> list[Bad]:
             r"not an asymslip law module",
         ),
         Bad(
+            "module file is a folder",
+            (*module, "{d}/a_folder", *cycle()),
+            "--module",
+            r"is a folder, not a law module file",
+        ),
+        Bad(
+            "module file whose import would run code",
+            (*module, "{d}/runs_code.py", *cycle()),
+            "--module",
+            r"not an asymslip law module: line 2 evaluates an expression.*nothing of it was run",
+        ),
+        Bad(
+            "a**a below its rising branch",
+            (*module, "{d}/selfpow.py", *cycle(P1="0.5", P2="0.6", Q2="0.01")),
+            "--P1",
+            r"no contact half-width of the selfpow law .* loads above 0\.692201 only",
+        ),
+        Bad(
             "module file with a syntax error",
             (*module, "{d}/broken_law.py", *cycle()),
             "--module",
@@ -991,6 +1048,24 @@ def derive_cases() -> list[Bad]:
             "--out",
             r"cannot write",
         ),
+        Bad(
+            "derive --out numpy.py (would shadow NumPy)",
+            derive("k*a**2", name="numpy", out="{d}/numpy.py"),
+            "--out",
+            r"numpy\.py would shadow an installed module .*numpy.*choose another file name",
+        ),
+        Bad(
+            "derive --out json.py (would shadow the standard library)",
+            derive("k*a**2", out="{d}/json.py"),
+            "--out",
+            r"json\.py would shadow a module of Python's standard library",
+        ),
+        Bad(
+            "derive --out asymslip.py (would shadow asymslip)",
+            derive("k*a**2", out="{d}/asymslip.py"),
+            "--out",
+            r"asymslip\.py would shadow asymslip's own package",
+        ),
         Bad("derive a parameter named a", derive("k*a**2", "a k"), "--params", r"\ba\b"),
         Bad("derive a parameter twice", derive("k*a**2", "k k"), "--params", r"distinct|twice"),
         Bad(
@@ -1081,13 +1156,78 @@ def sweep_cases() -> list[Bad]:
             "sweep: --out is the input",
             sweep("{d}/cases.csv", out="{d}/cases.csv"),
             "--out",
-            r"is also the input",
+            r"is also an input",
         ),
         Bad(
             "sweep: --out is the input by another path",
             sweep("{d}/cases.csv", out="{d}/a_folder/../cases.csv"),
             "--out",
-            r"is also the input",
+            r"is also an input",
+        ),
+        Bad(
+            "sweep: --out a symbolic link to the input",
+            sweep("{d}/cases.csv", out="{d}/cases_symlink.csv"),
+            "--out",
+            r"cases_symlink\.csv is also an input \(the cases, .*cases\.csv\)",
+        ),
+        Bad(
+            "sweep: --out a hard link of the input",
+            sweep("{d}/cases.csv", out="{d}/cases_hardlink.csv"),
+            "--out",
+            r"cases_hardlink\.csv is also an input \(the cases",
+        ),
+        Bad(
+            "sweep: --out is the table law's file",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "table",
+                "--table",
+                "{d}/hertz.csv",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/hertz.csv",
+            ),
+            "--out",
+            r"hertz\.csv is also an input \(the table law",
+        ),
+        Bad(
+            "sweep: --out is the law module",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "module",
+                "--module",
+                "{d}/tanh_law.py",
+                "--param",
+                "k=10",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/./tanh_law.py",
+            ),
+            "--out",
+            r"tanh_law\.py is also an input \(the law module",
+        ),
+        Bad(
+            "sweep: --out is the calibration",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "calibrated",
+                "--calibration",
+                "{d}/calibration.json",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/calibration.json",
+            ),
+            "--out",
+            r"calibration\.json is also an input \(the calibration",
         ),
         Bad(
             "sweep: --out in a missing folder",
@@ -1458,6 +1598,18 @@ def solve_cases() -> list[Bad]:
             r"reference solver overflows double precision",
         ),
         Bad(
+            "solve: --path inside --out, named as a file solve writes",
+            solve(*HERTZ, "--mu", "0.1", "--path", "{d}/tractions.csv", "--out", "{d}"),
+            "--out",
+            r"tractions\.csv is also an input \(the load path",
+        ),
+        Bad(
+            "solve: --profile-table inside --out, named as a file solve writes",
+            solve("--profile-table", "{d}/slip.csv", *profile, "--out", "{d}/."),
+            "--out",
+            r"slip\.csv is also an input \(the profile table",
+        ),
+        Bad(
             "solve --out under a file",
             solve(*hertz(), "--out", "{d}/a_file/solver"),
             "--out",
@@ -1526,7 +1678,13 @@ def calibrate_cases() -> list[Bad]:
             "calibrate --out is TRACES",
             ("calibrate", traces, "--out", traces),
             "--out",
-            r"is also the input",
+            r"is also an input",
+        ),
+        Bad(
+            "calibrate --out is TRACES by another path",
+            ("calibrate", traces, "--out", "{d}/a_folder/../traces.csv"),
+            "--out",
+            r"is also an input \(the traces",
         ),
         Bad(
             "calibrate --out in a missing folder",
@@ -1628,13 +1786,27 @@ def solve_batch_cases() -> list[Bad]:
             "solve-batch: --out is the input",
             batch(out="{d}/batch.csv"),
             "--out",
-            r"is also the input",
+            r"is also an input \(the cases",
         ),
         Bad(
             "solve-batch: --out a folder without its slash",
             batch(out="{d}/a_folder"),
             "--out",
             r"is a folder: end it with /",
+        ),
+        Bad(
+            "solve-batch: --out a file of the cases folder",
+            (
+                "solve-batch",
+                "{d}/batch_dataset",
+                *HERTZ,
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/batch_dataset/part.parquet",
+            ),
+            "--out",
+            r"part\.parquet is also an input \(a file of the cases",
         ),
         Bad(
             "solve-batch: --out a folder holding the input",
@@ -1696,11 +1868,13 @@ def solve_increasing(
 
 
 def module_law_check(
-    law: Callable[[float], float], high: float, P1: float, P2: float
+    law: Callable[[float], float], high: float, P1: float, P2: float, low: float = 0.0
 ) -> Callable[..., None]:
+    """a1, a2 against bisection of the law on (low, high), where it increases."""
+
     def check(result: dict, folder: Path) -> None:
         for key, P in (("a1", P1), ("a2", P2)):
-            assert result[key] == pytest.approx(solve_increasing(law, P, 0.0, high), rel=1e-12)
+            assert result[key] == pytest.approx(solve_increasing(law, P, low, high), rel=1e-12)
         assert 0 < result["b"] <= result["a2"]
 
     return check
@@ -1886,6 +2060,11 @@ def valid_cases() -> list[Valid]:
             slip_zone_check(1e-320, 0, 2e-320, 0, 0.1, slips=False, rel=1e-3),
         ),
         Valid(
+            "P1 = 5e-324 (mu P1 rounds to 0), Q1 = 0: not gross sliding",
+            ("slip-zone", *hertz(P1="5e-324", P2="1e-323", Q2="0"), "--json"),
+            slip_zone_check(5e-324, 0, 1e-323, 0, 0.1, slips=False, rel=1e-3),
+        ),
+        Valid(
             "P1 = 1, P2 = 1e6 (no slip; eq24 flagged)",
             ("slip-zone", *hertz(P1="1", P2="1e6"), "--json"),
             slip_zone_check(1, 0, 1e6, 1, 0.1, slips=False, warns=r"^eq24 > 0\.1"),
@@ -1995,6 +2174,22 @@ def valid_cases() -> list[Valid]:
             ),
             module_law_check(lambda a: 10 * math.tanh(a), 50.0, 1.0, 1.05),
         ),
+        Valid(
+            "a**a module law on its rising branch",
+            (*module, "{d}/selfpow.py", *cycle(P1="2", P2="2.1", Q2="0.01"), "--json"),
+            module_law_check(lambda a: a**a, 3.0, 2.0, 2.1, low=1 / math.e),
+        ),
+        Valid(
+            "a**a**a module law at P = 1e300",
+            (*module, "{d}/tower.py", *cycle(P1="1e300", P2="1.05e300", Q2="1e298"), "--json"),
+            module_law_check(
+                lambda a: math.exp(math.log(a) * a**a) if a < 4.27 else math.inf,
+                4.3,
+                1e300,
+                1.05e300,
+                low=1.0,
+            ),
+        ),
         # tractions and slip: far from the edge is reported, not refused
         Valid(
             "traction --x 0.1 -1e-2",
@@ -2097,6 +2292,11 @@ def valid_cases() -> list[Valid]:
                 "{d}/minus.py",
             ),
             derive_check("minus", r"positive and increasing for a > 1/k"),
+        ),
+        Valid(
+            "derive a tower of powers",
+            ("derive", "--P-of-a", "a**a**a**a", "--name", "tower4", "--out", "{d}/tower4.py"),
+            derive_check("tower4", r"was not established symbolically"),
         ),
         Valid(
             "derive a long sum",
@@ -2247,6 +2447,23 @@ ROW_ERRORS = [
             8: r"^Q1: missing",
         },
         (3, 9),
+    ),
+    RowErrors(
+        "sweep: no row with the header's field count (pyarrow read it as an empty file)",
+        (
+            "sweep",
+            "{d}/cases_field_counts.csv",
+            *HERTZ,
+            "--mu",
+            "0.1",
+            "--out",
+            "{d}/field_counts.csv",
+        ),
+        "field_counts.csv",
+        {
+            2: r"^line has 3 fields, the header has 4: '100,0,105'",
+            3: r"^line has 5 fields, the header has 4: '1,000,0,105,1'",
+        },
     ),
     RowErrors(
         "sweep: bad values in the mu column",

@@ -190,7 +190,7 @@ def test_a_folder_this_tool_wrote_is_replaced_whole(tmp_path: Path):
 @pytest.mark.parametrize(
     "out, rule",
     [
-        ("cases.csv", "is also the input"),
+        ("cases.csv", "is also an input"),
         ("mine/", "did not write"),
         ("./", "holds an input"),
         ("mine", "is a folder: end it with /"),

@@ -42,6 +42,7 @@ import numpy as np
 from ..errors import InputError
 from ..files import CaseTable, TextColumn
 from ..files.atomic import atomic_write
+from ..files.collisions import Input, Output, refuse_overwriting_inputs
 from ..files.writer import FORMATS
 
 OutputKind = Literal["csv", "parquet", "folder"]
@@ -285,6 +286,23 @@ def refuse_unsafe_target(
             f"{target} is a folder this tool did not write (no {MANIFEST}): it would be "
             "replaced whole; choose a new or empty folder",
         )
+
+
+def refuse_overwriting_cases(cases: Path, out: Path, kind: OutputKind, option: str = "out") -> None:
+    """The project's one check (:func:`asymslip.files.collisions.refuse_overwriting_inputs`)
+    for a study: the cases (a file, or a folder and every file in it) against the output (a
+    file, or a folder and every file it holds now, all of which it replaces), after
+    :func:`refuse_unsafe_target`."""
+    refuse_unsafe_target(out, kind, [cases], option)
+    inputs = [Input(cases, "cases", "the cases")]
+    if cases.is_dir():
+        inputs += [
+            Input(entry, "cases", "a file of the cases") for entry in sorted(cases.iterdir())
+        ]
+    names: tuple[str, ...] = ()
+    if kind == "folder" and out.is_dir():
+        names = tuple(sorted(entry.name for entry in out.iterdir())) or (MANIFEST,)
+    refuse_overwriting_inputs(inputs, [Output(out, option, names)])
 
 
 class Staging:

@@ -24,7 +24,6 @@ from typing import Any, TextIO
 
 from ..errors import InputError
 from ..files import CaseTable, read_table
-from ..files.atomic import refuse_same_file
 from ..files.writer import Kind
 from ..solver import solve
 from .cases import NUMERIC_COLUMNS, BatchSettings, check_header
@@ -34,7 +33,7 @@ from .dataset import (
     is_parquet_input,
     open_source,
     output_kind,
-    refuse_unsafe_target,
+    refuse_overwriting_cases,
 )
 from .solving import Solve, result_schema, solve_table
 from .study import Reading, run_study
@@ -124,8 +123,7 @@ def solve_batch(
         or cases_per_task < 1
     ):
         raise InputError("cases_per_task", "must be a whole number >= 1", cases_per_task)
-    refuse_same_file(out, "out", cases)
-    refuse_unsafe_target(out, kind, [cases], "out")
+    refuse_overwriting_cases(cases, out, kind)
     table_or_source: CaseTable | ParquetSource
     if is_parquet_input(cases):
         source = open_source(cases)

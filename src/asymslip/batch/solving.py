@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..files import CaseTable, Categorical, TextColumn
-from ..files.writer import Kind
+from ..files.writer import Column, Kind
 from ..solver import SolverError, SolverResult, solve
 from ..solver.compare import ESTIMATES, with_asymptotes
 from .cases import BatchSettings, Case, RowError, case_of
@@ -153,12 +153,12 @@ def solve_table(
     settings: BatchSettings,
     numbers: set[str],
     solver: Solve = solve,
-) -> tuple[dict[str, object], list[tuple[int, str]]]:
+) -> tuple[dict[str, Column], list[tuple[int, str]]]:
     """Every case of ``table``: the result columns (input columns first, two rows a case) and
     the failed cases as (line, message)."""
     outcomes = [solve_one(case_of(table, row, settings), solver) for row in range(len(table))]
     twice = np.repeat(np.arange(len(table)), 2)
-    columns: dict[str, object] = {}
+    columns: dict[str, Column] = {}
     for name in table.header:
         if name in numbers:
             columns[name] = np.asarray(table.values[name], dtype=np.float64)[twice]

@@ -25,7 +25,7 @@ from pathlib import Path
 from typing import Any, TextIO
 
 from ..files import CaseTable, Progress, open_table
-from ..files.writer import Kind
+from ..files.writer import Column, Kind
 from .cluster import Cluster, run_tasks
 from .dataset import (
     PART_SUFFIX,
@@ -37,7 +37,7 @@ from .dataset import (
     staging,
 )
 
-Evaluate = Callable[[CaseTable], tuple[dict[str, object], list[tuple[int, str]]]]
+Evaluate = Callable[[CaseTable], tuple[dict[str, Column], list[tuple[int, str]]]]
 
 
 @dataclass(frozen=True)
@@ -66,7 +66,7 @@ class JobResult:
 
     rows: int
     failed: list[tuple[int, str]]
-    columns: dict[str, object] | None = None
+    columns: dict[str, Column] | None = None
 
 
 def run_job(job: Job) -> JobResult:
@@ -82,11 +82,11 @@ def run_job(job: Job) -> JobResult:
         )
     )
     columns, failed = job.evaluate(table)
-    rows = len(next(iter(columns.values()))) if columns else 0  # type: ignore[arg-type]
+    rows = len(next(iter(columns.values()))) if columns else 0
     if job.part is None:
         return JobResult(rows, failed, columns)
     with open_table(job.part, job.schema, option="out") as writer:
-        writer.write(columns)  # type: ignore[arg-type]
+        writer.write(columns)
     return JobResult(rows, failed)
 
 
@@ -165,7 +165,7 @@ def run_study(
             for piece in pieces:
                 result = run_job(Job(piece, evaluate, reading, frozen))
                 assert result.columns is not None
-                writer.write(result.columns)  # type: ignore[arg-type]
+                writer.write(result.columns)
                 failed.extend(result.failed)
                 done += len(piece) if isinstance(piece, CaseTable) else piece.rows
                 bar.update(done)

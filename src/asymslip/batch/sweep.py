@@ -35,7 +35,6 @@ from typing import Any, TextIO
 
 from ..errors import InputError
 from ..files import CaseTable, read_table
-from ..files.atomic import refuse_same_file
 from ..laws.base import ContactLaw
 from ..sweep import SweepSummary
 from ..sweep.chunk import check_header, schema, sweep_chunk
@@ -46,7 +45,7 @@ from .dataset import (
     is_parquet_input,
     open_source,
     output_kind,
-    refuse_unsafe_target,
+    refuse_overwriting_cases,
 )
 from .study import Reading, run_study
 
@@ -103,8 +102,7 @@ def sweep_study(
         raise InputError("edge", "must be 'right', 'left' or 'both'", edge)
     if isinstance(rows_per_task, bool) or not isinstance(rows_per_task, int) or rows_per_task < 1:
         raise InputError("rows_per_task", "must be a whole number >= 1", rows_per_task)
-    refuse_same_file(out, "out", cases)
-    refuse_unsafe_target(out, kind, [cases], "out")
+    refuse_overwriting_cases(cases, out, kind)
     source: CaseTable | ParquetSource
     if is_parquet_input(cases):
         source = open_source(cases)

@@ -55,10 +55,12 @@ def register(commands: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     from ..calibration import calibrate, read_traces
     from ..calibration.report import checks, format_calibration
-    from ..files.atomic import refuse_same_file
+    from ..files.collisions import Input, Output, refuse_overwriting_inputs
 
     if args.out is not None:  # before anything is read: the traces must survive a typo
-        refuse_same_file(args.out, "out", args.traces)
+        refuse_overwriting_inputs(
+            [Input(args.traces, "traces", "the traces")], [Output(args.out, "out")]
+        )
     traces = read_traces(args.traces, loads=args.loads)
     calibration = calibrate(traces, noise=args.noise, origin=args.origin)
     if args.out is not None:

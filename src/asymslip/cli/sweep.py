@@ -8,12 +8,13 @@ import sys
 from pathlib import Path
 
 from ..errors import InputError, positive
-from .laws import add_law_options, build_law
+from ..files.collisions import Input, Output, refuse_overwriting_inputs
+from .laws import add_law_options, build_law, law_inputs
 from .parser import number, whole_number
 from .solve_batch import add_cluster_options
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     sweep = commands.add_parser(
         "sweep",
         help="slip zone of every load cycle in a CSV file",
@@ -61,6 +62,10 @@ def run(args: argparse.Namespace) -> int:
     from ..batch.sweep import sweep_study
     from ..sweep import sweep_file
 
+    refuse_overwriting_inputs(
+        [Input(args.cases, "cases", "the cases"), *law_inputs(args)],
+        [Output(Path(args.out), "out")],
+    )
     if args.chunk_rows < 1:
         raise InputError("chunk_rows", "must be >= 1", args.chunk_rows)
     if args.mu is not None:

@@ -33,7 +33,7 @@ from dataclasses import dataclass, fields
 
 from ..edge import Edge
 from ..laws.base import ContactLaw, LawState, Number, gives_own_shear_multipliers
-from ..rules import finite
+from ..rules import denominator_checks, finite
 from .estimates import (
     DENOMINATOR_TOLERANCE,
     DISAGREEMENTS,
@@ -197,6 +197,7 @@ def edge_state(
         measures,
         (b_paper, b_first_order, b_corrective_stick),
         disagree,
+        (lam, eta),
     )
     return EdgeState(
         a1=a1,
@@ -283,6 +284,7 @@ def _own_multipliers_edge(
         (eq24, eq25, eq26, eq27),
         (missing, ops.where(slips, first_order, a1), missing),
         0,
+        (lam, eta),
     )
     return EdgeState(
         a1=a1,
@@ -334,19 +336,23 @@ def _checked(
     measures: tuple[Number, Number, Number, Number],
     estimates: tuple[Number, Number, Number],
     disagree: Flags,
+    slopes: tuple[Number, Number],
 ) -> _Checked:
     """The rules the asymptotic solution must meet at this edge, and the warnings.
 
     ``measures`` are eq24-eq27; ``estimates`` b_paper, b_first_order and b_corrective_stick,
     each left out (NaN) where it falls outside the contact, and with it its disagreement flag
-    in ``disagree``.
+    in ``disagree``; ``slopes`` the path's (lam, eta), which name the load change a refused
+    denominator of (17) is blamed on.
     """
     sticks = shear.direction == 0
     scale = 2 * mu * (state.L_I1 + state.L_I2) + abs(shear.L_II1) + abs(shear.L_II2)
     admits = sticks | (denominator > DENOMINATOR_TOLERANCE * scale)
     if not ops.everywhere(admits):
         note = law.resolution_note(*ops.refused(admits, state.P1, state.P2))
-        ops.require("denominator", admits, mu, side=edge, denominator=denominator, note=note)
+        # Named by the load change to blame (the tension's or the shear force's), not mu.
+        for key, ok in denominator_checks(admits, mu, *slopes, state.L_I1, state.L_I2):
+            ops.require(key, ok, None, side=edge, denominator=denominator, mu=mu, note=note)
     eq24, eq25, eq26, eq27 = measures
     # Non-finite results first: a b that overflowed is not "outside the contact".
     checked = {

@@ -41,6 +41,9 @@ from ..errors import InputError
 from ..files.atomic import atomic_write
 from .result import SolverResult
 
+#: The files :func:`write_outputs` writes into its folder (the PNG unless ``png=False``).
+FILES = ("tractions.csv", "slip.csv", "energy.csv", "solver.png")
+
 
 def _figure_class() -> Any:
     try:

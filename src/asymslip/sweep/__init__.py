@@ -10,7 +10,11 @@ others.  Nothing is dropped: every non-blank input line gives one output line, i
 Output columns: the input columns as given, then the JSON keys of ``slip-zone`` flattened
 (``validity.eq24 -> eq24``; ``warnings`` joined by :data:`WARNING_SEPARATOR`), the left edge's
 prefixed ``left_``, then ``error``.  CSV numbers are the shortest text that reads back to the
-same double; ``--out RESULTS.parquet`` writes Parquet (pyarrow, the ``parquet`` extra).  The
+same double, and the input columns are copied as written (an exact round trip);
+``--out RESULTS.parquet`` writes Parquet (pyarrow, the ``parquet`` extra), where the input
+columns the sweep reads as numbers (``P1, Q1, P2, Q2, sigma1, sigma2, mu``) are float64 -- the
+doubles it computed with, null where a field is empty or not a number -- and the other input
+columns text.  The
 result is written beside the target and renamed when complete: an interrupted sweep leaves no
 truncated file.  Reading and writing go through :mod:`asymslip.files` (pyarrow when it is
 installed, NumPy otherwise, the same bytes either way).
@@ -41,7 +45,7 @@ from typing import TextIO
 
 from ..errors import InputError
 from ..files import Progress, WrittenTable, open_table, read_table
-from ..files.atomic import refuse_same_file
+from ..files.collisions import Input, Output, refuse_overwriting_inputs
 from ..files.writer import table_format
 from ..laws.base import ContactLaw
 from .chunk import check_header, schema, sweep_chunk
@@ -142,7 +146,8 @@ def sweep_file(
     if edge not in ("right", "left", "both"):
         raise InputError("edge", "must be 'right', 'left' or 'both'", edge)
     table_format(out, "out")
-    refuse_same_file(out, "out", cases)
+    source = Input(cases, "cases", "the cases")
+    refuse_overwriting_inputs([source], [Output(out, "out")])
     table = read_table(
         cases, required=REQUIRED_COLUMNS, numeric=("sigma1", "sigma2", "mu"), option="cases"
     )
@@ -150,10 +155,16 @@ def sweep_file(
     default_mu = None if mu is None else float(mu)
     invalid: list[tuple[int, str]] = []
     bar = Progress(len(table), stream or sys.stderr, progress)
-    with open_table(out, schema(table.header, edge, set()), option="out", inputs=[cases]) as writer:
+    # Parquet keeps the columns the sweep reads as numbers as numbers (float64, null where a
+    # field is empty or not a number: its row's error says which); CSV copies every field's
+    # text as written, for an exact round trip.
+    numbers = set(table.values) if table_format(out) == "parquet" else set()
+    with open_table(
+        out, schema(table.header, edge, numbers), option="out", inputs=[source]
+    ) as writer:
         for part in table.chunks(chunk_rows):
             columns, bad = sweep_chunk(
-                part, law=law, default_mu=default_mu, edge=edge, numbers=set()
+                part, law=law, default_mu=default_mu, edge=edge, numbers=numbers
             )
             writer.write(columns)
             invalid.extend(bad)

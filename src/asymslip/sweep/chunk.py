@@ -18,7 +18,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..files import CaseTable, Categorical
-from ..files.writer import Kind
+from ..files.writer import Column, Kind
 from ..laws.base import ContactLaw
 from .columns import (
     CYCLE_COLUMNS,
@@ -93,14 +93,14 @@ def sweep_chunk(
     default_mu: float | None,
     edge: Edges,
     numbers: set[str],
-) -> tuple[dict[str, object], list[tuple[int, str]]]:
+) -> tuple[dict[str, Column], list[tuple[int, str]]]:
     """The output columns of a chunk's rows and its invalid rows as (line, message).
 
     ``numbers``: the input columns written as numbers (Parquet) rather than as their text.
     """
     values, friction, errors = cycle_values(part, default_mu)
     result = evaluate_chunk(law, values, friction, edge, errors)
-    columns: dict[str, object] = {
+    columns: dict[str, Column] = {
         name: part.values[name] if name in numbers else part.text[name] for name in part.header
     }
     columns.update(result.numbers)
