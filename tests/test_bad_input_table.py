@@ -31,8 +31,6 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import pyarrow
-import pyarrow.parquet
 import pytest
 
 from asymslip import HertzLaw, LoadCycle, cli, slip_zone
@@ -234,6 +232,9 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
     os.link(folder / "cases.csv", folder / "cases_hardlink.csv")
     (folder / "a_folder").mkdir()
     (folder / "batch_dataset").mkdir()  # a Parquet dataset of solve-batch cases
+    import pyarrow
+    import pyarrow.parquet
+
     pyarrow.parquet.write_table(
         pyarrow.table({"P1": [100.0], "Q1": [0.0], "P2": [105.0], "Q2": [1.0]}),
         folder / "batch_dataset" / "part.parquet",
@@ -2633,6 +2634,22 @@ MISSING_EXTRAS = [
         ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/out.parquet"),
         "out.parquet",
     ),
+    (
+        "dask",
+        "distributed",
+        (
+            "solve-batch",
+            "{d}/batch.csv",
+            *HERTZ,
+            "--mu",
+            "0.1",
+            "--workers",
+            "2",
+            "--out",
+            "{d}/batch_on_dask.csv",
+        ),
+        "batch_on_dask.csv",
+    ),
 ]
 #: (package, a command that must work without it): only what needs an extra may refuse.
 WITHOUT_EXTRAS = [
@@ -2656,6 +2673,20 @@ WITHOUT_EXTRAS = [
         "pyarrow",
         ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/without_pyarrow.csv"),
     ),
+    (
+        "distributed",
+        (
+            "solve-batch",
+            "{d}/batch.csv",
+            *HERTZ,
+            "--mu",
+            "0.1",
+            "--elements",
+            "100",
+            "--out",
+            "{d}/batch_in_one_process.csv",
+        ),
+    ),
 ]
 
 
@@ -2664,7 +2695,7 @@ WITHOUT_EXTRAS = [
 #: JSON one after the other and printing each one's (exit status, stdout, stderr) as JSON.
 WITHOUT_OPTIONAL_PACKAGES = """
 import contextlib, io, json, sys
-for package in ("matplotlib", "scipy", "sympy", "pyarrow"):
+for package in ("matplotlib", "scipy", "sympy", "pyarrow", "dask", "distributed"):
     sys.modules[package] = None
 from asymslip.cli import main
 results = []
@@ -2783,6 +2814,8 @@ def test_what_needs_no_optional_dependency_works_without_them(files: Path, proce
     assert json.loads(results["scipy"][1])["a1"] > 0  # the power law's slip zone: no 2F1
     with open(files / "without_pyarrow.csv", newline="") as handle:
         assert [float(row["lam"]) for row in csv.DictReader(handle)] == [0.2, 0.12]
+    with open(files / "batch_in_one_process.csv", newline="") as handle:  # no pyarrow, no Dask
+        assert [row["edge"] for row in csv.DictReader(handle)] == ["right", "left"]
 
 
 def test_a_reader_that_goes_away_stops_the_command_quietly(processes: dict):

@@ -47,9 +47,12 @@ def one_process(tmp_path_factory: pytest.TempPathFactory) -> list[dict[str, Any]
     return rows_of(folder / "out.parquet")
 
 
-def test_two_workers_give_the_one_process_results(tmp_path: Path, one_process):
+def test_two_workers_give_the_one_process_results(
+    tmp_path: Path, one_process, capsys: pytest.CaptureFixture[str]
+):
     """Every number the same to the last bit (the same solver on the same case, whatever
-    process runs it), every error the same; the file is the one-process file's rows."""
+    process runs it), every error the same; the file is the one-process file's rows.  The
+    progress is distributed's own bar, on standard output."""
     (tmp_path / "cases.csv").write_text(CASES)
     summary = solve_batch(
         tmp_path / "cases.csv",
@@ -57,8 +60,9 @@ def test_two_workers_give_the_one_process_results(tmp_path: Path, one_process):
         SETTINGS,
         cluster=Cluster(workers=2),
         cases_per_task=3,
-        progress=False,
+        progress=True,
     )
+    assert "| 100% Completed |" in capsys.readouterr().out
     assert summary.parts == 5 and summary.rows == 28
     assert rows_of(tmp_path / "out.parquet") == one_process
     assert sorted(path.name for path in tmp_path.iterdir()) == ["cases.csv", "out.parquet"]
@@ -139,3 +143,25 @@ def test_a_sweep_survives_a_worker_killed_in_the_middle(tmp_path: Path):
     one = pq.read_table(sorted((tmp_path / "one").glob("part-*.parquet")))
     two = pq.read_table(sorted((tmp_path / "two").glob("part-*.parquet")))
     assert two.num_rows == 3001 and two.equals(one)
+
+
+def test_the_command_line_runs_a_batch_on_a_running_scheduler(tmp_path: Path, one_process):
+    """``--scheduler ADDRESS``: a cluster started elsewhere (here a 1-worker LocalCluster on
+    this machine's loopback) does the work; the rows are the one-process rows."""
+    from distributed import LocalCluster
+
+    from asymslip.cli import main
+
+    (tmp_path / "cases.csv").write_text(CASES)
+    with LocalCluster(n_workers=1, threads_per_worker=1, dashboard_address=":0") as cluster:
+        status = main(
+            [
+                "solve-batch",
+                str(tmp_path / "cases.csv"),
+                *("--law", "hertz", "--R", "1", "--E-star", "1", "--mu", "0.3"),
+                *("--elements", "160", "--steps", "8", "--scheduler", cluster.scheduler_address),
+                *("--out", str(tmp_path / "out.parquet")),
+            ]
+        )
+    assert status == 1  # the gross-sliding row
+    assert rows_of(tmp_path / "out.parquet") == one_process

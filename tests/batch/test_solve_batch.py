@@ -4,6 +4,7 @@ two rows a case, failures kept in their rows, the output complete or absent (iss
 from __future__ import annotations
 
 import math
+import os
 from pathlib import Path
 from typing import Any
 
@@ -229,3 +230,35 @@ def test_a_cluster_without_the_dask_extra_is_refused_naming_the_extra(monkeypatc
 def test_a_load_path_in_a_cell_that_breaks_a_rule_names_the_point(text: str, rule: str):
     with pytest.raises(InputError, match=rule):
         parse_path(text)
+
+
+def test_a_scheduler_that_cannot_be_reached_is_one_error_naming_it(monkeypatch, tmp_path: Path):
+    from asymslip.batch import cluster
+
+    monkeypatch.setattr(cluster, "SCHEDULER_TIMEOUT", "1s")
+    cases = write(tmp_path / "cases.csv", "P1,Q1,P2,Q2\n100,0,105,1\n")
+    with pytest.raises(InputError, match=r"^scheduler: cannot reach the scheduler at tcp://"):
+        solve_batch(
+            cases,
+            tmp_path / "out.parquet",
+            HERTZ,
+            cluster=cluster.Cluster(scheduler="tcp://127.0.0.1:9"),
+            progress=False,
+        )
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["cases.csv"]
+
+
+def test_the_parts_a_killed_study_left_are_removed_by_the_next_and_a_running_ones_kept(
+    tmp_path: Path,
+):
+    from asymslip.files.partials import host_tag, process_is_running
+
+    dead = next(pid for pid in range(4_000_000, 4_100_000) if process_is_running(pid) is False)
+    left = tmp_path / f".out.parquet.asymslip-{dead}-{host_tag()}-0badf00d.parts"
+    running = tmp_path / f".out.parquet.asymslip-{os.getppid()}-{host_tag()}-0badf00d.parts"
+    for folder in (left, running):
+        folder.mkdir()
+        write(folder / "part-000000.parquet", "half a part")
+    cases = write(tmp_path / "cases.csv", "P1,Q1,P2,Q2\n100,0,105,1\n")
+    solve_batch(cases, tmp_path / "out.parquet", HERTZ, cluster=None, progress=False)
+    assert not left.exists() and running.exists()

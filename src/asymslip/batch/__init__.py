@@ -12,6 +12,14 @@
 - :mod:`.sweep`: the sweep (:mod:`asymslip.sweep`'s chunk evaluation) over partitions.
 
 Nothing here computes physics: the tasks call the same functions as one process does.
+
+Examples
+--------
+>>> from asymslip.batch import Cluster, run_tasks
+>>> Cluster(workers=2).option, Cluster(scheduler="tcp://127.0.0.1:8786").option
+('workers', 'scheduler')
+>>> run_tasks(len, ["one", "three"])  # no cluster: here, in order
+[3, 5]
 """
 
 from .cases import BatchSettings

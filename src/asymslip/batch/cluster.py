@@ -41,6 +41,8 @@ INSTALL = "pip install 'asymslip[dask]'"
 #: Re-runs of a task that raised (a worker that dies is the scheduler's business: its
 #: ``distributed.scheduler.allowed-failures``).
 DEFAULT_RETRIES = 2
+#: How long to try to reach a scheduler before giving up.
+SCHEDULER_TIMEOUT = "20s"
 
 
 def dask_available() -> bool:
@@ -118,7 +120,7 @@ def connect(cluster: Cluster) -> Iterator[Any]:
     quiet = logging.ERROR  # a restarted worker is reported by the result, not by log noise
     if cluster.scheduler is not None:
         try:
-            client = Client(cluster.scheduler, timeout="20s")
+            client = Client(cluster.scheduler, timeout=SCHEDULER_TIMEOUT)
         except OSError as error:
             raise InputError(
                 "scheduler", f"cannot reach the scheduler at {cluster.scheduler}: {error}"

@@ -15,21 +15,40 @@ numbers (integers, floats or decimals), not text.
 Output
 ------
 A study writes one part per partition (``part-000000.parquet``, ...) into a hidden folder
-beside the target (``.NAME.asymslip-PID-HOST-RANDOM.partial``); each part is itself written
+beside the target (``.NAME.asymslip-PID-HOST-RANDOM.parts``; one that a killed study left is
+removed by the next study of the same target, as the file layer does); each part is itself written
 atomically, so a task that is re-run after its worker died replaces a part whole.  At the end
 the folder gets a manifest (``_asymslip.json``: the command, rows and parts) and is renamed to
 the target -- or, for a single ``.csv`` or ``.parquet`` target, its parts are copied in order
 into that one file, written atomically.  On any failure the hidden folder is removed: the
 output is complete or absent.  An existing target folder is replaced only when it is a dataset
 this tool wrote (it has the manifest); any other folder is refused.
+
+Examples
+--------
+>>> import pathlib, tempfile
+>>> import pyarrow as pa, pyarrow.parquet as pq
+>>> from asymslip.batch.dataset import open_source, output_kind, read_partition
+>>> output_kind("results/"), output_kind("results.parquet"), output_kind("results.csv")
+('folder', 'parquet', 'csv')
+>>> with tempfile.TemporaryDirectory() as folder:
+...     cases = pathlib.Path(folder) / "cases.parquet"
+...     pq.write_table(pa.table({"P1": [100.0, None, 90.0], "note": ["a", "b", None]}), cases)
+...     source = open_source(cases)
+...     parts = source.partitions(2)
+...     table = read_partition(parts[0], numeric=["P1"], required=["P1"])
+>>> [(part.start, part.stop) for part in parts], table.line.tolist()
+([(0, 2), (2, 3)], [1, 2])
+>>> table.values["P1"].tolist()[0], table.errors, table.text["note"].to_list()
+(100.0, {1: 'P1: missing value'}, ['a', 'b'])
 """
 
 from __future__ import annotations
 
 import json
 import os
+import re
 import shutil
-import socket
 import uuid
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
@@ -43,12 +62,15 @@ from ..errors import InputError
 from ..files import CaseTable, TextColumn
 from ..files.atomic import atomic_write
 from ..files.collisions import Input, Output, refuse_overwriting_inputs
+from ..files.partials import LOGGER, MARKER, host_tag, partial_prefix, process_is_running
 from ..files.writer import FORMATS
 
 OutputKind = Literal["csv", "parquet", "folder"]
 #: The manifest of a dataset folder this tool wrote.
 MANIFEST = "_asymslip.json"
 PART_SUFFIX = ".parquet"
+#: The end of a staging folder's name.
+STAGING_SUFFIX = ".parts"
 
 
 # --- the input --------------------------------------------------------------------------------
@@ -305,17 +327,44 @@ def refuse_overwriting_cases(cases: Path, out: Path, kind: OutputKind, option: s
     refuse_overwriting_inputs(inputs, [Output(out, option, names)])
 
 
+def clean_left_over_stagings(target: Path) -> list[Path]:
+    """Remove the staging folders a killed study of ``target`` left beside it -- only those
+    provably left over (named as :class:`Staging` names them, on this machine, by a process that
+    no longer runs, this user's); say each one found on the ``asymslip.files`` logger."""
+    parent = target.parent if str(target.parent) else Path(".")
+    pattern = re.compile(
+        rf"\.{re.escape(target.name)}\.{MARKER}-(\d+)-([0-9a-f]{{8}})-[0-9a-f]+{STAGING_SUFFIX}"
+    )
+    removed = []
+    try:
+        entries = sorted(os.scandir(parent), key=lambda entry: entry.name)
+    except OSError:
+        return []
+    for entry in entries:
+        match = pattern.fullmatch(entry.name)
+        if match is None or not entry.is_dir(follow_symlinks=False):
+            continue
+        pid, host = int(match.group(1)), match.group(2)
+        mine = not hasattr(os, "getuid") or entry.stat(follow_symlinks=False).st_uid == os.getuid()
+        if host == host_tag() and pid != os.getpid() and process_is_running(pid) is False and mine:
+            shutil.rmtree(entry.path, ignore_errors=True)
+            LOGGER.warning("removed %s, the parts a killed study left behind", entry.path)
+            removed.append(Path(entry.path))
+        else:
+            LOGGER.warning("kept %s: it may be the parts of a study still running", entry.path)
+    return removed
+
+
 class Staging:
-    """The hidden folder beside a target where a study's parts are written."""
+    """The hidden folder beside a target where a study's parts are written, named as the
+    file layer names its partial files (:mod:`asymslip.files.partials`) but ending in
+    ``.parts``: ``.NAME.asymslip-PID-HOST-RANDOM.parts``."""
 
     def __init__(self, target: Path, option: str) -> None:
         self.target = target
         self.option = option
         parent = target.parent if str(target.parent) else Path(".")
-        name = target.name or "out"
-        self.folder = parent / (
-            f".{name}.asymslip-{os.getpid()}-{socket.gethostname()}-{uuid.uuid4().hex[:8]}.partial"
-        )
+        self.folder = parent / (partial_prefix(target) + uuid.uuid4().hex[:8] + STAGING_SUFFIX)
         try:
             self.folder.mkdir()
         except OSError as error:

@@ -10,6 +10,15 @@ solver by :func:`asymslip.solver.compare.with_asymptotes`: ``asymptote_<name>`` 
 (1 when within the solver's bound, else 0), for ``<name>`` in ``b`` (the headline),
 ``b_paper`` (22), ``b_first_order`` (28), ``b_corrective_stick`` (40), ``b_exact``.  A case the
 solver refuses or cannot converge keeps its two rows, with the reason in ``error``.
+
+Examples
+--------
+>>> from asymslip.batch.cases import RowError
+>>> from asymslip.batch.solving import result_schema, solve_one
+>>> [name for name, _ in result_schema()][:6]
+['edge', 'b', 'b_error', 'b_error_elements', 'slip_direction', 'b_method']
+>>> solve_one(RowError("R: must be > 0 (got -1.0)")).error  # a bad row: no solve, its reason
+'R: must be > 0 (got -1.0)'
 """
 
 from __future__ import annotations
@@ -138,14 +147,6 @@ def solve_one(case: Case | RowError, solver: Solve = solve) -> CaseOutcome:
     solver_record = {f"solver_{name}": _float(data["solver"][name]) for name in SOLVER_NUMBERS}
     text = WARNING_SEPARATOR.join(warnings) if warnings else None
     return CaseOutcome((right, left), solver_record, text, None)
-
-
-@dataclass(frozen=True)
-class PartitionResult:
-    """What one partition gave: its rows, and (line, error) of each case that failed."""
-
-    rows: int
-    failed: list[tuple[int, str]]
 
 
 def solve_table(

@@ -13,6 +13,28 @@ decides where the parts go:
   its part into the hidden staging folder of :mod:`.dataset`, renamed to the target at the end;
 - a cluster and one file: the tasks write parts (in the file's format) into the staging
   folder, copied in order into the file at the end.
+
+Examples
+--------
+A sweep of two cycles, one a task, in this process (the second slides grossly):
+
+>>> import functools, pathlib, tempfile
+>>> from asymslip import HertzLaw
+>>> from asymslip.batch.study import Reading, run_study
+>>> from asymslip.files import read_table
+>>> from asymslip.sweep.chunk import schema, sweep_chunk
+>>> with tempfile.TemporaryDirectory() as folder:
+...     cases = pathlib.Path(folder) / "cases.csv"
+...     _ = cases.write_text("P1,Q1,P2,Q2\\n100,0,105,1\\n100,0,105,50\\n")
+...     table = read_table(cases, required=["P1", "Q1", "P2", "Q2"])
+...     evaluate = functools.partial(
+...         sweep_chunk, law=HertzLaw(1, 1), default_mu=0.1, edge="right", numbers=set()
+...     )
+...     columns = schema(table.header, "right", set())
+...     out = pathlib.Path(folder) / "out.csv"
+...     run = run_study(table, out, "csv", columns, evaluate, Reading(()), rows_per_task=1)
+>>> run.rows, [line for line, _ in run.failed]
+(2, [3])
 """
 
 from __future__ import annotations
@@ -32,6 +54,7 @@ from .dataset import (
     OutputKind,
     ParquetSource,
     Partition,
+    clean_left_over_stagings,
     merge_parts,
     read_partition,
     staging,
@@ -155,6 +178,7 @@ def run_study(
         cluster for several studies).
     """
     started = time.perf_counter()
+    clean_left_over_stagings(out)
     pieces = _pieces(source, rows_per_task)
     frozen = tuple(schema)
     failed: list[tuple[int, str]] = []

@@ -20,11 +20,15 @@ Examples
 ...     out = folder + "/results/"
 ...     summary = sweep_study(cases, HertzLaw(1, 1), out, mu=0.1, rows_per_task=2)
 ...     parts = sorted(p.name for p in pathlib.Path(out).iterdir())
-...     b = pq.read_table(out).column("b").to_pylist()
+...     exact = pq.read_table(out).column("b_exact").to_pylist()
 >>> parts
 ['_asymslip.json', 'part-000000.parquet', 'part-000001.parquet']
->>> [round(value, 4) for value in b]
-[11.1419, 11.0847, 10.9641]
+
+``b_exact`` is a(P_K): sqrt(4 P_K / pi) by (29) with P_K = (P1 + P2)/2 - (Q2 - Q1)/(2 mu) by
+(33), i.e. P_K = 97.5, 95 and 90:
+
+>>> [round(value, 4) for value in exact]
+[11.1419, 10.9981, 10.7047]
 """
 
 from __future__ import annotations
