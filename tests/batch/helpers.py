@@ -61,3 +61,16 @@ class ExitOnceHertz(HertzLaw):
             Path(self.marker).write_text(str(os.getpid()))
             os._exit(1)
         return super().cycle_state(P1, dP)
+
+
+@dataclass(frozen=True)
+class ExitAlways:
+    """The solver, except that the case with this P2 ends its worker process every time: a
+    case that crashes the interpreter."""
+
+    P2: float
+
+    def __call__(self, law: Any, loading: Any, mu: float, **options: Any) -> SolverResult:
+        if _is_case(loading, self.P2):
+            os._exit(1)
+        return solve(law, loading, mu, **options)

@@ -18,7 +18,7 @@ from asymslip.batch.solving import TIMING_COLUMNS
 from asymslip.batch.sweep import sweep_study
 from asymslip.sweep import sweep_file
 
-from .helpers import ExitOnce, ExitOnceHertz
+from .helpers import ExitAlways, ExitOnce, ExitOnceHertz
 
 pytestmark = pytest.mark.slow
 
@@ -165,3 +165,24 @@ def test_the_command_line_runs_a_batch_on_a_running_scheduler(tmp_path: Path, on
         )
     assert status == 1  # the gross-sliding row
     assert rows_of(tmp_path / "out.parquet") == one_process
+
+
+def test_a_case_that_kills_every_worker_it_meets_stops_the_study_with_nothing_written(
+    tmp_path: Path,
+):
+    """The scheduler gives up on a task after its worker died three times: one error saying
+    so, and no output (the parts the other tasks wrote are removed)."""
+    from asymslip.batch.cluster import StudyError
+
+    (tmp_path / "cases.csv").write_text(CASES)
+    with pytest.raises(StudyError, match=r"ended its worker process 3 times.*nothing was written"):
+        solve_batch(
+            tmp_path / "cases.csv",
+            tmp_path / "out.parquet",
+            SETTINGS,
+            cluster=Cluster(workers=2),
+            cases_per_task=3,
+            progress=False,
+            solver=ExitAlways(104.0),
+        )
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["cases.csv"]

@@ -45,6 +45,12 @@ DEFAULT_RETRIES = 2
 SCHEDULER_TIMEOUT = "20s"
 
 
+class StudyError(RuntimeError):
+    """A study that cannot finish: a task ended its worker process more often than the
+    scheduler allows (a case that crashes the interpreter, a worker out of memory).  Nothing
+    has been written."""
+
+
 def dask_available() -> bool:
     """Whether ``dask.distributed`` can be imported (the ``dask`` extra)."""
     try:
@@ -173,9 +179,10 @@ def run_tasks(
 
     Raises
     ------
+    StudyError
+        A task's workers died more often than the scheduler allows.
     Exception
-        Whatever a task raised on its last try, or ``distributed``'s ``KilledWorker`` when a
-        task's workers died more often than the scheduler allows.
+        Whatever a task raised on its last try.
     """
     if cluster is None and client is None:
         return [function(task) for task in tasks]
@@ -196,7 +203,18 @@ def run_tasks(
             from distributed import progress as dask_progress
 
             dask_progress(futures, multi=False)  # blocks until every task has finished
-            print(file=sys.stdout)
         return list(client.gather(futures))
+    except Exception as error:
+        from distributed.scheduler import KilledWorker
+
+        if not isinstance(error, KilledWorker):
+            raise
+        index = keys.index(error.task) if error.task in keys else None
+        which = f"task {index} of {len(keys)}" if index is not None else "a task"
+        raise StudyError(
+            f"{which} ended its worker process {error.allowed_failures} times (a crash of the "
+            "interpreter, or a worker out of memory: try smaller tasks); the study was stopped "
+            "and nothing was written"
+        ) from None
     finally:
         client.cancel(futures)

@@ -89,6 +89,7 @@ def add_cluster_options(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     from ..batch import BatchSettings, cluster_from_options, solve_batch
     from ..batch.cases import LAW_PARAMETERS
+    from ..batch.cluster import StudyError
 
     if args.mu is not None:
         positive("mu", args.mu)
@@ -113,8 +114,12 @@ def run(args: argparse.Namespace) -> int:
     )
     settings = BatchSettings(args.law, parameters, args.mu, args.elements, args.steps)
     cluster = cluster_from_options(args.workers, args.scheduler, args.retries)
-    summary = solve_batch(
-        args.cases, args.out, settings, cluster=cluster, cases_per_task=args.cases_per_task
-    )
+    try:
+        summary = solve_batch(
+            args.cases, args.out, settings, cluster=cluster, cases_per_task=args.cases_per_task
+        )
+    except StudyError as error:  # not the input's fault: one line, and the failure status
+        print(f"asymslip solve-batch: error: {error}", file=sys.stderr)
+        return 1
     print(summary.report(), file=sys.stderr)
     return 1 if summary.failed else 0

@@ -58,6 +58,7 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
 
 def run(args: argparse.Namespace) -> int:
     from ..batch import cluster_from_options
+    from ..batch.cluster import StudyError
     from ..batch.dataset import is_parquet_input
     from ..batch.sweep import sweep_study
     from ..sweep import sweep_file
@@ -78,14 +79,18 @@ def run(args: argparse.Namespace) -> int:
             args.cases, law, args.out, mu=args.mu, edge=args.edge, chunk_rows=args.chunk_rows
         )
     else:  # partitions of a dataset, or a cluster: the same chunks mapped by asymslip.batch
-        summary = sweep_study(
-            args.cases,
-            law,
-            args.out,
-            mu=args.mu,
-            edge=args.edge,
-            rows_per_task=args.chunk_rows,
-            cluster=cluster,
-        )
+        try:
+            summary = sweep_study(
+                args.cases,
+                law,
+                args.out,
+                mu=args.mu,
+                edge=args.edge,
+                rows_per_task=args.chunk_rows,
+                cluster=cluster,
+            )
+        except StudyError as error:  # not the input's fault: one line, the failure status
+            print(f"asymslip sweep: error: {error}", file=sys.stderr)
+            return 1
     print(summary.report(), file=sys.stderr)
     return 1 if summary.invalid else 0
