@@ -42,11 +42,11 @@ from __future__ import annotations
 import sys
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, TextIO
 
-from ..files import CaseTable, Progress, open_table
+from ..files import CaseTable, Progress, TextColumn, open_table
 from ..files.writer import Column, Kind
 from .cluster import Cluster, run_tasks
 from .dataset import (
@@ -125,9 +125,25 @@ class StudyRun:
     bytes: int = 0
 
 
-def _pieces(source: CaseTable | ParquetSource, rows: int) -> list[CaseTable | Partition]:
+def _own_text(table: CaseTable) -> CaseTable:
+    """The slice with text columns of its own bytes: a slice's text shares the whole file's
+    buffer, which would travel to the worker with every task."""
+    text = {
+        name: TextColumn(
+            column.data[column.offsets[0] : column.offsets[-1]].copy(),
+            column.offsets - column.offsets[0],
+        )
+        for name, column in table.text.items()
+    }
+    return replace(table, text=text)
+
+
+def _pieces(
+    source: CaseTable | ParquetSource, rows: int, shipped: bool
+) -> list[CaseTable | Partition]:
     if isinstance(source, CaseTable):
-        return list(source.chunks(rows))
+        chunks = source.chunks(rows)
+        return [_own_text(chunk) if shipped else chunk for chunk in chunks]
     return list(source.partitions(rows))
 
 
@@ -179,10 +195,11 @@ def run_study(
     """
     started = time.perf_counter()
     clean_left_over_stagings(out)
-    pieces = _pieces(source, rows_per_task)
+    here = cluster is None and client is None
+    pieces = _pieces(source, rows_per_task, shipped=not here)
     frozen = tuple(schema)
     failed: list[tuple[int, str]] = []
-    if cluster is None and client is None and kind != "folder":
+    if here and kind != "folder":
         bar = Progress(total, stream or sys.stderr, progress, label=command)
         done = 0
         with open_table(out, frozen, option="out") as writer:
