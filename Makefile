@@ -5,7 +5,7 @@ PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
-EXTRAS := derive,dev,plot,bench,dask,special,parquet
+EXTRAS := derive,dev,plot,bench,dask,special,parquet,fe
 
 .DEFAULT_GOAL := all
 .PHONY: all env demo generate check-generated check-wheel verify test lint test-languages toolchains bench \
@@ -66,7 +66,7 @@ report: $(STAMP) ## write generated/report/derivation.md from the derivation rec
 check-wheel: ## build sdist and wheel, install the wheel with no extras, run the README example
 	.ci/check-wheel
 
-toolchains: ## install gfortran and Octave where missing (Debian, as root; quiet, idempotent)
+toolchains: ## install gfortran, Octave and CalculiX where missing (Debian, as root; quiet, idempotent)
 	@.ci/install-toolchains
 
 test-languages: $(STAMP) toolchains ## compile the C and Fortran, run the MATLAB files, compare with NumPy

@@ -19,7 +19,7 @@ LAYERS = (
     {"slip_zones", "edge_flags", "solver"},
     {"tractions", "sweep", "calibration"},
     {"batch"},
-    {"figures", "match"},
+    {"figures", "match", "fe"},
     {"cli"},
     {"__main__"},
 )

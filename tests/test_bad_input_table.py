@@ -201,6 +201,16 @@ FILES = {
     "traces.csv": hertz_traces(),
     "traces_nan.csv": hertz_traces().replace("\n80.0,0.0,", "\n80.0,nan,", 1),
     "calibration_bad.json": "{not json",
+    # issue 17: semicolons, a load given twice, pressures integrating to twice the load
+    "traces_semicolons.csv": hertz_traces().replace(",", ";"),
+    "traces_twice.csv": hertz_traces() + hertz_traces().split("\n", 1)[1].split("\n100.0,")[0],
+    "traces_double.csv": "P,x,p\n"
+    + "".join(
+        f"{P},{x},{2 * float(p)!r}\n"
+        for P, x, p in (row.split(",") for row in hertz_traces().splitlines()[1:])
+    ),
+    "not_frd.frd": "hello\n",
+    "surface.vtu": "<VTKFile/>\n",  # a mesh file: reading it needs meshio (the fe extra)
     # law modules written by hand in the form `asymslip derive` writes (which refuses these)
     "inverse.py": "import numpy\n__asymslip_law__ = {'name': 'inverse', 'params': []}\n"
     "def load(a):\n    return 1 / a\ndef load_slope(a):\n    return -1 / a**2\n"
@@ -1619,6 +1629,23 @@ def solve_cases() -> list[Bad]:
     ]
 
 
+#: fe-model's options but --Q2 (steel, R = 50, the cycle of tests/fe).
+FE_MODEL = (
+    "--R",
+    "50",
+    "--E-star",
+    "115384.6",
+    "--mu",
+    "0.5",
+    "--P1",
+    "1000",
+    "--Q1",
+    "-100",
+    "--P2",
+    "1100",
+)
+
+
 def calibrate_cases() -> list[Bad]:
     """Calibration from pressure traces, and the calibrated law it writes."""
     traces = "{d}/traces.csv"
@@ -1692,6 +1719,75 @@ def calibrate_cases() -> list[Bad]:
             ("calibrate", traces, "--out", "{d}/missing/calibration.json"),
             "--out",
             r"cannot write",
+        ),
+        Bad(
+            "calibrate: semicolons between fields",
+            ("calibrate", "{d}/traces_semicolons.csv"),
+            "TRACES",
+            r"the fields are separated by ';'",
+        ),
+        Bad(
+            "calibrate: a load given twice",
+            ("calibrate", "{d}/traces_twice.csv"),
+            "TRACES",
+            r"P = 80 is given twice",
+        ),
+        Bad(
+            "calibrate: pressures integrating to twice the load",
+            ("calibrate", "{d}/traces_double.csv"),
+            "TRACES",
+            r"the pressures integrate to 2(\.0+)? times the load",
+        ),
+        Bad(
+            "calibrate --field on a CSV",
+            ("calibrate", traces, "--field", "CPRESS"),
+            "--field",
+            r"is for mesh files",
+        ),
+        Bad(
+            "calibrate: an .frd that is not one",
+            ("calibrate", "{d}/not_frd.frd"),
+            "TRACES",
+            r"not a CalculiX .frd file",
+        ),
+        Bad(
+            "fe-model: gross sliding",
+            ("fe-model", *FE_MODEL, "--Q2", "600", "--out", "{d}/fe"),
+            "--Q2",
+            r"gross sliding at state 2",
+        ),
+        Bad(
+            "fe-model --nu 0.5",
+            ("fe-model", *FE_MODEL, "--Q2", "150", "--nu", "0.5", "--out", "{d}/fe"),
+            "--nu",
+            r"must be in \[0, 0.5\)",
+        ),
+        Bad(
+            "fe-model --elements-per-half-width 4",
+            (
+                "fe-model",
+                *FE_MODEL,
+                "--Q2",
+                "150",
+                "--elements-per-half-width",
+                "4",
+                "--out",
+                "{d}/fe",
+            ),
+            "--elements-per-half-width",
+            r"must be an integer >= 8",
+        ),
+        Bad(
+            "fe-model: a contact not small beside R",
+            ("fe-model", *FE_MODEL, "--Q2", "150", "--R", "0.5", "--out", "{d}/fe"),
+            "--R",
+            r"is not small beside",
+        ),
+        Bad(
+            "fe-model --out is a file",
+            ("fe-model", *FE_MODEL, "--Q2", "150", "--out", "{d}/a_file"),
+            "--out",
+            r"is not a folder",
         ),
         Bad(
             "calibrated law without --calibration",
@@ -2650,6 +2746,12 @@ MISSING_EXTRAS = [
         ),
         "batch_on_dask.csv",
     ),
+    (
+        "fe",
+        "meshio",
+        ("calibrate", "{d}/surface.vtu", "--out", "{d}/cal_without_meshio.json"),
+        "cal_without_meshio.json",
+    ),
 ]
 #: (package, a command that must work without it): only what needs an extra may refuse.
 WITHOUT_EXTRAS = [
@@ -2695,7 +2797,7 @@ WITHOUT_EXTRAS = [
 #: JSON one after the other and printing each one's (exit status, stdout, stderr) as JSON.
 WITHOUT_OPTIONAL_PACKAGES = """
 import contextlib, io, json, sys
-for package in ("matplotlib", "scipy", "sympy", "pyarrow", "dask", "distributed"):
+for package in ("matplotlib", "scipy", "sympy", "pyarrow", "meshio", "dask", "distributed"):
     sys.modules[package] = None
 from asymslip.cli import main
 results = []

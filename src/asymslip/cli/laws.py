@@ -124,6 +124,10 @@ OPTION_OF = {
     "steps": "--steps",
     "profile_table": "--profile-table",
     "data": "--data",
+    "field": "--field",
+    "nu": "--nu",
+    "elements_per_half_width": "--elements-per-half-width",
+    "ccx": "ccx",
 }
 
 
