@@ -18,6 +18,7 @@ LAYERS = (
     {"core"},
     {"slip_zones", "edge_flags", "solver"},
     {"tractions", "sweep", "calibration"},
+    {"batch"},
     {"figures", "match", "fe"},
     {"cli"},
     {"__main__"},
