@@ -20,6 +20,7 @@ LAYERS = (
     {"tractions", "sweep", "calibration"},
     {"stress"},
     {"nucleation"},
+    {"batch"},
     {"figures", "match", "fe"},
     {"cli"},
     {"__main__"},
@@ -119,6 +120,7 @@ def test_the_code_generator_never_imports_the_api():
         "asymslip.expressions",
         "asymslip.files",
         "asymslip.files.atomic",
+        "asymslip.lazy",
     }
     leaks = {
         (module, imported)

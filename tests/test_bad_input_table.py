@@ -185,6 +185,9 @@ FILES = {
     "cases_bad_rows.csv": "# cycles\nP1,Q1,P2,Q2,case\n100,0,105,1,good\n100,0,1o5,1,typo\n"
     "100,0,100,1,flat\n100,900,105,1,sliding\n100,nan,105,1,nan\n100,,105,1,empty\n"
     "1e2,-1e-1,1.05e2,5e-1,good\n",
+    # solve-batch: a case, and a table with neither a cycle nor a path
+    "batch.csv": "case,P1,Q1,P2,Q2\nfig5,100,0,105,1\n",
+    "batch_no_cycle.csv": "case,P1,Q1\na,100,0\n",
     # module laws: one row inside the cubic's range, one beyond its maximum load
     "cases_cubic.csv": "P1,Q1,P2,Q2\n1,0,1.05,0.01\n100,0,105,1\n2,0,2.1,0.02\n",
     "not_a_law.py": "x = 1\n",
@@ -238,6 +241,14 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
     os.symlink(folder / "cases.csv", folder / "cases_symlink.csv")
     os.link(folder / "cases.csv", folder / "cases_hardlink.csv")
     (folder / "a_folder").mkdir()
+    (folder / "batch_dataset").mkdir()  # a Parquet dataset of solve-batch cases
+    import pyarrow
+    import pyarrow.parquet
+
+    pyarrow.parquet.write_table(
+        pyarrow.table({"P1": [100.0], "Q1": [0.0], "P2": [105.0], "Q2": [1.0]}),
+        folder / "batch_dataset" / "part.parquet",
+    )
     (folder / "folder.py").mkdir()
     # The law modules of `asymslip derive` that the table uses (their derivation is a case of
     # its own below too).
@@ -634,6 +645,12 @@ def physics_cases() -> list[Bad]:
             ("slip-zone", *hertz(P1="5e-324", Q1="5e-324", P2="1e-323", Q2="0")),
             "--Q1",
             r"gross sliding",
+        ),
+        Bad(
+            "a subnormal P1 is no gross sliding: its contact growth overflows",
+            ("slip-zone", *hertz(P1="5e-324")),
+            "--P1",
+            r"non-finite eq24 at the right edge",
         ),
         Bad(
             "power law: A = 1e300 overflows",
@@ -1899,6 +1916,126 @@ def stress_cases() -> list[Bad]:
     ]
 
 
+def solve_batch_cases() -> list[Bad]:
+    def batch(*options: str, cases: str = "{d}/batch.csv", out: str = "{d}/o.parquet") -> tuple:
+        return ("solve-batch", cases, *HERTZ, "--mu", "0.1", *options, "--out", out)
+
+    return [
+        Bad("solve-batch: CASES missing", batch(cases="{d}/nowhere.csv"), "CASES", "cannot read"),
+        Bad(
+            "solve-batch: CASES an empty folder",
+            batch(cases="{d}/a_folder"),
+            "CASES",
+            r"cannot read .*no \.parquet file",
+        ),
+        Bad(
+            "solve-batch: CASES with neither a cycle nor a path",
+            batch(cases="{d}/batch_no_cycle.csv"),
+            "CASES",
+            r"no column P2, Q2 and no path column",
+        ),
+        Bad(
+            "solve-batch: a law without a profile",
+            (
+                "solve-batch",
+                "{d}/batch.csv",
+                "--law",
+                "table",
+                "--table",
+                "{d}/table.csv",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/o.parquet",
+            ),
+            "--law",
+            r"solves a law's profile",
+        ),
+        Bad(
+            "solve-batch: no radius",
+            ("solve-batch", "{d}/batch.csv", "--E-star", "1", "--mu", "0.1", "--out", "{d}/o.csv"),
+            "--R",
+            r"is required with --law hertz",
+        ),
+        Bad(
+            "solve-batch: no friction coefficient",
+            ("solve-batch", "{d}/batch.csv", *HERTZ, "--out", "{d}/o.parquet"),
+            "--mu",
+            r"is required",
+        ),
+        Bad("solve-batch: --mu 0", batch("--mu", "0"), "--mu", r"must be > 0"),
+        Bad("solve-batch: too few elements", batch("--elements", "10"), "--elements", "at least"),
+        Bad("solve-batch: no steps", batch("--steps", "0"), "--steps", "at least 1"),
+        Bad(
+            "solve-batch: no cases per task",
+            batch("--cases-per-task", "0"),
+            "--cases-per-task",
+            ">= 1",
+        ),
+        Bad("solve-batch: no workers", batch("--workers", "0"), "--workers", ">= 1"),
+        Bad(
+            "solve-batch: workers and a scheduler",
+            batch("--workers", "2", "--scheduler", "tcp://127.0.0.1:8786"),
+            "--scheduler",
+            r"either --workers or --scheduler",
+        ),
+        Bad(
+            "solve-batch: --out is the input",
+            batch(out="{d}/batch.csv"),
+            "--out",
+            r"is also an input \(the cases",
+        ),
+        Bad(
+            "solve-batch: --out a folder without its slash",
+            batch(out="{d}/a_folder"),
+            "--out",
+            r"is a folder: end it with /",
+        ),
+        Bad(
+            "solve-batch: --out a file of the cases folder",
+            (
+                "solve-batch",
+                "{d}/batch_dataset",
+                *HERTZ,
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/batch_dataset/part.parquet",
+            ),
+            "--out",
+            r"part\.parquet is also an input \(a file of the cases",
+        ),
+        Bad(
+            "solve-batch: --out a folder holding the input",
+            batch(out="{d}/"),
+            "--out",
+            r"holds an input",
+        ),
+        Bad(
+            "solve-batch: --out a bad extension",
+            batch(out="{d}/o.txt"),
+            "--out",
+            r"name a \.csv or \.parquet file",
+        ),
+        Bad(
+            "sweep: no workers",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                *HERTZ,
+                "--mu",
+                "0.1",
+                "--workers",
+                "0",
+                "--out",
+                "{d}/o.csv",
+            ),
+            "--workers",
+            ">= 1",
+        ),
+    ]
+
+
 BAD: list[Bad] = [
     *number_option_cases(),
     *physics_cases(),
@@ -1910,6 +2047,7 @@ BAD: list[Bad] = [
     *calibrate_cases(),
     *match_cases(),
     *stress_cases(),
+    *solve_batch_cases(),
 ]
 
 
@@ -1976,12 +2114,12 @@ def sweep_check(out: str, lam: list[float]) -> Callable[..., None]:
 
 def slip_check(points: list[float]) -> Callable[..., None]:
     """Fig. 5's cycle slips forward at the right edge: no slip in the stick zone (x < b), and
-    h < 0 in the slip zone (the traction resists the slip; see ``asymslip slip --help``)."""
+    delta > 0 in the slip zone (the sign of q2 - q1; see ``asymslip slip --help``)."""
 
     def check(result: dict, folder: Path) -> None:
         assert result["x"] == points
-        for x, h in zip(result["x"], result["slip"], strict=True):
-            assert h == 0 if x < result["b"] else h < 0
+        for x, delta in zip(result["x"], result["slip"], strict=True):
+            assert delta == 0 if x < result["b"] else delta > 0
 
     return check
 
@@ -2696,6 +2834,22 @@ MISSING_EXTRAS = [
         "out.parquet",
     ),
     (
+        "dask",
+        "distributed",
+        (
+            "solve-batch",
+            "{d}/batch.csv",
+            *HERTZ,
+            "--mu",
+            "0.1",
+            "--workers",
+            "2",
+            "--out",
+            "{d}/batch_on_dask.csv",
+        ),
+        "batch_on_dask.csv",
+    ),
+    (
         "fe",
         "meshio",
         ("calibrate", "{d}/surface.vtu", "--out", "{d}/cal_without_meshio.json"),
@@ -2724,6 +2878,20 @@ WITHOUT_EXTRAS = [
         "pyarrow",
         ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/without_pyarrow.csv"),
     ),
+    (
+        "distributed",
+        (
+            "solve-batch",
+            "{d}/batch.csv",
+            *HERTZ,
+            "--mu",
+            "0.1",
+            "--elements",
+            "100",
+            "--out",
+            "{d}/batch_in_one_process.csv",
+        ),
+    ),
 ]
 
 
@@ -2732,7 +2900,7 @@ WITHOUT_EXTRAS = [
 #: JSON one after the other and printing each one's (exit status, stdout, stderr) as JSON.
 WITHOUT_OPTIONAL_PACKAGES = """
 import contextlib, io, json, sys
-for package in ("matplotlib", "scipy", "sympy", "pyarrow", "meshio"):
+for package in ("matplotlib", "scipy", "sympy", "pyarrow", "meshio", "dask", "distributed"):
     sys.modules[package] = None
 from asymslip.cli import main
 results = []
@@ -2851,6 +3019,8 @@ def test_what_needs_no_optional_dependency_works_without_them(files: Path, proce
     assert json.loads(results["scipy"][1])["a1"] > 0  # the power law's slip zone: no 2F1
     with open(files / "without_pyarrow.csv", newline="") as handle:
         assert [float(row["lam"]) for row in csv.DictReader(handle)] == [0.2, 0.12]
+    with open(files / "batch_in_one_process.csv", newline="") as handle:  # no pyarrow, no Dask
+        assert [row["edge"] for row in csv.DictReader(handle)] == ["right", "left"]
 
 
 def test_a_reader_that_goes_away_stops_the_command_quietly(processes: dict):

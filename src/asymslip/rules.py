@@ -1,6 +1,6 @@
 """The one table of rules an input must satisfy, checked per element.
 
-Every entry point -- :class:`~asymslip.cycle.LoadCycle`, :func:`~asymslip.slip_zone.slip_zone`,
+Every entry point -- :class:`~asymslip.cycle.LoadCycle`, :func:`~asymslip.slip_zones.slip_zone`,
 the tractions, the sweep -- checks its inputs against the rules below and nothing else.  A rule
 is checked on whole arrays: a :class:`Verdict` records, for each element, the first rule it
 breaks (in the order of :data:`RULES`) and the value to show.  The Python API then raises an

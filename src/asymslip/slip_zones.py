@@ -12,8 +12,7 @@ when asked, so that 10^6 cycles cost no 10^6 lists of strings.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-from typing import Literal
+from typing import Literal, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -32,9 +31,11 @@ FloatArray = NDArray[np.float64]
 
 
 # --- the result ----------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class SlipZoneResult:
+class SlipZoneResult(NamedTuple):
     """Everything `asymslip slip-zone` reports for one edge; field names are the JSON keys.
+
+    An immutable record (a named tuple: one cycle's result is built in a microsecond, where a
+    frozen dataclass of 21 fields costs eight).
 
     Fields are floats for one cycle and arrays for many.  Lengths are in the units of the
     law's parameters.  ``b`` is measured from the contact centre along the edge's outward
@@ -65,9 +66,9 @@ class SlipZoneResult:
     b_corrective_stick: FloatArray | float | None
     slip_direction: FloatArray | float
     validity: dict[str, FloatArray | float]
-    warning_flags: NDArray[np.int64] | int = field(repr=False)
-    law: ContactLaw = field(repr=False)
-    errors: list[str | None] | None = field(default=None, repr=False)
+    warning_flags: NDArray[np.int64] | int
+    law: ContactLaw
+    errors: list[str | None] | None = None
     left: SlipZoneResult | None = None
 
     @property
@@ -89,48 +90,46 @@ class SlipZoneResult:
         return data
 
 
-def _number(value: float) -> float | None:
-    """One cycle's number as the result gives it: a float, None where it is not derived."""
-    return value if value == value else None
-
-
 def _scalar_result(
     state: EdgeState,
     law: ContactLaw,
     valid: bool,
     errors: list[str | None] | None,
-    left: SlipZoneResult | None,
+    left: SlipZoneResult | None = None,
 ) -> SlipZoneResult:
     """One cycle's edge; every number None (null in JSON) for an invalid cycle."""
     if not valid:
         state = _NOTHING
+    if type(state.a1) is float:  # the float path: Python floats already
+        a1, a2, lam, eta, L_I1, L_I2, L_II1, L_II2, b, width, accuracy = state[:11]
+    else:  # NumPy scalars, where Python's float arithmetic would have raised
+        a1, a2, lam, eta, L_I1, L_I2, L_II1, L_II2, b, width, accuracy = map(float, state[:11])
+    b_paper, b_first_order = float(state.b_paper), float(state.b_first_order)
+    b_exact, b_corrective_stick = float(state.b_exact), float(state.b_corrective_stick)
+    eq24, eq25, eq26, eq27 = state.eq24, state.eq25, state.eq26, state.eq27
     return SlipZoneResult(
-        a1=float(state.a1),
-        a2=float(state.a2),
-        lam=float(state.lam),
-        eta=float(state.eta),
-        L_I1=float(state.L_I1),
-        L_I2=float(state.L_I2),
-        L_II1=float(state.L_II1),
-        L_II2=float(state.L_II2),
-        b=float(state.b),
-        slip_zone_width=float(state.slip_zone_width),
-        b_accuracy=float(state.b_accuracy),
-        b_paper=_number(float(state.b_paper)),
-        b_first_order=_number(float(state.b_first_order)),
-        b_exact=_number(float(state.b_exact)),
-        b_corrective_stick=_number(float(state.b_corrective_stick)),
-        slip_direction=int(state.slip_direction) if valid else math.nan,
-        validity={
-            "eq24": float(state.eq24),
-            "eq25": float(state.eq25),
-            "eq26": float(state.eq26),
-            "eq27": float(state.eq27),
-        },
-        warning_flags=int(state.flags),
-        law=law,
-        errors=errors,
-        left=left,
+        a1,
+        a2,
+        lam,
+        eta,
+        L_I1,
+        L_I2,
+        L_II1,
+        L_II2,
+        b,
+        width,
+        accuracy,
+        # None (null in JSON) for an estimate not derived here (NaN)
+        b_paper if b_paper == b_paper else None,
+        b_first_order if b_first_order == b_first_order else None,
+        b_exact if b_exact == b_exact else None,
+        b_corrective_stick if b_corrective_stick == b_corrective_stick else None,
+        int(state.slip_direction) if valid else math.nan,
+        {"eq24": float(eq24), "eq25": float(eq25), "eq26": float(eq26), "eq27": float(eq27)},
+        int(state.flags),
+        law,
+        errors,
+        left,
     )
 
 
@@ -138,7 +137,7 @@ def _array_result(
     evaluation: Evaluation,
     edge: Edge,
     errors: list[str | None] | None,
-    left: SlipZoneResult | None,
+    left: SlipZoneResult | None = None,
 ) -> SlipZoneResult:
     state = evaluation.edges[edge]
     verdict = evaluation.verdict
@@ -158,18 +157,6 @@ def _array_result(
         errors=errors,
         left=left,
     )
-
-
-def _edge_result(
-    evaluation: Evaluation,
-    edge: Edge,
-    errors: list[str | None] | None,
-    left: SlipZoneResult | None = None,
-) -> SlipZoneResult:
-    law = evaluation.law.for_edge(edge)
-    if evaluation.shape == ():
-        return _scalar_result(evaluation.edges[edge], law, evaluation.valid, errors, left)
-    return _array_result(evaluation, edge, errors, left)
 
 
 def slip_zone(
@@ -197,12 +184,16 @@ def slip_zone(
     invalid
         ``"raise"`` (default): an :class:`InputError` for the first invalid element, naming the
         parameter, the rule and how many elements break one.  ``"mark"``: invalid elements
-        are NaN and ``result.errors`` gives each one's reason.
+        are NaN and ``result.errors`` gives each one's reason.  A :class:`LoadCycle` refuses
+        its own bad elements (NaN, P2 <= P1) when built; to have them marked too, build it
+        with :meth:`LoadCycle.unchecked`.
 
     Returns
     -------
     SlipZoneResult
-        b from (22), the slip-zone width a1 - b (cancellation-free), b to first order (28),
+        The headline b (b2: second order in dP with both edges and bulk tension) and its
+        stated accuracy, the slip-zone width a1 - b (cancellation-free), the paper's (22) as
+        ``b_paper``, b to first order (28),
         the corrective-stick b (40), the exact b = a(P_K) of (33) when eta = 0, the slip
         direction, the validity measures (24)-(27) and warnings.  Floats for one cycle,
         arrays for many.
@@ -229,14 +220,26 @@ def slip_zone(
         raise InputError("invalid", "must be 'raise' or 'mark'", invalid)
     evaluation = evaluate(law, cycle, mu)
     errors = None
-    if not evaluation.valid:
+    valid = evaluation.valid
+    if not valid:
         if invalid == "raise":
             evaluation.verdict.raise_first()
         errors = evaluation.verdict.messages()
+    edges = evaluation.edges
+    if evaluation.shape == ():
+        evaluated = evaluation.law
+        if edge == "left":
+            return _scalar_result(edges[Edge.LEFT], evaluated.for_edge(Edge.LEFT), valid, errors)
+        left = None
+        if edge == "both":
+            left = _scalar_result(edges[Edge.LEFT], evaluated.for_edge(Edge.LEFT), valid, errors)
+        return _scalar_result(
+            edges[Edge.RIGHT], evaluated.for_edge(Edge.RIGHT), valid, errors, left
+        )
     if edge == "left":
-        return _edge_result(evaluation, Edge.LEFT, errors)
-    left = _edge_result(evaluation, Edge.LEFT, errors) if edge == "both" else None
-    return _edge_result(evaluation, Edge.RIGHT, errors, left)
+        return _array_result(evaluation, Edge.LEFT, errors)
+    left = _array_result(evaluation, Edge.LEFT, errors) if edge == "both" else None
+    return _array_result(evaluation, Edge.RIGHT, errors, left)
 
 
 #: The numbers of an invalid single cycle: none.

@@ -26,6 +26,8 @@ solver     the reference solver's cost against N, if ``bench_solver.py``
            exists                                                          (bench_solver_hook)
 stress     a 200 x 200 grid from N = 4000 solver elements vs the direct
            sum; the edge asymptote at 10^6 points vs complex NumPy          (bench_stress)
+dask       solve-batch (200 solves) and the sweep (10^7 rows) on 2 local
+           Dask workers vs one process; the overhead of a task             (bench_batch)
 
 Noise (the machine is shared): every ratio comes from candidates interleaved in the same
 rounds in one process, best of N, with the median of the per-round ratios beside it;
@@ -146,6 +148,11 @@ def sections(sizes: Sizes, quick: bool, seed: int) -> dict[str, tuple[str, Measu
             sizes.stress_grid, sizes.stress_elements, sizes.stress_rounds
         ) + bench_asymptote(sizes.points, sizes.stress_rounds, seed)
 
+    def dask() -> list[Row]:
+        from .bench_batch import bench_batch
+
+        return bench_batch(quick)
+
     return {
         "scalar": ("One scalar call", scalar),
         "laws": ("Cycles in bulk, law against law", laws),
@@ -156,6 +163,7 @@ def sections(sizes: Sizes, quick: bool, seed: int) -> dict[str, tuple[str, Measu
         "generate": ("Code generation", generate),
         "solver": ("Reference solver", solver),
         "stress": ("The stress field near an edge", stress),
+        "dask": ("Parameter studies on Dask", dask),
     }
 
 

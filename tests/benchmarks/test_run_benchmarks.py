@@ -46,6 +46,13 @@ EXPECTED = {
         "asymptotic amplitude",
         "stated accuracy",
     ],
+    "Parameter studies on Dask": [
+        "`LocalCluster`",
+        "`solve-batch`",
+        "sweep",
+        "overhead per task",
+        "overhead per task of a study",
+    ],
 }
 MET = {"yes", "**no**", "-"}
 MEASURED = re.compile(r"^([\d.,]+ (s|ms|µs|ns)|[\d.]+e-\d+|N\^[\d.]+|skipped: .+)$")

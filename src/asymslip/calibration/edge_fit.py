@@ -34,6 +34,7 @@ How
       is the true error to a median factor 0.98 (but misses it by 5-30 times in one case of
       twenty); the second is about 2.5 times it and sees the end of the expansion's validity
       (the rounded flat's corner) that the first may not.
+
   kappa = 4.  Measured on traces of every built-in law (960 fits, three seeds: 20 to 200 nodes
   across the contact, uniform and graded meshes, exact or with 1 % noise -- relative or of the
   peak pressure): the true error never exceeded the reported one (largest ratio 0.77 for a,

@@ -27,6 +27,7 @@ from . import (
     nucleation,
     slip_zone,
     solve,
+    solve_batch,
     stress,
     sweep,
     traction,
@@ -46,6 +47,7 @@ COMMANDS = (
     match,
     stress,
     nucleation,
+    solve_batch,
 )
 
 

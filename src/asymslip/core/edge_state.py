@@ -29,14 +29,13 @@ The Fig. 5 cycle's right edge slips forward (L_II2 > mu L_I2), its left edge bac
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields
+from typing import NamedTuple
 
 from ..edge import Edge
 from ..laws.base import ContactLaw, LawState, Number, gives_own_shear_multipliers
 from ..rules import denominator_checks, finite
 from .estimates import (
     DENOMINATOR_TOLERANCE,
-    DISAGREEMENTS,
     EdgeEstimates,
     disagreement_limits,
     first_order_accuracy,
@@ -44,6 +43,11 @@ from .estimates import (
     stated_accuracy,
 )
 from .flags import (
+    BEYOND_A1,
+    DISAGREE_CORRECTIVE_STICK,
+    DISAGREE_EXACT,
+    DISAGREE_FIRST_ORDER,
+    DISAGREE_PAPER,
     ESTIMATES_CHECKED,
     EXTRAPOLATED_P1,
     EXTRAPOLATED_P2,
@@ -51,13 +55,19 @@ from .flags import (
     NO_SLIP,
     OTHER_EDGE_STICKS,
     OUTSIDE_FLAGS,
+    OWN_MULTIPLIERS_TENSION,
     VALIDITY_THRESHOLD,
+    WITH_TENSION,
 )
 from .operations import Flags, Operations
 
+EQ24_LARGE, EQ25_LARGE, EQ26_LARGE, EQ27_LARGE = MEASURE_FLAGS.values()
+_B_BEYOND_A1, _PAPER_BEYOND_A1, _FIRST_BEYOND_A1, _STICK_BEYOND_A1, _EXACT_BEYOND_A1 = (
+    BEYOND_A1.values()
+)
 
-@dataclass(frozen=True, slots=True)
-class Shear:
+
+class Shear(NamedTuple):
     """The shear multipliers of one edge and its slip direction (in its own frame)."""
 
     L_II1: Number
@@ -66,8 +76,7 @@ class Shear:
     direction: Number
 
 
-@dataclass(frozen=True, slots=True)
-class EdgeState:
+class EdgeState(NamedTuple):
     """One edge of every cycle: each number of its result, and its warning flags.
 
     The first sixteen fields and the four validity measures are the result's
@@ -105,9 +114,19 @@ class EdgeState:
 def missing_edge() -> EdgeState:
     """An edge with no numbers (NaN) and no flags: what a single invalid cycle reports."""
     nothing = math.nan
-    return EdgeState(
-        **{field.name: nothing for field in fields(EdgeState) if field.name != "flags"}, flags=0
-    )
+    return EdgeState._make([*(nothing for _ in EdgeState._fields[:-1]), 0])
+
+
+def mirrored(edge: EdgeState) -> EdgeState:
+    """The other edge of a symmetric contact without bulk tension, where the two edges slip
+    opposite ways in their own frames: the mirror image (``derivations/edge_symmetry.py``).
+
+    Every number is the same but lam, L_II1, L_II2 and the slip direction, which change sign
+    exactly (L_II = lam L_I by (21) with eta = 0); the checks and flags are the same.
+    """
+    a1, a2, lam, eta, L_I1, L_I2, L_II1, L_II2 = edge[:8]
+    mirror = (a1, a2, -lam, eta, L_I1, L_I2, -L_II1, -L_II2, *edge[8:15], -edge.slip_direction)
+    return EdgeState._make((*mirror, *edge[16:]))
 
 
 def shear_multipliers(
@@ -136,9 +155,12 @@ def oriented(
     differ in sign (the left edge's frame is mirrored); +1 too where it does not slip
     (derivations/second_order_slip_zone.py).
     """
-    direction = shear.direction
+    direction, other_direction = shear.direction, other.direction
+    # Where both edges slip (the common case) the factors are the directions themselves.
+    if ops.everywhere((direction != 0) & (other_direction != 0)):
+        return direction * lam, direction * eta, -direction * other_direction
     orientation = ops.where(direction != 0, direction, 1.0)
-    other_edge = ops.where(other.direction == 0, 1.0, -direction * other.direction)
+    other_edge = ops.where(other_direction == 0, 1.0, -direction * other_direction)
     return orientation * lam, orientation * eta, other_edge
 
 
@@ -161,11 +183,18 @@ def edge_state(
         return _own_multipliers_edge(ops, law, state, mu, lam, eta, dP, edge, shear)
     a1, da, P1 = state.a1, state.da, state.P1
     slips = shear.direction != 0
-    # (22), the paper's headline, and the headline b2, as widths a1 - b (no cancellation).
-    paper_width = ops.where(slips, estimates.paper_width, 0.0)
-    width = ops.where(slips, estimates.width, 0.0)
+    # (22), the paper's headline, and the headline b2, as widths a1 - b (no cancellation);
+    # where the edge does not slip: no slip zone, b = a1, and P_K = P1 (no permanent stick).
+    paper_width, width, P_K = estimates.paper_width, estimates.width, estimates.P_K
+    b_first_order = estimates.b_first_order
+    b_corrective_stick = a1 - estimates.corrective_stick_width
+    eq27 = estimates.eq27
+    if not ops.everywhere(slips):
+        paper_width, width = ops.where(slips, paper_width, 0.0), ops.where(slips, width, 0.0)
+        P_K, eq27 = ops.where(slips, P_K, P1), ops.where(slips, eq27, 0.0)
+        b_first_order = ops.where(slips, b_first_order, a1)
+        b_corrective_stick = ops.where(slips, b_corrective_stick, a1)
     b = a1 - width
-    P_K = ops.where(slips, estimates.P_K, P1)
     # Jaeger-Ciavarella: b = a(P_K) is exact for a symmetric law without bulk tension.
     exact = (eta == 0) & law.symmetric
     if ops.somewhere(exact):
@@ -175,20 +204,27 @@ def edge_state(
         b_exact = ops.missing(a1)
     accuracy = stated_accuracy(a1, da, width)
     b_paper = a1 - paper_width
-    b_first_order = ops.where(slips, estimates.b_first_order, a1)
-    b_corrective_stick = ops.where(slips, a1 - estimates.corrective_stick_width, a1)
-    compared = (b_paper, b_first_order, b_corrective_stick, b_exact)
-    disagree: Flags = ops.flag(slips & (other.direction == 0), OTHER_EDGE_STICKS)
-    limits = disagreement_limits(a1, da, width, accuracy)
-    for value, (_, bit), limit in zip(compared, DISAGREEMENTS, limits, strict=True):
-        disagree = disagree | ops.flag(slips & (abs(value - b) > limit), bit)
-    eq25, eq27 = abs(width) / a1, ops.where(slips, estimates.eq27, 0.0)
+    # A flag is its bit times its condition: an int for one cycle, an array for many.
+    paper_limit, first_limit, stick_limit, exact_limit = disagreement_limits(
+        a1, da, width, accuracy
+    )
+    disagree: Flags = WITH_TENSION * (eta != 0) | slips * (
+        OTHER_EDGE_STICKS * (other.direction == 0)
+        | _EXACT_BEYOND_A1 * (b_exact > a1)
+        | DISAGREE_PAPER * (abs(b_paper - b) > paper_limit)
+        | DISAGREE_FIRST_ORDER * (abs(b_first_order - b) > first_limit)
+        | DISAGREE_CORRECTIVE_STICK * (abs(b_corrective_stick - b) > stick_limit)
+        | DISAGREE_EXACT * (abs(b_exact - b) > exact_limit)
+    )
+    eq25 = abs(width) / a1
     measures = (estimates.eq24, eq25, estimates.eq26, eq27)
     checked = _checked(
         ops,
         law,
         state,
         mu,
+        lam,
+        eta,
         edge,
         shear,
         estimates.denominator,
@@ -197,32 +233,33 @@ def edge_state(
         measures,
         (b_paper, b_first_order, b_corrective_stick),
         disagree,
-        (lam, eta),
     )
+    # Positional, in the order of the fields: a record of 23 built by keyword costs three
+    # times as much, and one cycle is timed in microseconds.
     return EdgeState(
-        a1=a1,
-        a2=state.a2,
-        lam=lam,
-        eta=eta,
-        L_I1=state.L_I1,
-        L_I2=state.L_I2,
-        L_II1=shear.L_II1,
-        L_II2=shear.L_II2,
-        b=b,
-        slip_zone_width=width,
-        b_accuracy=accuracy,
-        b_paper=checked.b_paper,
-        b_first_order=checked.b_first_order,
-        b_exact=b_exact,
-        b_corrective_stick=checked.b_corrective_stick,
-        slip_direction=shear.direction,
-        eq24=estimates.eq24,
-        eq25=eq25,
-        eq26=estimates.eq26,
-        eq27=eq27,
-        P_K=P_K,
-        b_consistent=b_paper,  # (17)/(22): the b for which (15) solves (12)
-        flags=checked.flags,
+        a1,
+        state.a2,  # a2
+        lam,
+        eta,
+        state.L_I1,  # L_I1
+        state.L_I2,  # L_I2
+        shear.L_II1,  # L_II1
+        shear.L_II2,  # L_II2
+        b,
+        width,  # slip_zone_width
+        accuracy,  # b_accuracy
+        checked[0],  # b_paper
+        checked[1],  # b_first_order
+        b_exact,
+        checked[2],  # b_corrective_stick
+        shear.direction,  # slip_direction
+        estimates.eq24,  # eq24
+        eq25,
+        estimates.eq26,  # eq26
+        eq27,
+        P_K,
+        b_paper,  # b_consistent  ; (17)/(22): the b for which (15) solves (12)
+        checked[3],  # flags
     )
 
 
@@ -276,6 +313,8 @@ def _own_multipliers_edge(
         law,
         state,
         mu,
+        lam,
+        eta,
         edge,
         shear,
         denominator,
@@ -283,44 +322,38 @@ def _own_multipliers_edge(
         width,
         (eq24, eq25, eq26, eq27),
         (missing, ops.where(slips, first_order, a1), missing),
-        0,
-        (lam, eta),
+        OWN_MULTIPLIERS_TENSION * (slips & (eta != 0)),
     )
     return EdgeState(
-        a1=a1,
-        a2=state.a2,
-        lam=lam,
-        eta=eta,
-        L_I1=L_I1,
-        L_I2=L_I2,
-        L_II1=shear.L_II1,
-        L_II2=shear.L_II2,
-        b=b,
-        slip_zone_width=width,
-        b_accuracy=first_order_accuracy(a1, da, width),
-        b_paper=missing,
-        b_first_order=checked.b_first_order,
-        b_exact=missing,
-        b_corrective_stick=missing,
-        slip_direction=shear.direction,
-        eq24=eq24,
-        eq25=eq25,
-        eq26=eq26,
-        eq27=eq27,
-        P_K=missing,
-        b_consistent=b,  # b is (17) in the edge's own multipliers
-        flags=checked.flags,
+        a1,
+        state.a2,  # a2
+        lam,
+        eta,
+        L_I1,
+        L_I2,
+        shear.L_II1,  # L_II1
+        shear.L_II2,  # L_II2
+        b,
+        width,  # slip_zone_width
+        first_order_accuracy(a1, da, width),  # b_accuracy
+        missing,  # b_paper
+        checked[1],  # b_first_order
+        missing,  # b_exact
+        missing,  # b_corrective_stick
+        shear.direction,  # slip_direction
+        eq24,
+        eq25,
+        eq26,
+        eq27,
+        missing,  # P_K
+        b,  # b_consistent  ; b is (17) in the edge's own multipliers
+        checked[3],  # flags
     )
 
 
-@dataclass(frozen=True, slots=True)
-class _Checked:
-    """What the rules leave of an edge's estimates, and its warning flags."""
-
-    b_paper: Number
-    b_first_order: Number
-    b_corrective_stick: Number
-    flags: Flags
+#: What the rules leave of an edge's estimates (b_paper, b_first_order, b_corrective_stick) and
+#: its warning flags.
+_Checked = tuple[Number, Number, Number, Flags]
 
 
 def _checked(
@@ -328,6 +361,8 @@ def _checked(
     law: ContactLaw,
     state: LawState,
     mu: Number,
+    lam: Number,
+    eta: Number,
     edge: Edge,
     shear: Shear,
     denominator: Number,
@@ -336,55 +371,73 @@ def _checked(
     measures: tuple[Number, Number, Number, Number],
     estimates: tuple[Number, Number, Number],
     disagree: Flags,
-    slopes: tuple[Number, Number],
 ) -> _Checked:
     """The rules the asymptotic solution must meet at this edge, and the warnings.
 
     ``measures`` are eq24-eq27; ``estimates`` b_paper, b_first_order and b_corrective_stick,
     each left out (NaN) where it falls outside the contact, and with it its disagreement flag
-    in ``disagree``; ``slopes`` the path's (lam, eta), which name the load change a refused
-    denominator of (17) is blamed on.
+    in ``disagree``.
     """
-    sticks = shear.direction == 0
+    sticks, slips = shear.direction == 0, shear.direction != 0
     scale = 2 * mu * (state.L_I1 + state.L_I2) + abs(shear.L_II1) + abs(shear.L_II2)
     admits = sticks | (denominator > DENOMINATOR_TOLERANCE * scale)
     if not ops.everywhere(admits):
         note = law.resolution_note(*ops.refused(admits, state.P1, state.P2))
         # Named by the load change to blame (the tension's or the shear force's), not mu.
-        for key, ok in denominator_checks(admits, mu, *slopes, state.L_I1, state.L_I2):
+        for key, ok in denominator_checks(admits, mu, lam, eta, state.L_I1, state.L_I2):
             ops.require(key, ok, None, side=edge, denominator=denominator, mu=mu, note=note)
     eq24, eq25, eq26, eq27 = measures
     # Non-finite results first: a b that overflowed is not "outside the contact".
-    checked = {
-        "b": b,
-        "slip_zone_width": width,
-        "b_first_order": estimates[1],
-        "L_II1": shear.L_II1,
-        "L_II2": shear.L_II2,
-        "eq24": eq24,
-        "eq25": eq25,
-        "eq26": eq26,
-        "eq27": eq27,
-    }
-    if not ops.everywhere(finite(sum(checked.values()))):
-        for key, value in checked.items():
+    first_order = estimates[1]
+    total = b + width + first_order + shear.L_II1 + shear.L_II2 + eq24 + eq25 + eq26 + eq27
+    if not ops.everywhere(finite(total)):
+        for key, value in (
+            ("b", b),
+            ("slip_zone_width", width),
+            ("b_first_order", first_order),
+            ("L_II1", shear.L_II1),
+            ("L_II2", shear.L_II2),
+            *zip(MEASURE_FLAGS, measures, strict=True),
+        ):
             ops.require("result_finite", finite(value), None, side=edge, law=law.name, quantity=key)
     a2 = state.a2
-    ops.require(
-        "b_range", (b > 0) & (b <= a2), None, side=edge, b=b, eq25=eq25, eq24=eq24, eq27=eq27
+    inside = (b > 0) & (b <= a2)
+    if not ops.everywhere(inside):
+        ops.require("b_range", inside, None, side=edge, b=b, eq25=eq25, eq24=eq24, eq27=eq27)
+    flags = (
+        disagree
+        | NO_SLIP * sticks
+        | EQ24_LARGE * (eq24 > VALIDITY_THRESHOLD)
+        | EQ25_LARGE * (eq25 > VALIDITY_THRESHOLD)
+        | EQ26_LARGE * (eq26 > VALIDITY_THRESHOLD)
+        | EQ27_LARGE * (eq27 > VALIDITY_THRESHOLD)
+        | EXTRAPOLATED_P1 * law.extrapolated(state.P1)
+        | EXTRAPOLATED_P2 * law.extrapolated(state.P2)
+        | _B_BEYOND_A1 * (slips & (b > state.a1))
     )
-    flags = ops.flag(sticks, NO_SLIP) | disagree
-    for measure, bit in zip(measures, MEASURE_FLAGS.values(), strict=True):
-        flags = flags | ops.flag(measure > VALIDITY_THRESHOLD, bit)
-    flags = flags | ops.flag(law.extrapolated(state.P1), EXTRAPOLATED_P1)
-    flags = flags | ops.flag(law.extrapolated(state.P2), EXTRAPOLATED_P2)
     # An estimate outside the contact (0, a2] is no answer: left out (NaN), and so is its
-    # disagreement with b.
-    kept = list(estimates)
-    for index, (key, (_, disagreement)) in enumerate(ESTIMATES_CHECKED.items()):
-        value = kept[index]
-        inside = ((value > 0) & (value <= a2)) | (value != value)
-        if not ops.everywhere(inside):
+    # disagreement with b (NaN, not derived here, is no estimate to leave out).
+    b_paper, b_first_order, b_corrective_stick = estimates
+    if not ops.everywhere(
+        ((b_paper > 0) & (b_paper <= a2) | (b_paper != b_paper))
+        & ((b_first_order > 0) & (b_first_order <= a2) | (b_first_order != b_first_order))
+        & (
+            (b_corrective_stick > 0) & (b_corrective_stick <= a2)
+            | (b_corrective_stick != b_corrective_stick)
+        )
+    ):
+        kept = list(estimates)
+        for index, (key, (_, disagreement)) in enumerate(ESTIMATES_CHECKED.items()):
+            value = kept[index]
+            inside = ((value > 0) & (value <= a2)) | (value != value)
             kept[index] = ops.where(inside, value, ops.missing(value))
             flags = ops.keep_flags(inside, flags, (flags & ~disagreement) | OUTSIDE_FLAGS[key])
-    return _Checked(kept[0], kept[1], kept[2], flags)
+        b_paper, b_first_order, b_corrective_stick = kept
+    # A stick boundary beyond a1 where the edge slips: no slip zone inside a1 (in words).
+    a1 = state.a1
+    flags = flags | slips * (
+        _PAPER_BEYOND_A1 * (b_paper > a1)
+        | _FIRST_BEYOND_A1 * (b_first_order > a1)
+        | _STICK_BEYOND_A1 * (b_corrective_stick > a1)
+    )
+    return b_paper, b_first_order, b_corrective_stick, flags

@@ -20,8 +20,8 @@ scalars, only where Python's float arithmetic raises (an overflow, a division by
 NumPy gives the inf or NaN that the rules then name.
 
 Without bulk tension a symmetric contact is its own mirror image: where the two edges slip
-opposite ways in their own frames, the left edge asks the kernels exactly what the right one
-asked, and one cycle answers it once (``derivations/edge_symmetry.py``).
+opposite ways in their own frames, the left edge of one cycle is the right one with lam, L_II
+and the slip direction negated (``derivations/edge_symmetry.py``), and is not computed again.
 
 Examples
 --------
@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -52,14 +52,21 @@ from ..laws.base import (
     is_law,
 )
 from ..rules import Verdict, check_friction, check_partial_slip, finite
-from .edge_state import EdgeState, edge_state, missing_edge, oriented, shear_multipliers
-from .estimates import EdgeEstimates, edge_estimates
+from .edge_state import (
+    EdgeState,
+    Shear,
+    edge_state,
+    mirrored,
+    missing_edge,
+    oriented,
+    shear_multipliers,
+)
+from .estimates import edge_estimates
 from .operations import FLOATS, ArrayOperations, Operations, RuleBroken
 
 
-@dataclass(frozen=True)
-class Evaluation:
-    """Both edges of every cycle, with each element's verdict."""
+class Evaluation(NamedTuple):
+    """Both edges of every cycle, with each element's verdict (an immutable record)."""
 
     law: ContactLaw
     shape: tuple[int, ...]
@@ -195,65 +202,82 @@ def _both_edges(
     ops: Operations, law: ContactLaw, mu: Number, P1: Number, dP: Number, lam: Number, eta: Number
 ) -> dict[Edge, EdgeState]:
     """The pipeline: the law's state of the cycle, each edge's shear, estimates and checks."""
-    states: dict[Edge, LawState] = {}
-    for edge in EDGES if not law.symmetric else EDGES[:1]:
-        edge_law = law.for_edge(edge)
-        state = edge_law.cycle_state(P1, dP)
-        if ops.scalar and type(state.a1) is not float:  # a law on NumPy: 0-d results
-            state = state.as_floats()
-        _check_law(ops, state, edge_law)
-        states[edge] = state
-    if law.symmetric:
-        states[Edge.LEFT] = states[Edge.RIGHT]
-    shear = {
-        edge: shear_multipliers(ops, law.for_edge(edge), states[edge], mu, edge.sign * lam, eta)
-        for edge in EDGES
-    }
-    edges: dict[Edge, EdgeState] = {}
-    asked: tuple[tuple[Number, Number, Number], EdgeEstimates] | None = None
-    for edge in EDGES:
-        edge_law = law.for_edge(edge)
-        own_lam, state = edge.sign * lam, states[edge]
-        estimates = None
-        if not gives_own_shear_multipliers(edge_law):
-            lam_o, eta_o, other_edge = slopes = oriented(
-                ops, own_lam, eta, shear[edge], shear[edge.other]
-            )
-            if ops.scalar and asked is not None and asked[0] == slopes and law.symmetric:
-                estimates = asked[1]  # the mirror image of the other edge: the same answers
-            else:
-                estimates = edge_estimates(ops, mu, lam_o, eta_o, state, dP, other_edge)
-                asked = (slopes, estimates)
-        edges[edge] = edge_state(
-            ops,
-            edge_law,
-            state,
-            mu,
-            own_lam,
-            eta,
-            dP,
-            edge,
-            shear[edge],
-            shear[edge.other],
-            estimates,
-        )
-    b_sum = edges[Edge.RIGHT].b + edges[Edge.LEFT].b
-    ops.require("slip_zones_meet", b_sum > 0, None, b_sum=b_sum)
-    return edges
+    symmetric = law.symmetric
+    right_law = law.for_edge(Edge.RIGHT)
+    left_law = right_law if symmetric else law.for_edge(Edge.LEFT)
+    right_state = _law_state(ops, right_law, P1, dP)
+    left_state = right_state if symmetric else _law_state(ops, left_law, P1, dP)
+    # The left edge is the right edge of the mirrored cycle: lam -> -lam, eta kept.
+    right_shear = shear_multipliers(ops, right_law, right_state, mu, lam, eta)
+    left_shear = shear_multipliers(ops, left_law, left_state, mu, -lam, eta)
+    right, slopes = _edge(
+        ops, right_law, right_state, mu, lam, eta, dP, Edge.RIGHT, right_shear, left_shear
+    )
+    # One symmetric cycle without tension whose edges slip opposite ways in their own frames
+    # (the same oriented slopes): the left edge is the right one mirrored.
+    if ops.scalar and symmetric and eta == 0 and lam != 0 and slopes is not None:
+        left_slopes = oriented(ops, -lam, eta, left_shear, right_shear)
+        if left_slopes == slopes:
+            left = mirrored(right)
+            _check_meeting(ops, right, left)
+            return {Edge.RIGHT: right, Edge.LEFT: left}
+    left, _ = _edge(
+        ops, left_law, left_state, mu, -lam, eta, dP, Edge.LEFT, left_shear, right_shear
+    )
+    _check_meeting(ops, right, left)
+    return {Edge.RIGHT: right, Edge.LEFT: left}
+
+
+def _law_state(ops: Operations, law: ContactLaw, P1: Number, dP: Number) -> LawState:
+    """The law's quantities of the cycle at one edge, checked."""
+    state = law.cycle_state(P1, dP)
+    if ops.scalar and type(state.a1) is not float:  # a law on NumPy: 0-d results
+        state = state.as_floats()
+    _check_law(ops, state, law)
+    return state
+
+
+def _edge(
+    ops: Operations,
+    law: ContactLaw,
+    state: LawState,
+    mu: Number,
+    lam: Number,
+    eta: Number,
+    dP: Number,
+    edge: Edge,
+    shear: Shear,
+    other: Shear,
+) -> tuple[EdgeState, tuple[Number, Number, Number] | None]:
+    """One edge through the pipeline, with the oriented slopes its estimates were asked for
+    (None for an edge with its own multipliers, which has no such estimates)."""
+    if gives_own_shear_multipliers(law):
+        return edge_state(ops, law, state, mu, lam, eta, dP, edge, shear, other, None), None
+    slopes = lam_o, eta_o, other_edge = oriented(ops, lam, eta, shear, other)
+    estimates = edge_estimates(ops, mu, lam_o, eta_o, state, dP, other_edge)
+    return edge_state(ops, law, state, mu, lam, eta, dP, edge, shear, other, estimates), slopes
+
+
+def _check_meeting(ops: Operations, right: EdgeState, left: EdgeState) -> None:
+    """The two slip zones must leave a stick zone between them."""
+    b_sum = right.b + left.b
+    if not ops.everywhere(b_sum > 0):
+        ops.require("slip_zones_meet", b_sum > 0, None, b_sum=b_sum)
 
 
 def _check_law(ops: Operations, state: LawState, law: ContactLaw) -> None:
     """The law at the cycle's loads: defined, finite, increasing."""
-    slope = -ops.maximum(-state.load_slope1, -state.load_slope2)
     first = state.a1 + state.L_I1 + state.load_slope1
     second = state.a2 + state.da + state.L_I2 + state.load_slope2
-    if ops.everywhere(state.found1 & state.found2 & finite(first + second) & (slope > 0)):
+    increasing = (state.load_slope1 > 0) & (state.load_slope2 > 0)
+    if ops.everywhere(state.found1 & state.found2 & finite(first + second) & increasing):
         return  # the common case: one test
     name = law.name
     ops.require("law_range_1", state.found1, state.P1, law=name, range=law.range_note)
     ops.require("law_range_2", state.found2, state.P2, law=name, range=law.range_note)
     ops.require("law_finite_1", finite(first), state.P1, law=name)
     ops.require("law_finite_2", finite(second), state.P2, law=name)
+    slope = -ops.maximum(-state.load_slope1, -state.load_slope2)
     ops.require("law_increasing", slope > 0, slope, law=name, slope=slope)
 
 

@@ -67,9 +67,17 @@ ESTIMATES_CHECKED = {
     "b_corrective_stick": ("(40)", DISAGREE_CORRECTIVE_STICK),
 }
 OUTSIDE_FLAGS = {key: 1 << (12 + i) for i, key in enumerate(ESTIMATES_CHECKED)}
+#: The cycle's bulk tension changes (eta != 0): the context of a (22) disagreement.
+WITH_TENSION = 1 << 15
+#: An estimate beyond a1 (a negative slip-zone width) at an edge that slips on loading.
+BEYOND_A1 = {
+    key: 1 << (16 + i)
+    for i, key in enumerate(("b", "b_paper", "b_first_order", "b_corrective_stick", "b_exact"))
+}
+#: Bulk tension at an edge with its own multipliers (a calibrated contact), where b is (17).
+OWN_MULTIPLIERS_TENSION = 1 << 21
 _DISAGREEMENT_TEXT = {
-    DISAGREE_PAPER: "(22) (b_paper) differs from b by more than their stated accuracies (with "
-    "bulk tension (22) carries a spurious dP^2 term, erratum 22-T); take b",
+    DISAGREE_PAPER: "(22) (b_paper) differs from b by more than their stated accuracies; take b",
     DISAGREE_FIRST_ORDER: "the first-order (28) (b_first_order) differs from b by more than "
     "their stated accuracies: the load change is too large for a first-order estimate",
     DISAGREE_CORRECTIVE_STICK: "the corrective-stick (40) (b_corrective_stick) differs from b "
@@ -80,6 +88,21 @@ _DISAGREEMENT_TEXT = {
     "continuously where the other edge starts to slip (checked against the reference solver, "
     "not derived)",
 }
+
+#: Why (22) may differ from b, with and without bulk tension (README, "How far to trust b").
+_PAPER_WHY = {
+    True: " (with bulk tension (22) carries a spurious dP^2 term, erratum 22-T)",
+    False: " (without bulk tension (22)'s dP^2 term is exact only for a law whose a^2 is affine "
+    "in P, such as Hertz: for other laws it errs by (1 - lam^2/mu^2)(a'' + a'^2/a) dP^2/8)",
+}
+
+_OWN_MULTIPLIERS_TENSION_TEXT = (
+    "bulk tension at an edge with its own multipliers (a calibrated contact): b is (17) in the "
+    "edge's multipliers, whose dP^2 term with tension is the one erratum 22-T finds spurious "
+    "for symmetric contacts and is not corrected here; against the reference solver its error "
+    "reached 10 % of the slip-zone width, so trust b only to its stated first-order accuracy "
+    "b_accuracy = 2 (da/a1) |a1 - b|"
+)
 
 _NO_SLIP_TEXT = (
     "no slip at this edge: |L_II2| <= mu L_I2 (|lam + pi eta a2/4| <= mu), so the edge sticks "
@@ -101,7 +124,21 @@ def warning_texts(flags: int, law: ContactLaw) -> list[str]:
     for bit, label in ((EXTRAPOLATED_P1, "P1"), (EXTRAPOLATED_P2, "P2")):
         if flags & bit:
             texts.append(law.extrapolation_note(label))
-    texts.extend(text for bit, text in _DISAGREEMENT_TEXT.items() if flags & bit)
+    for bit, text in _DISAGREEMENT_TEXT.items():
+        if flags & bit:
+            texts.append(
+                text + (_PAPER_WHY[bool(flags & WITH_TENSION)] if bit == DISAGREE_PAPER else "")
+            )
+    for key, bit in BEYOND_A1.items():
+        if flags & bit:
+            texts.append(
+                f"{key} lies beyond a1 (a negative slip-zone width) although the edge slips on "
+                "loading: the asymptote predicts no slip zone inside a1 (the edge slips only "
+                "where it advances, a1 < x < a2, which the edge asymptote does not resolve), so "
+                f"{key} is no stick boundary inside the state-1 contact"
+            )
+    if flags & OWN_MULTIPLIERS_TENSION:
+        texts.append(_OWN_MULTIPLIERS_TENSION_TEXT)
     for key, bit in OUTSIDE_FLAGS.items():
         if flags & bit:
             texts.append(

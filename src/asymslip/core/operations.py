@@ -66,8 +66,6 @@ class Operations(Protocol):
 
     def where(self, condition: Condition, yes: Number, no: Number) -> Number: ...
 
-    def flag(self, condition: Condition, bit: int) -> Flags: ...
-
     def keep_flags(self, condition: Condition, yes: Flags, no: Flags) -> Flags: ...
 
     def maximum(self, first: Number, second: Number) -> Number: ...
@@ -95,20 +93,15 @@ class FloatOperations:
     def where(self, condition: Condition, yes: Number, no: Number) -> Number:
         return yes if condition else no
 
-    def flag(self, condition: Condition, bit: int) -> Flags:
-        return bit if condition else 0
-
     def keep_flags(self, condition: Condition, yes: Flags, no: Flags) -> Flags:
         return yes if condition else no
 
     def maximum(self, first: Number, second: Number) -> Number:
         return first if first >= second else second
 
-    def everywhere(self, condition: Condition) -> bool:
-        return bool(condition)
-
-    def somewhere(self, condition: Condition) -> bool:
-        return bool(condition)
+    # A condition on one cycle is a bool already: the builtin answers (no Python call).
+    everywhere = staticmethod(bool)
+    somewhere = staticmethod(bool)
 
     def missing(self, like: Number) -> Number:
         return math.nan
@@ -137,9 +130,6 @@ class ArrayOperations:
         if isinstance(condition, (bool, np.bool_)):  # a condition the same for every element
             return yes if condition else no
         return np.where(condition, yes, no)
-
-    def flag(self, condition: Condition, bit: int) -> Flags:
-        return np.where(condition, bit, 0)
 
     def keep_flags(self, condition: Condition, yes: Flags, no: Flags) -> Flags:
         return np.where(condition, yes, no)

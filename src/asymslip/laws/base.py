@@ -381,16 +381,44 @@ class _GivesShearMultiplier(Protocol):
 def is_law(law: object) -> bool:
     """True for a contact law the core can evaluate: a :class:`ContactLaw`, or a law known per
     edge (:class:`EdgeLawLike`)."""
-    return isinstance(law, ContactLaw) or isinstance(law, EdgeLawLike)
+    kind = type(law)
+    known = _LAWS.get(kind)
+    if known is None:  # once per class, as above
+        known = _LAWS[kind] = isinstance(law, ContactLaw) or isinstance(law, EdgeLawLike)
+    return known
+
+
+_LAWS: dict[type, bool] = {}
 
 
 def gives_own_shear_multipliers(law: object) -> bool:
     """True when an edge's law gives its own L_II (:meth:`ContactLaw.shear_multiplier`)."""
-    if isinstance(law, ContactLaw):
-        return law.own_shear_multipliers
-    return isinstance(law, _GivesShearMultiplier)
+    kind = type(law)
+    own = _OWN_SHEAR_MULTIPLIERS.get(kind)
+    if own is None:  # once per class: an ABC's and a protocol's isinstance cost microseconds
+        if issubclass(kind, ContactLaw):
+            own = kind.own_shear_multipliers
+        else:
+            own = isinstance(law, _GivesShearMultiplier)
+        _OWN_SHEAR_MULTIPLIERS[kind] = own
+    return own
+
+
+_OWN_SHEAR_MULTIPLIERS: dict[type, bool] = {}
+
+
+def modulus_of(law: object) -> float | None:
+    """The law's own modulus E* (:attr:`ContactLaw.E_star`), None where it has none."""
+    return law.E_star if isinstance(law, ContactLaw) else None
 
 
 def computes_on_floats(law: object) -> bool:
     """True when a law computes one cycle on Python floats alone (``ContactLaw.floats_only``)."""
-    return isinstance(law, ContactLaw) and law.floats_only
+    kind = type(law)
+    floats = _FLOATS_ONLY.get(kind)
+    if floats is None:  # once per class, as above
+        floats = _FLOATS_ONLY[kind] = issubclass(kind, ContactLaw) and kind.floats_only
+    return floats
+
+
+_FLOATS_ONLY: dict[type, bool] = {}

@@ -341,7 +341,8 @@ class CalibratedLaw:
     ----------
     calibration
         From :func:`~asymslip.calibration.calibrate` or
-        :meth:`~asymslip.calibration.Calibration.load` (whose :meth:`law` builds this).  Each
+        :meth:`~asymslip.calibration.Calibration.load` (whose
+        :meth:`~asymslip.calibration.Calibration.law` builds this).  Each
         edge with data needs at least 2 loads, and must advance (a increasing) with the load.
 
     Examples

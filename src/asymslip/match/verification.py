@@ -162,7 +162,7 @@ def compared(prototype: SolvedEdge, rig: SolvedEdge) -> NDArray[np.bool_]:
 
 
 def largest_difference(prototype: SolvedEdge, rig: SolvedEdge, values: str) -> float:
-    """max |rig - prototype| over the compared centres (:func:`compared`) / max |prototype|
+    """max |rig - prototype| over the compared centres (``compared``) / max |prototype|
     there, the rig's ``values`` ("q_diff" or "slip") interpolated linearly in s onto the
     prototype's centres."""
     inside = compared(prototype, rig)
