@@ -16,8 +16,8 @@ bulk tension, tension positive, plane strain).
 # contact half-width goes from 2 to 2.1, the shear force by 0.6 mu of the load change, and
 # the bulk tension by pi eta a1 / (4 mu) = 0.5 of it.  The slip zone comes from the paper's
 # edge asymptotes (the headline b is second order, with its stated accuracy).
+import matplotlib.pyplot as plt
 import numpy as np
-from matplotlib.figure import Figure
 
 from asymslip import FlatRoundedLaw, LoadCycle, slip_zone
 from asymslip.nucleation import Criterion, Material, nucleation
@@ -82,8 +82,7 @@ for finding in found.findings:
 # %%
 # The picture
 # -----------
-figure = Figure(figsize=(10, 3.6))
-left, right = figure.subplots(1, 2)
+figure, (left, right) = plt.subplots(1, 2, figsize=(10, 3.6))
 image = left.contourf(x, depth, amplitude, levels=24, cmap="RdBu_r")
 figure.colorbar(image, ax=left)
 left.set_ylim(depth.max(), 0)
@@ -94,7 +93,7 @@ figure.colorbar(image, ax=right)
 peak = found.find("right", "swt", "peak")
 right.plot([peak.x], [peak.depth], "wx", markersize=10)
 right.set_ylim(swt.depth.max(), 0)
-right.set_title("Smith-Watson-Topper near the right edge (solver)")
+right.set_title("SWT near the right edge (solver)", loc="left")
 for axis in (left, right):
     axis.set_xlabel("x")
     axis.set_ylabel("depth")
