@@ -26,21 +26,25 @@ answer is ever returned.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Literal
 
 import numpy as np
 from numpy.typing import NDArray
 
+from .inner_products import combination, norm, row_products
 from .toeplitz import (
+    CG_TOLERANCE,
     FloatArray,
     Runs,
     SolverError,
     ToeplitzOperator,
+    onto_constraints,
     pack,
-    solve_constrained,
-    unpack,
+    projected_cg,
 )
 
 BoolArray = NDArray[np.bool_]
+Method = Literal["primal-dual", "primal (fallback)"]
 
 #: Relative tolerance of the bound and sign decisions (the linear solves reach 1e-11).
 DECISION_TOLERANCE = 1e-9
@@ -50,7 +54,7 @@ MAX_PRIMAL_DUAL = 40
 MAX_PRIMAL = 20_000
 
 
-@dataclass
+@dataclass(frozen=True)
 class BoxQP:
     """One problem: minimise 1/2 y.H.y - g.y, lower <= y <= upper, A y = c, y = 0 off D."""
 
@@ -63,7 +67,7 @@ class BoxQP:
     targets: FloatArray  # (m,)
 
 
-@dataclass
+@dataclass(frozen=True)
 class QPSolution:
     """The minimiser, its multipliers and how it was found."""
 
@@ -74,26 +78,47 @@ class QPSolution:
     at_upper: BoolArray
     iterations: int  # equality-constrained solves
     cg_iterations: int
-    method: str  # "primal-dual" or "primal (fallback)"
+    method: Method
     gradient_tolerance: float  # |G| below this counts as zero (e.g. no slip at the bound)
+    image: FloatArray  # H y on every element (what the next problem's linear term may need)
+
+
+@dataclass(frozen=True)
+class Iterate:
+    """A point y on the whole grid and its image H y."""
+
+    y: FloatArray
+    image: FloatArray
 
 
 class Workspace:
     """Solves the equality-constrained problems of a sequence of similar programmes.
 
-    The last solution (on the whole grid) starts the next conjugate gradients: successive
-    active-set iterations, and successive load steps, differ little.  A solver keeps one
-    workspace for its life.
+    It keeps the last solution y and its image H y on the whole grid.  The next solve starts
+    from y (or from a guess) on its free elements: only the difference from the last solution
+    needs a product, and the conjugate gradients then keep the image up to date, so that the
+    gradient on every element comes without another product.  Successive active-set
+    iterations, and successive load steps, differ little.  A solver keeps one workspace for
+    its life.
     """
 
     def __init__(self) -> None:
         self.cg_iterations = 0
-        self._last: FloatArray | None = None
+        self.last: Iterate | None = None
 
     def solve(
-        self, qp: BoxQP, at_lower: BoolArray, at_upper: BoolArray
+        self,
+        qp: BoxQP,
+        at_lower: BoolArray,
+        at_upper: BoolArray,
+        guess: FloatArray | None = None,
+        tolerance: float = CG_TOLERANCE,
     ) -> tuple[FloatArray, FloatArray, FloatArray]:
-        """y, lambda and the gradient for this split of the domain."""
+        """y, lambda and the gradient for this split of the domain.
+
+        ``guess`` gives the start's values on the free elements (default: the last
+        solution's); the elements at a bound start at it.
+        """
         free = qp.domain & ~at_lower & ~at_upper
         runs = Runs.of(free)
         rows = qp.rows
@@ -102,19 +127,39 @@ class Workspace:
                 f"only {runs.count} element(s) free for {rows.shape[0]} equilibrium "
                 "condition(s): the grid is too coarse for this contact"
             )
-        fixed = np.where(at_lower, qp.lower, 0.0) + np.where(at_upper, qp.upper, 0.0)
-        fixed = np.where(qp.domain, fixed, 0.0)
-        right = pack(qp.linear - qp.operator.apply(fixed), runs)
-        guess = None if self._last is None else pack(self._last, runs)
-        free_values, multipliers, iterations = solve_constrained(
-            qp.operator, runs, right, pack(rows, runs), qp.targets - rows @ fixed, guess=guess
+        count = free.size
+        last = self.last or Iterate(np.zeros(count), np.zeros(count))
+        start = np.where(at_lower, qp.lower, 0.0) + np.where(at_upper, qp.upper, 0.0)
+        start = np.where(qp.domain, start, 0.0)
+        packed_rows = pack(rows, runs)
+        fixed_share = row_products(rows, start)  # A y over the bound elements (start is 0 on
+        # the free ones here); the free part is moved (least change) to meet the rows.
+        remaining = qp.targets - fixed_share
+        start[free] = onto_constraints(
+            pack(last.y if guess is None else guess, runs), packed_rows, remaining
         )
-        self.cg_iterations += iterations
-        y = fixed + unpack(free_values, runs, free.size)
-        self._last = y
+        change = start - last.y
+        image = last.image + qp.operator.apply(change) if change.any() else last.image.copy()
+        linear = pack(qp.linear, runs)
+        scale = max(norm(linear), norm(pack(image, runs)), 1e-300)
+        found = projected_cg(
+            qp.operator,
+            runs,
+            pack(image, runs) - linear,
+            packed_rows,
+            target=tolerance * scale,
+            image=image,
+        )
+        self.cg_iterations += found.iterations
+        y = start
+        y[free] += found.step
+        # Rounding drifts from A y = c by ~1e-16 relative; the image is not corrected for a
+        # change that small.
+        y[free] = onto_constraints(y[free], packed_rows, remaining)
+        self.last = Iterate(y, image)
         # On every element, the domain's and beyond (e.g. the gap outside the contact).
-        gradient = qp.operator.apply(y) - qp.linear + multipliers @ rows
-        return y, multipliers, gradient
+        gradient = image - qp.linear + combination(found.multipliers, rows)
+        return y, found.multipliers, gradient
 
 
 def _scales(qp: BoxQP, y: FloatArray) -> tuple[float, float]:
@@ -141,6 +186,7 @@ def solve_box_qp(
     *,
     workspace: Workspace | None = None,
     feasible_start: FloatArray | None = None,
+    guess: FloatArray | None = None,
 ) -> QPSolution:
     """Minimise the box-constrained problem from a guess of the elements at their bounds.
 
@@ -155,6 +201,9 @@ def solve_box_qp(
     feasible_start
         A point satisfying the bounds and the equality rows, for the monotone fallback; without
         it the fallback is unavailable and a cycling primal-dual iteration raises.
+    guess
+        Values to start the first solve from on its free elements (default: the workspace's
+        last solution).  Like the sets, it affects only the work, never the solution.
 
     Raises
     ------
@@ -173,7 +222,9 @@ def solve_box_qp(
         if np.count_nonzero(qp.domain & ~lower_set & ~upper_set) < qp.rows.shape[0]:
             break  # a guess with too few free elements to meet the equalities: go monotone
         seen.add(signature)
-        y, multipliers, gradient = equality.solve(qp, lower_set, upper_set)
+        y, multipliers, gradient = equality.solve(
+            qp, lower_set, upper_set, guess if iteration == 1 else None
+        )
         value_tol, gradient_tol = _scales(qp, y)
         free = qp.domain & ~lower_set & ~upper_set
         # An element leaves its bound only when its gradient clearly has the wrong sign
@@ -191,6 +242,7 @@ def solve_box_qp(
                 equality.cg_iterations - cg_before,
                 "primal-dual",
                 gradient_tol,
+                _image(equality),
             )
         lower_set, upper_set = new_lower, new_upper & ~new_lower
     if feasible_start is None:
@@ -199,6 +251,12 @@ def solve_box_qp(
             "between stick/slip guesses) and no feasible starting point was given"
         )
     return _primal_active_set(qp, feasible_start, equality, len(seen), cg_before)
+
+
+def _image(workspace: Workspace) -> FloatArray:
+    """H y of the workspace's last solution (the one just returned)."""
+    assert workspace.last is not None
+    return workspace.last.image
 
 
 def _primal_active_set(
@@ -229,6 +287,7 @@ def _primal_active_set(
                     equality.cg_iterations - cg_before,
                     "primal (fallback)",
                     gradient_tol,
+                    _image(equality),
                 )
             at_lower[worst] = at_upper[worst] = False
             y = candidate

@@ -135,6 +135,7 @@ class SolverResult:
     fallbacks: int
     seconds: float
     warnings: tuple[str, ...] = field(default_factory=tuple)
+    normal_solves: int = 0  # distinct loads whose normal problem was solved
 
     @property
     def x(self) -> FloatArray:
@@ -223,6 +224,7 @@ class SolverResult:
             "active_set_solves": self.active_set_solves,
             "cg_iterations": self.cg_iterations,
             "fallbacks": self.fallbacks,
+            "normal_solves": self.normal_solves,
             "seconds": self.seconds,
             "mu": self.mu,
             "E_star": self.E_star,
