@@ -12,6 +12,17 @@ O(N x steps), and nothing else grows with the number of periods.
 The window is read in the period's order, from point 1, whatever step was run last: once the
 state at some point of the path repeats after a period, the period that ends there is the
 steady one, and it is the same period read from point 1 (:func:`asymslip.solver.run.solve`).
+
+Examples
+--------
+>>> import numpy as np
+>>> from asymslip.solver.period import SlipRecord
+>>> record = SlipRecord(np.array([3, 7]), np.array([1, -1], dtype=np.int8),
+...                     np.array([2e-3, -1e-9]), np.array([4e-5, 0.0]))
+>>> record.sign_at(7), record.sign_at(5), record.signs(9).tolist()
+(-1, 0, [0, 0, 0, 1, 0, 0, 0, -1, 0])
+>>> record.significant(1e-6).index.tolist()  # the tiny slip of element 7 is dropped
+[3]
 """
 
 from __future__ import annotations
