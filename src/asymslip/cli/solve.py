@@ -95,6 +95,12 @@ def register(commands: argparse._SubParsersAction) -> None:
         metavar="DIR",
         help="write tractions.csv, slip.csv, energy.csv and solver.png there",
     )
+    solve.add_argument(
+        "--no-plot",
+        dest="plot",
+        action="store_false",
+        help="with --out, write the CSV files only (no solver.png; matplotlib not needed)",
+    )
     solve.set_defaults(run=run)
 
 
@@ -168,7 +174,7 @@ def run(args: argparse.Namespace) -> int:
         result = with_asymptotes(result, law, cycle, args.mu)
     if args.out is not None:
         final = result.results[-1] if args.refine else result
-        for path in write_outputs(final, args.out):
+        for path in write_outputs(final, args.out, png=args.plot):
             print(f"wrote {path}", file=sys.stderr)
     data = result.to_dict()
     if args.json:

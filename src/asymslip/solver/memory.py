@@ -105,8 +105,16 @@ def readable(size: float) -> str:
     return f"{size / 1e3:.3g} kB"
 
 
-def check_memory(elements: int, steps: int, path: LoadPath, available: int | None = None) -> None:
+def check_memory(
+    elements: int,
+    steps: int,
+    path: LoadPath,
+    available: int | None = None,
+    subject: str | None = None,
+) -> None:
     """Refuse a solve that needs more memory than is available (``available``: measured now).
+
+    ``subject`` names the grid in the message, with its verb (default: "N elements need").
 
     Raises
     ------
@@ -120,7 +128,7 @@ def check_memory(elements: int, steps: int, path: LoadPath, available: int | Non
         return
     raise InputError(
         "elements",
-        f"{elements:,} elements need about {readable(needed.total)} of memory "
+        f"{subject or f'{elements:,} elements need'} about {readable(needed.total)} of memory "
         f"({needed.per_element} bytes per element with {needed.steps_kept} load steps per "
         f"period), more than the {readable(available)} available: give at most about "
         f"{needed.elements_within(available):,} elements, or fewer steps",

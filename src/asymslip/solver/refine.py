@@ -31,11 +31,11 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..cycle import LoadCycle
-from ..errors import InputError
+from .memory import check_memory
 from .path import LoadPath, as_path
 from .profiles import as_profile
 from .result import SolverResult
-from .run import DEFAULT_ELEMENTS, _integer, _modulus, choose_domain, solve
+from .run import DEFAULT_ELEMENTS, DEFAULT_STEPS, _integer, _modulus, choose_domain, solve
 
 #: Accepted range of an observed convergence order for Richardson extrapolation.
 ORDER_RANGE = (0.5, 6.0)
@@ -129,14 +129,12 @@ def refine(
     """
     levels = _integer("levels", levels, 2, "must be at least 2 (a sequence needs two grids)")
     elements = _integer("elements", elements, 1, "must be at least 1")
-    if elements * 2 ** (levels - 1) > 2_000_000:
-        raise InputError(
-            "levels",
-            "the finest grid would exceed 2,000,000 elements",
-            elements * 2 ** (levels - 1),
-        )
+    steps = _integer("steps", options.get("steps", DEFAULT_STEPS), 1, "must be at least 1")
+    path = as_path(loading)
+    finest = elements * 2 ** (levels - 1)
+    check_memory(finest, steps, path, subject=f"the finest grid ({finest:,} elements) needs")
     if domain is None:
-        domain = choose_domain(as_profile(contact), _modulus(contact, E_star), as_path(loading))
+        domain = choose_domain(as_profile(contact), _modulus(contact, E_star), path)
     results = tuple(
         solve(
             contact, loading, mu, elements=elements * 2**k, E_star=E_star, domain=domain, **options

@@ -1,9 +1,10 @@
 """One load step of the tangential problem: stick, slip and the shear tractions.
 
-Sign convention (``derivations/solver_influence.py``): q(x) is the shear traction the lower
-body exerts on the upper one, along +x, Q = int q dx; s = u_x2 - u_x1 is the tangential
-displacement of the lower body relative to the upper one; sigma = sigma_2 - sigma_1 is the
-bulk tension of the lower body minus that of the upper.  Then
+Conventions (:mod:`asymslip.solver.conventions`, derived in ``derivations/solver_influence.py``):
+q(x) is the shear traction the indenter exerts on the lower body, along +x, Q = int q dx;
+s = u_x(indenter) - u_x(lower body) is their relative tangential displacement, whose change
+is the slip; sigma is the indenter's bulk tension minus the lower body's (the sign of the
+paper's (38)).  Then
 
     s_i = (S q)_i + sigma x_i/(2 E*) + c,
 

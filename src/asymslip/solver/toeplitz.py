@@ -97,6 +97,12 @@ class Runs:
             [np.arange(a, b) for a, b in zip(self.starts, self.stops, strict=True)]
         )
 
+    def selector(self) -> slice | NDArray[np.intp]:
+        """What picks the runs' elements out of a grid vector: a slice for one run."""
+        if len(self.starts) == 1:
+            return slice(self.starts[0], self.stops[0])
+        return self.index()
+
 
 class _SpectrumCache:
     """At most ``size`` spectra, the least recently used dropped first."""
@@ -204,6 +210,11 @@ class ToeplitzOperator:
 
     def precondition(self, runs: Runs, residual: FloatArray) -> FloatArray:
         """Apply the run-by-run circulant preconditioner to packed residuals (..., count)."""
+        if len(runs.starts) == 1:
+            length, spectrum = self._preconditioner_length(runs.count)
+            transformed = np.fft.rfft(residual, length, axis=-1)
+            transformed /= spectrum
+            return np.fft.irfft(transformed, length, axis=-1)[..., : runs.count]
         out = np.empty_like(residual)
         offset = 0
         for run_length in runs.lengths:
@@ -281,19 +292,19 @@ def projected_cg(
     """
     A = np.atleast_2d(rows)
     m = A.shape[0]
+    where = runs.selector()
     if image is None:
         restricted = _restricted_product(operator, runs)
 
         def product(direction: FloatArray) -> tuple[FloatArray, FloatArray | None]:
             return restricted(direction), None
     else:
-        index = runs.index()
 
         def product(direction: FloatArray) -> tuple[FloatArray, FloatArray | None]:
             full = np.zeros(operator.count)
-            full[index] = direction
+            full[where] = direction
             full = operator.apply(full)
-            return full[index], full
+            return full[where], full
 
     if m:
         Z = operator.precondition(runs, A)  # M^-1 A^T, as rows
@@ -326,9 +337,12 @@ def projected_cg(
             )
         alpha = rg / curvature
         step += alpha * direction
-        r += alpha * packed
-        if image is not None and full is not None:
-            image += alpha * full
+        if image is None or full is None:
+            r += alpha * packed
+        else:  # scaled once, for the residual and the image
+            full *= alpha
+            r += full[where]
+            image += full
         g, w, r = project(r)
         multiplier += w
         if norm(r) <= target:
@@ -393,18 +407,13 @@ def solve_constrained(
 
 def pack(values: FloatArray, runs: Runs) -> FloatArray:
     """The entries of ``values`` (last axis: the grid) at the elements of ``runs``."""
-    if len(runs.starts) == 1:
-        return values[..., runs.starts[0] : runs.stops[0]]
-    return values[..., runs.index()]
+    return values[..., runs.selector()]
 
 
 def unpack(packed: FloatArray, runs: Runs, count: int, fill: float = 0.0) -> FloatArray:
     """A grid vector with ``packed`` at the elements of ``runs`` and ``fill`` elsewhere."""
     full = np.full(packed.shape[:-1] + (count,), fill, dtype=np.float64)
-    if len(runs.starts) == 1:
-        full[..., runs.starts[0] : runs.stops[0]] = packed
-    else:
-        full[..., runs.index()] = packed
+    full[..., runs.selector()] = packed
     return full
 
 
