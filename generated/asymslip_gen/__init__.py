@@ -6,7 +6,8 @@
 # derivations/section2_dislocation_density.py, derivations/section2_validity.py,
 # derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
 # derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
-# derivations/section3_tractions.py, derivations/solver_influence.py.
+# derivations/section3_tractions.py, derivations/solver_influence.py,
+# derivations/tension_share.py.
 # Do not edit: change the derivation and run `make generate`.
 """Generated NumPy kernels for asymptotic partial-slip contacts.
 
@@ -95,6 +96,8 @@ _MODULES = {
     "stick_boundary_second_order": "second_order",
     "stick_ratio_first_order": "validity",
     "tension_relative_displacement": "solver_influence",
+    "tension_share": "tension_share",
+    "tension_slope_for_share": "tension_share",
     "wedge_pressure": "power_law",
 }
 

@@ -6,7 +6,8 @@
 # derivations/section2_dislocation_density.py, derivations/section2_validity.py,
 # derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
 # derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
-# derivations/section3_tractions.py, derivations/solver_influence.py.
+# derivations/section3_tractions.py, derivations/solver_influence.py,
+# derivations/tension_share.py.
 # Do not edit: change the derivation and run `make generate`.
 """The generated formulas for one value at a time, on Python floats with ``math``.
 
@@ -90,6 +91,8 @@ __all__ = [
     "relative_slip_influence",
     "tension_relative_displacement",
     "normal_edge_multiplier_slope_loglog",
+    "tension_share",
+    "tension_slope_for_share",
     "hertz_pressure",
     "hertz_shear_traction_difference",
     "jaeger_ciavarella_traction_difference",
@@ -2684,6 +2687,62 @@ def normal_edge_multiplier_slope_loglog(P: float, L_I: float, ds: float, d2s: fl
         dL_I/dP [1/length^(3/2)].
     """
     return L_I * (-d2s / ds - 3 / 2 * ds + 1) / P
+
+
+def tension_share(eta: float, a1: float, mu: float) -> float:
+    """The bulk tension's share tau of an edge's slip drive L_II1/(mu L_I1).
+
+    tau = pi eta a1/(4 mu): with the shear force's share lam/mu it makes up L_II1/(mu L_I1) of
+    (21), which exceeds 1 when the edge slips forward on loading.  For the left-hand edge pass
+    its own slope (eta is the same at both edges).  One value at a time, as
+    ``asymslip_gen.tension_share.tension_share``.
+
+    Implements Eqs. (21), (28), (TS-1) of the paper; derived in
+    ``derivations/tension_share.py``.
+
+    Parameters
+    ----------
+    eta : float
+        Load-path slope eta = dsigma/dP (18), either sign [1/length].
+    a1 : float
+        Contact half-width a(P1) at load state 1 [length].
+    mu : float
+        Coefficient of friction, mu > 0.
+
+    Returns
+    -------
+    float
+        tau (dimensionless).
+    """
+    return (1 / 4) * math.pi * a1 * eta / mu
+
+
+def tension_slope_for_share(tau: float, a1: float, mu: float) -> float:
+    """The path slope eta = dsigma/dP that gives the bulk tension's share tau.
+
+    eta = 4 mu tau/(pi a1), the inverse of tension_share: the load path's tension slope (18) for
+    which the tension supplies tau of the edge's slip drive L_II1/(mu L_I1).  One value at a
+    time, as ``asymslip_gen.tension_share.tension_slope_for_share``.
+
+    Implements Eqs. (21), (28), (TS-1) of the paper; derived in
+    ``derivations/tension_share.py``.
+
+    Parameters
+    ----------
+    tau : float
+        Bulk tension's share tau = pi eta a1/(4 mu) of the edge's slip drive L_II1/(mu L_I1)
+        (dimensionless, either sign).
+    a1 : float
+        Contact half-width a(P1) at load state 1 [length].
+    mu : float
+        Coefficient of friction, mu > 0.
+
+    Returns
+    -------
+    float
+        eta [1/length].
+    """
+    return 4 * mu * tau / (math.pi * a1)
 
 
 def hertz_pressure(x: float, P: float, R: float, E_star: float) -> float:

@@ -7,7 +7,8 @@
  * derivations/section2_dislocation_density.py, derivations/section2_validity.py,
  * derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
  * derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
- * derivations/section3_tractions.py, derivations/solver_influence.py.
+ * derivations/section3_tractions.py, derivations/solver_influence.py,
+ * derivations/tension_share.py.
  * Do not edit: change the derivation and run `make generate`.
  */
 
@@ -797,6 +798,18 @@ double asymslip_tension_relative_displacement(double x, double sigma, double E_s
 double asymslip_normal_edge_multiplier_slope_loglog(double P, double L_I, double ds, double d2s)
 {
     return L_I*(-d2s/ds - 3.0/2.0*ds + 1)/P;
+}
+
+/* The bulk tension's share tau of an edge's slip drive L_II1/(mu L_I1). See asymslip_gen.h. */
+double asymslip_tension_share(double eta, double a1, double mu)
+{
+    return (1.0/4.0)*asymslip_pi*a1*eta/mu;
+}
+
+/* The path slope eta = dsigma/dP that gives the bulk tension's share tau. See asymslip_gen.h. */
+double asymslip_tension_slope_for_share(double tau, double a1, double mu)
+{
+    return 4*mu*tau/(asymslip_pi*a1);
 }
 
 /* Hertz contact pressure p(x, P) of the cylinder, zero outside the contact. See asymslip_gen.h. */

@@ -7,7 +7,8 @@
  * derivations/section2_dislocation_density.py, derivations/section2_validity.py,
  * derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
  * derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
- * derivations/section3_tractions.py, derivations/solver_influence.py.
+ * derivations/section3_tractions.py, derivations/solver_influence.py,
+ * derivations/tension_share.py.
  * Do not edit: change the derivation and run `make generate`.
  */
 
@@ -1779,6 +1780,52 @@ double asymslip_tension_relative_displacement(double x, double sigma, double E_s
  *   dL_I/dP [1/length^(3/2)].
  */
 double asymslip_normal_edge_multiplier_slope_loglog(double P, double L_I, double ds, double d2s);
+
+/* --------------------------------------------------------------------------------------------
+ * tension_share: The bulk tension's share tau = pi eta a1/(4 mu) of an edge's slip drive
+ * L_II1/(mu L_I1), from the calibration (21), and the path slope eta for a given tau: the
+ * axes of the error map (beyond the paper).
+ */
+
+/**
+ * The bulk tension's share tau of an edge's slip drive L_II1/(mu L_I1).
+ *
+ * tau = pi eta a1/(4 mu): with the shear force's share lam/mu it makes up L_II1/(mu L_I1)
+ * of (21), which exceeds 1 when the edge slips forward on loading. For the left-hand edge
+ * pass its own slope (eta is the same at both edges).
+ *
+ * Implements Eqs. (21), (28), (TS-1) of the paper; derived in
+ * derivations/tension_share.py.
+ *
+ * Arguments:
+ *   eta  Load-path slope eta = dsigma/dP (18), either sign [1/length].
+ *   a1   Contact half-width a(P1) at load state 1 [length].
+ *   mu   Coefficient of friction, mu > 0.
+ *
+ * Returns:
+ *   tau (dimensionless).
+ */
+double asymslip_tension_share(double eta, double a1, double mu);
+
+/**
+ * The path slope eta = dsigma/dP that gives the bulk tension's share tau.
+ *
+ * eta = 4 mu tau/(pi a1), the inverse of tension_share: the load path's tension slope (18)
+ * for which the tension supplies tau of the edge's slip drive L_II1/(mu L_I1).
+ *
+ * Implements Eqs. (21), (28), (TS-1) of the paper; derived in
+ * derivations/tension_share.py.
+ *
+ * Arguments:
+ *   tau  Bulk tension's share tau = pi eta a1/(4 mu) of the edge's slip drive L_II1/(mu
+ *        L_I1) (dimensionless, either sign).
+ *   a1   Contact half-width a(P1) at load state 1 [length].
+ *   mu   Coefficient of friction, mu > 0.
+ *
+ * Returns:
+ *   eta [1/length].
+ */
+double asymslip_tension_slope_for_share(double tau, double a1, double mu);
 
 /* --------------------------------------------------------------------------------------------
  * tractions: Section 3.4 of the paper: the difference q2 - q1 of the shear tractions at

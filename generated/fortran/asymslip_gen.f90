@@ -6,7 +6,8 @@
 ! derivations/section2_dislocation_density.py, derivations/section2_validity.py,
 ! derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
 ! derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
-! derivations/section3_tractions.py, derivations/solver_influence.py.
+! derivations/section3_tractions.py, derivations/solver_influence.py,
+! derivations/tension_share.py.
 ! Do not edit: change the derivation and run `make generate`.
 
 ! The formulas of the paper (Moore, Hills et al., Theoretical and Applied Fracture
@@ -89,6 +90,8 @@ module asymslip_gen
     public :: asymslip_relative_slip_influence
     public :: asymslip_tension_relative_displacement
     public :: asymslip_normal_edge_multiplier_slope_loglog
+    public :: asymslip_tension_share
+    public :: asymslip_tension_slope_for_share
     public :: asymslip_hertz_pressure
     public :: asymslip_hertz_shear_traction_difference
     public :: asymslip_jaeger_ciavarella_traction_difference
@@ -166,6 +169,8 @@ module asymslip_gen
     public :: asymslip_relative_slip_influence_c
     public :: asymslip_tension_relative_displacement_c
     public :: asymslip_normal_edge_multiplier_slope_loglog_c
+    public :: asymslip_tension_share_c
+    public :: asymslip_tension_slope_for_share_c
     public :: asymslip_hertz_pressure_c
     public :: asymslip_hertz_shear_traction_difference_c
     public :: asymslip_jaeger_ciavarella_traction_difference_c
@@ -2766,6 +2771,71 @@ contains
         real(c_double) :: asymslip_result
         asymslip_result = asymslip_normal_edge_multiplier_slope_loglog(P, L_I, ds, d2s)
     end function asymslip_normal_edge_multiplier_slope_loglog_c
+
+    ! --------------------------------------------------------------------------------------------
+    ! tension_share: The bulk tension's share tau = pi eta a1/(4 mu) of an edge's slip drive
+    ! L_II1/(mu L_I1), from the calibration (21), and the path slope eta for a given tau: the
+    ! axes of the error map (beyond the paper).
+    ! --------------------------------------------------------------------------------------------
+    !> The bulk tension's share tau of an edge's slip drive L_II1/(mu L_I1).
+    !!
+    !! tau = pi eta a1/(4 mu): with the shear force's share lam/mu it makes up L_II1/(mu L_I1)
+    !! of (21), which exceeds 1 when the edge slips forward on loading. For the left-hand edge
+    !! pass its own slope (eta is the same at both edges).
+    !!
+    !! Implements Eqs. (21), (28), (TS-1) of the paper; derived in
+    !! derivations/tension_share.py.
+    !!
+    !! Arguments:
+    !!   eta  Load-path slope eta = dsigma/dP (18), either sign [1/length].
+    !!   a1   Contact half-width a(P1) at load state 1 [length].
+    !!   mu   Coefficient of friction, mu > 0.
+    !!
+    !! Returns:
+    !!   tau (dimensionless).
+    elemental function asymslip_tension_share(eta, a1, mu) result(asymslip_result)
+        real(c_double), intent(in) :: eta, a1, mu
+        real(c_double) :: asymslip_result
+        asymslip_result = (1.0d0/4.0d0)*asymslip_pi*a1*eta/mu
+    end function asymslip_tension_share
+
+    !> C binding of asymslip_tension_share (scalar arguments by value).
+    function asymslip_tension_share_c(eta, a1, mu) result(asymslip_result) &
+            bind(C, name="asymslip_tension_share")
+        real(c_double), value, intent(in) :: eta, a1, mu
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_tension_share(eta, a1, mu)
+    end function asymslip_tension_share_c
+
+    !> The path slope eta = dsigma/dP that gives the bulk tension's share tau.
+    !!
+    !! eta = 4 mu tau/(pi a1), the inverse of tension_share: the load path's tension slope (18)
+    !! for which the tension supplies tau of the edge's slip drive L_II1/(mu L_I1).
+    !!
+    !! Implements Eqs. (21), (28), (TS-1) of the paper; derived in
+    !! derivations/tension_share.py.
+    !!
+    !! Arguments:
+    !!   tau  Bulk tension's share tau = pi eta a1/(4 mu) of the edge's slip drive L_II1/(mu
+    !!        L_I1) (dimensionless, either sign).
+    !!   a1   Contact half-width a(P1) at load state 1 [length].
+    !!   mu   Coefficient of friction, mu > 0.
+    !!
+    !! Returns:
+    !!   eta [1/length].
+    elemental function asymslip_tension_slope_for_share(tau, a1, mu) result(asymslip_result)
+        real(c_double), intent(in) :: tau, a1, mu
+        real(c_double) :: asymslip_result
+        asymslip_result = 4*mu*tau/(asymslip_pi*a1)
+    end function asymslip_tension_slope_for_share
+
+    !> C binding of asymslip_tension_slope_for_share (scalar arguments by value).
+    function asymslip_tension_slope_for_share_c(tau, a1, mu) result(asymslip_result) &
+            bind(C, name="asymslip_tension_slope_for_share")
+        real(c_double), value, intent(in) :: tau, a1, mu
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_tension_slope_for_share(tau, a1, mu)
+    end function asymslip_tension_slope_for_share_c
 
     ! --------------------------------------------------------------------------------------------
     ! tractions: Section 3.4 of the paper: the difference q2 - q1 of the shear tractions at
