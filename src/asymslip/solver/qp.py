@@ -50,6 +50,8 @@ Method = Literal["primal-dual", "primal (fallback)"]
 DECISION_TOLERANCE = 1e-9
 #: Relative residual of the solves made while the stick/slip sets are still moving.
 LOOSE_TOLERANCE = 1e-6
+#: Moves of the sets after which the solves are loose until the sets settle.
+EXACT_MOVES = 2
 #: Primal-dual iterations before the monotone fallback takes over.
 MAX_PRIMAL_DUAL = 40
 #: Iterations of the monotone fallback before giving up (each changes one bound).
@@ -165,17 +167,21 @@ class Workspace:
         return y, found.multipliers, gradient
 
 
+def _largest(values: FloatArray, where: BoolArray) -> float:
+    """max |values| over ``where`` (0 where nothing is selected)."""
+    return float(np.max(np.abs(values), where=where, initial=0.0))
+
+
 def _scales(qp: BoxQP, y: FloatArray) -> tuple[float, float]:
     """Sizes against which 'at the bound' and 'zero gradient' are decided."""
-    bounds = np.concatenate([qp.lower[qp.domain], qp.upper[qp.domain]])
-    finite = bounds[np.isfinite(bounds)]
     value_scale = max(
-        float(np.max(np.abs(finite))) if finite.size else 0.0,
-        float(np.max(np.abs(y[qp.domain]))),
+        _largest(qp.lower, qp.domain & np.isfinite(qp.lower)),
+        _largest(qp.upper, qp.domain & np.isfinite(qp.upper)),
+        _largest(y, qp.domain),
         1e-300,
     )
     gradient_scale = max(
-        float(np.max(np.abs(qp.linear[qp.domain]))),
+        _largest(qp.linear, qp.domain),
         qp.operator.diagonal() * value_scale,
         1e-300,
     )
@@ -218,10 +224,11 @@ def solve_box_qp(
     lower_set = at_lower & qp.domain
     upper_set = at_upper & qp.domain & ~lower_set
     seen: set[bytes] = set()
-    # The first solve is exact (the guess is usually right); once the sets have moved, the
-    # next solves only need to be good enough to move them on (LOOSE_TOLERANCE), until they
-    # stay put -- then one exact solve confirms them.
+    # The first two solves are exact (the guess is usually right, or one correction away);
+    # once the sets have moved twice, the next solves only need to be good enough to move them
+    # on (LOOSE_TOLERANCE), until they stay put -- then one exact solve confirms them.
     exact = True
+    moves = 0
     for iteration in range(1, MAX_PRIMAL_DUAL + 1):
         signature = np.packbits(lower_set).tobytes() + np.packbits(upper_set).tobytes()
         if signature in seen:
@@ -260,7 +267,8 @@ def solve_box_qp(
                 gradient_tol,
                 _image(equality),
             )
-        exact = False
+        moves += 1
+        exact = moves < EXACT_MOVES
         lower_set, upper_set = new_lower, new_upper & ~new_lower
     if feasible_start is None:
         raise SolverError(

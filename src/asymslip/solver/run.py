@@ -363,8 +363,9 @@ def _run(settings: SolverSettings, started: float) -> SolverResult:
             if repeating and earlier is not None:
                 predicted, guess = earlier.slip.signs(grid.count), earlier.shear
             elif previous_step is None:
-                # At a segment's start (a reversal, for the paper's cycle) everything sticks.
-                predicted = stick
+                # At a segment's start (a reversal, for the paper's cycle) the slip zones are
+                # those of the same step a period ago; in the first period, everything sticks.
+                predicted = stick if earlier is None else earlier.slip.signs(grid.count)
             else:
                 # Within a segment the slip zones grow steadily: extrapolate the last two
                 # steps, the slip zones as the friction reserves close, the tractions linearly.

@@ -23,6 +23,7 @@ Memory stays O(N): the operator keeps its kernel column and one spectrum, and at
 from __future__ import annotations
 
 import functools
+import inspect
 import math
 from collections import OrderedDict
 from collections.abc import Callable, Sequence
@@ -44,6 +45,10 @@ CG_MAX_ITERATIONS = 400
 PRECONDITIONER_STRETCH = 1.25
 #: Spectra of run-length circulants kept per operator (the least recently used is dropped).
 SPECTRUM_CACHE = 8
+#: The ladder of preconditioner lengths: its first rung and the ratio between rungs.
+LADDER_START, LADDER_STEP = 64, 1.05
+#: NumPy 2 lets an FFT write into a given array (``out=``); NumPy 1 allocates.
+_FFT_OUT = "out" in inspect.signature(np.fft.rfft).parameters
 
 
 class SolverError(RuntimeError):
@@ -124,15 +129,31 @@ class _SpectrumCache:
         return spectrum
 
 
+def ladder_length(length: int) -> int:
+    """A fast FFT length >= ``length`` from a ladder rising 5 % a rung.
+
+    Preconditioners of runs of nearby lengths then share a circulant length: its spectrum and
+    NumPy's FFT plan are made once (a stretch a little above ``PRECONDITIONER_STRETCH`` does not
+    slow the iteration down: 10 iterations from zero at 1.25, 1.5, 2 and 3 times).
+    """
+    rung = math.ceil(math.log(max(length, LADDER_START) / LADDER_START) / math.log(LADDER_STEP))
+    return fast_length(math.ceil(LADDER_START * LADDER_STEP**rung - 1e-9))
+
+
 class ToeplitzOperator:
     """The symmetric Toeplitz matrix M_ij = c(i - j) on N elements, applied by FFT.
+
+    The FFTs of one-dimensional products and preconditioner solves write into buffers the
+    operator keeps (NumPy 2's ``out=``): a fresh array of that size is fresh pages from the
+    system every time, and on the development machine that doubled the cost of an FFT of 20,000
+    points (0.66 ms against 0.29 ms) and added a third at 200,000.
 
     Parameters
     ----------
     coefficient
         c(k) for integer arrays k >= 0 (the kernel is even in k); evaluated once, for
-        k = 0 ... (a fast length above ``PRECONDITIONER_STRETCH`` N), so that preconditioners
-        of any run can be built.
+        k = 0 ... (the longest preconditioner circulant), so that preconditioners of any run
+        can be built.
     count
         Number of elements N.
     """
@@ -140,7 +161,7 @@ class ToeplitzOperator:
     def __init__(self, coefficient: Callable[[FloatArray], FloatArray], count: int) -> None:
         self.count = count
         self._circulant_length = fast_length(2 * count - 1)
-        longest = fast_length(math.ceil(PRECONDITIONER_STRETCH * count))
+        longest = ladder_length(math.ceil(PRECONDITIONER_STRETCH * count))
         self.column = np.asarray(coefficient(np.arange(longest + 1, dtype=np.float64)))
         embedded = np.zeros(self._circulant_length)
         embedded[:count] = self.column[:count]
@@ -148,13 +169,33 @@ class ToeplitzOperator:
         self._spectrum = np.fft.rfft(embedded)
         self._preconditioners = _SpectrumCache(SPECTRUM_CACHE)
         self._blocks = _SpectrumCache(SPECTRUM_CACHE)
+        self._buffers = _SpectrumCache(SPECTRUM_CACHE)
 
-    def apply(self, values: FloatArray) -> FloatArray:
-        """M @ values along the last axis (any leading shape)."""
+    def _transform_buffer(self, length: int) -> NDArray[np.complex128]:
+        """The operator's scratch for the rfft of ``length`` points (never handed out)."""
+        return self._buffers.get(  # type: ignore[return-value]
+            length, lambda size: np.empty(size // 2 + 1, dtype=np.complex128)
+        )
+
+    def product_buffer(self) -> FloatArray:
+        """An array :meth:`apply` may write one product into (``out``)."""
+        return np.empty(self._circulant_length)
+
+    def apply(self, values: FloatArray, out: FloatArray | None = None) -> FloatArray:
+        """M @ values along the last axis (any leading shape).
+
+        ``out`` (from :meth:`product_buffer`, one-dimensional values only) receives the product
+        in its first N entries, which are returned; otherwise a new array is returned.
+        """
         length = self._circulant_length
-        transformed = np.fft.rfft(values, length, axis=-1)
+        if values.ndim != 1 or not _FFT_OUT:
+            transformed = np.fft.rfft(values, length, axis=-1)
+            transformed *= self._spectrum
+            return np.fft.irfft(transformed, length, axis=-1)[..., : self.count]
+        transformed = np.fft.rfft(values, length, out=self._transform_buffer(length))
         transformed *= self._spectrum
-        return np.fft.irfft(transformed, length, axis=-1)[..., : self.count]
+        result = np.fft.irfft(transformed, length, out=out)
+        return result[: self.count]
 
     def diagonal(self) -> float:
         return float(self.column[0])
@@ -195,7 +236,7 @@ class ToeplitzOperator:
 
     def _preconditioner_length(self, run_length: int) -> tuple[int, NDArray[np.float64]]:
         """The stretched circulant for a run, or the run's own length if that is not definite."""
-        stretched = fast_length(math.ceil(PRECONDITIONER_STRETCH * run_length))
+        stretched = ladder_length(math.ceil(PRECONDITIONER_STRETCH * run_length))
         smallest = np.inf
         for length in (stretched, fast_length(run_length)):
             spectrum = self._chan_spectrum(length)
@@ -208,10 +249,26 @@ class ToeplitzOperator:
             "logarithm must be at least a quarter of the grid's length"
         )
 
-    def precondition(self, runs: Runs, residual: FloatArray) -> FloatArray:
-        """Apply the run-by-run circulant preconditioner to packed residuals (..., count)."""
+    def preconditioner_buffer(self, runs: Runs) -> FloatArray | None:
+        """An array :meth:`precondition` may write into for these runs (``out``), or None."""
+        if len(runs.starts) != 1 or not _FFT_OUT:
+            return None
+        return np.empty(self._preconditioner_length(runs.count)[0])
+
+    def precondition(
+        self, runs: Runs, residual: FloatArray, out: FloatArray | None = None
+    ) -> FloatArray:
+        """Apply the run-by-run circulant preconditioner to packed residuals (..., count).
+
+        ``out`` (from :meth:`preconditioner_buffer`, one-dimensional residuals only) receives
+        the result in its first entries, which are returned.
+        """
         if len(runs.starts) == 1:
             length, spectrum = self._preconditioner_length(runs.count)
+            if residual.ndim == 1 and _FFT_OUT:
+                transformed = np.fft.rfft(residual, length, out=self._transform_buffer(length))
+                transformed /= spectrum
+                return np.fft.irfft(transformed, length, out=out)[: runs.count]
             transformed = np.fft.rfft(residual, length, axis=-1)
             transformed /= spectrum
             return np.fft.irfft(transformed, length, axis=-1)[..., : runs.count]
@@ -299,19 +356,22 @@ def projected_cg(
         def product(direction: FloatArray) -> tuple[FloatArray, FloatArray | None]:
             return restricted(direction), None
     else:
+        spread = np.zeros(operator.count)  # the direction on the grid: zero off the runs
+        buffer = operator.product_buffer()
 
         def product(direction: FloatArray) -> tuple[FloatArray, FloatArray | None]:
-            full = np.zeros(operator.count)
-            full[where] = direction
-            full = operator.apply(full)
+            spread[where] = direction
+            full = operator.apply(spread, out=buffer)
             return full[where], full
 
     if m:
         Z = operator.precondition(runs, A)  # M^-1 A^T, as rows
         schur = gram(A, Z)
 
+    scratch = operator.preconditioner_buffer(runs)
+
     def project(residual: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
-        z = operator.precondition(runs, residual)
+        z = operator.precondition(runs, residual, out=scratch)
         if not m:
             return z, np.zeros(0), residual
         w = solve_small(schur, row_products(A, z))
