@@ -263,8 +263,10 @@ def solve_case(case: MapCase, *, elements: int = ELEMENTS) -> list[dict[str, Any
     """
     h, boundaries = solver_boundaries(case, elements=elements)
     estimates = slip_zone(case.contact_law, case.cycle(), MU, edge="both")
+    left = estimates.left
+    assert left is not None  # edge="both" gives the left edge
     rows = []
-    sides = (("right", estimates, estimates.left), ("left", estimates.left, estimates))
+    sides = (("right", estimates, left), ("left", left, estimates))
     for side, estimate, other in sides:
         solved = boundaries[side]
         b = solved.b

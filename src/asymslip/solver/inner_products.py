@@ -43,17 +43,17 @@ def norm(a: FloatArray) -> float:
 
 def row_products(rows: FloatArray, vector: FloatArray) -> FloatArray:
     """A v for a few rows A (m, n) and a vector v (n,): the m inner products."""
-    return np.einsum("ij,j->i", rows, vector)
+    return np.asarray(np.einsum("ij,j->i", rows, vector), dtype=np.float64)
 
 
 def combination(weights: FloatArray, rows: FloatArray) -> FloatArray:
     """A^T w: the rows (m, n) weighted by w (m,) and summed."""
-    return np.einsum("i,ij->j", weights, rows)
+    return np.asarray(np.einsum("i,ij->j", weights, rows), dtype=np.float64)
 
 
 def gram(rows: FloatArray, others: FloatArray) -> FloatArray:
     """The m x m matrix of inner products A B^T of two sets of m rows."""
-    return np.einsum("ik,jk->ij", rows, others)
+    return np.asarray(np.einsum("ik,jk->ij", rows, others), dtype=np.float64)
 
 
 def solve_small(matrix: FloatArray, vector: FloatArray) -> FloatArray:
@@ -76,4 +76,4 @@ def solve_small(matrix: FloatArray, vector: FloatArray) -> FloatArray:
                 (a * vector[1] - c * vector[0]) / determinant,
             ]
         )
-    return np.linalg.solve(matrix, vector)
+    return np.asarray(np.linalg.solve(matrix, vector), dtype=np.float64)

@@ -43,7 +43,7 @@ import numpy as np
 from ..errors import InputError
 from ..files.atomic import atomic_write
 from .conventions import comment_line
-from .result import SolverResult
+from .result import Edge, SolverResult
 
 
 def _figure_class() -> Any:
@@ -125,8 +125,9 @@ def _draw(result: SolverResult, target: Any) -> None:
         traction.plot(x, result.q_diff, "k--", linewidth=1.0, label="$q_{diff} = q_2 - q_1$")
     slip.plot(x, result.slip_amplitude, "k-", linewidth=1.0, label="slip amplitude")
     energy.plot(x, result.energy, "k-")
-    for side in ("right", "left"):
-        edge = result.edge(side)  # type: ignore[arg-type]
+    sides: tuple[Edge, Edge] = ("right", "left")
+    for side in sides:
+        edge = result.edge(side)
         if edge.b is not None:
             position = edge.b if side == "right" else -edge.b
             for axes in (traction, slip, energy):

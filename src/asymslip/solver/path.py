@@ -184,7 +184,7 @@ class LoadPath:
         if first[1] == 0 and first[2] == 0:
             return start[None, :]
         fractions = np.arange(0, steps + 1) / steps
-        loads = start + fractions[:, None] * (first - start)
+        loads: FloatArray = start + fractions[:, None] * (first - start)
         loads[-1] = first
         return loads
 

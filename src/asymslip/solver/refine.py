@@ -63,13 +63,14 @@ class Extrapolation:
 
 def extrapolate(values: tuple[float | None, ...]) -> Extrapolation:
     """Richardson extrapolation of a sequence on grids refined by 2, or its spread."""
-    if any(v is None for v in values) or len(values) < 2:
+    known = [v for v in values if v is not None]
+    if len(known) < len(values) or len(values) < 2:
         return Extrapolation(values, None, None, None, "unavailable")
-    finest = float(values[-1])
-    spread = max(abs(float(v) - finest) for v in values[:-1])
-    if len(values) >= 3:
-        d1 = float(values[-2]) - float(values[-3])
-        d2 = finest - float(values[-2])
+    finest = float(known[-1])
+    spread = max(abs(float(v) - finest) for v in known[:-1])
+    if len(known) >= 3:
+        d1 = float(known[-2]) - float(known[-3])
+        d2 = finest - float(known[-2])
         if d1 * d2 > 0 and abs(d2) < abs(d1):
             ratio = d1 / d2
             order = math.log2(ratio)

@@ -78,7 +78,7 @@ class StateResult:
 
     @property
     def stick(self) -> NDArray[np.bool_]:
-        return self.contact & (self.slip_sign == 0)
+        return self.contact & np.equal(self.slip_sign, 0)
 
     def edge(self, side: Edge) -> EdgeState:
         return self.right if side == "right" else self.left

@@ -64,7 +64,7 @@ class TangentialState:
 
     @property
     def stick(self) -> NDArray[np.bool_]:
-        return self.slip_sign == 0
+        return np.equal(self.slip_sign, 0)
 
 
 class TangentialSolver:
@@ -178,7 +178,8 @@ class TangentialSolver:
         if total <= 0:
             return guess
         share = min(1.0, abs(deficit) / total)
-        return guess + np.sign(deficit) * share * room
+        moved: FloatArray = guess + np.sign(deficit) * share * room
+        return moved
 
 
 def predict_slip(
