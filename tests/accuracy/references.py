@@ -1762,14 +1762,14 @@ register_quantity(
 )
 
 # ---------------------------------------------------------------------------------------------
-# The error map's axes (derivations/tension_share.py): (21) at state 1, L_II1/(mu L_I1) =
+# The error map's axes (derivations/edge_drive.py): (21) at state 1, L_II1/(mu L_I1) =
 # lam/mu + pi eta a1/(4 mu), whose tension term is tau, transcribed; eta from tau by solving
 # the same line by hand.
 # ---------------------------------------------------------------------------------------------
 
 register_quantity(
     Quantity(
-        "tension_share.tension_share",
+        "edge_drive.tension_share",
         ("eta", "a1", "mu"),
         lambda eta, a1, mu: pi * eta * a1 / (4 * mu),
         ("21", "28"),
@@ -1777,7 +1777,7 @@ register_quantity(
 )
 register_quantity(
     Quantity(
-        "tension_share.tension_slope_for_share",
+        "edge_drive.tension_slope_for_share",
         ("tau=lam", "a1", "mu"),
         lambda tau, a1, mu: 4 * mu * tau / (pi * a1),
         ("21", "28"),

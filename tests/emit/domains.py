@@ -378,7 +378,7 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "gap_opening_influence": _influence,
     "relative_slip_influence": _influence,
     "tension_relative_displacement": _tension,
-    # tension_share (the error map's axes)
+    # edge_drive (the error map's axes)
     "tension_share": _tension_share,
     "tension_slope_for_share": _tension_share,
 }

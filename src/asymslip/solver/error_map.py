@@ -58,7 +58,7 @@ from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from asymslip_gen.tension_share import tension_share, tension_slope_for_share
+from asymslip_gen.edge_drive import tension_share, tension_slope_for_share
 
 from ..cycle import LoadCycle
 from ..edge_flags import VALIDITY_THRESHOLD

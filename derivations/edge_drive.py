@@ -49,7 +49,7 @@ def tension_slope_for_share() -> sympy.Expr:
 def derive() -> Derivation:
     d = Derivation(__file__)
     d.describe_module(
-        "tension_share",
+        "edge_drive",
         "The bulk tension's share tau = pi eta a1/(4 mu) of an edge's slip drive "
         "L_II1/(mu L_I1), from the calibration (21), and the path slope eta for a given tau: "
         "the axes of the error map (beyond the paper).",
@@ -77,7 +77,7 @@ def derive() -> Derivation:
         doc="tau = pi eta a1/(4 mu): with the shear force's share lam/mu it makes up "
         "L_II1/(mu L_I1) of (21), which exceeds 1 when the edge slips forward on loading.  "
         "For the left-hand edge pass its own slope (eta is the same at both edges).",
-        module="tension_share",
+        module="edge_drive",
         returns="tau (dimensionless).",
     )
     d.emit(
@@ -89,7 +89,7 @@ def derive() -> Derivation:
         doc="eta = 4 mu tau/(pi a1), the inverse of tension_share: the load path's tension "
         "slope (18) for which the tension supplies tau of the edge's slip drive "
         "L_II1/(mu L_I1).",
-        module="tension_share",
+        module="edge_drive",
         returns="eta [1/length].",
     )
     return d
