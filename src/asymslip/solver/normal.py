@@ -71,9 +71,18 @@ class NormalSolver:
         return guess
 
     def solve(
-        self, P: float, M: float, start: BoolArray | None = None, guess: FloatArray | None = None
+        self,
+        P: float,
+        M: float,
+        start: BoolArray | None = None,
+        guess: FloatArray | None = None,
+        settle: bool = True,
     ) -> NormalState:
         """Pressure at load P and moment M, warm-started from a guess of the contact set.
+
+        ``guess`` is a guess of the pressures; ``settle`` moves the guessed contact's ends
+        first (:func:`~asymslip.solver.qp.settle_ends`: for a guess that is not already an
+        extrapolation to this load).
 
         Raises
         ------
@@ -99,6 +108,7 @@ class NormalSolver:
             np.zeros(self.grid.count, dtype=bool),
             workspace=self._workspace,
             guess=guess,
+            settle=settle,
         )
         contact = ~solution.at_lower
         pressure = np.where(contact, np.maximum(solution.y, 0.0), 0.0)

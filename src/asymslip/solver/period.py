@@ -147,19 +147,17 @@ class NormalCache:
         key = load.tobytes()
         state = self._states.get(key)
         if state is None:
-            guess = None
+            guess, pressure, extrapolated = None, None, False
             if steady_motion and len(self._recent) == 2:
                 before, now = self._recent
                 last = np.hypot(now.P - before.P, now.M - before.M)
                 ahead = float(np.hypot(P - now.P, M - now.M) / last) if last else 0.0
                 guess = predict_contact(before, now, ahead)
                 pressure = now.pressure + ahead * (now.pressure - before.pressure)
+                extrapolated = True
             elif self._recent:
                 guess = self._recent[-1].contact
-                pressure = None
-            else:
-                pressure = None
-            state = self.solver.solve(P, M, guess, pressure)
+            state = self.solver.solve(P, M, guess, pressure, settle=not extrapolated)
             self._states[key] = state
             self._recent = [*self._recent[-1:], state]
         return state

@@ -372,7 +372,16 @@ def _run(settings: SolverSettings, started: float) -> SolverResult:
                 predicted = predict_slip(mu, previous_step, (normal, state), upcoming)
                 guess = 2 * state.shear - previous_step[1].shear
             new = work.count(
-                tangential.step(state, upcoming, Q, sigma, predicted, normal, guess=guess)
+                tangential.step(
+                    state,
+                    upcoming,
+                    Q,
+                    sigma,
+                    predicted,
+                    normal,
+                    guess=guess,
+                    settle=previous_step is None and not repeating,
+                )
             )
             energy = _energy(state, new, normal, upcoming)
             replaced = window.put(s, j, StepRecord(upcoming, new.shear, SlipRecord.of(new, energy)))

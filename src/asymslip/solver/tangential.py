@@ -101,6 +101,7 @@ class TangentialSolver:
         predicted: Int8Array | None = None,
         previous: NormalState | None = None,
         guess: FloatArray | None = None,
+        settle: bool = False,
     ) -> TangentialState:
         """The state at the end of a step to shear force Q and tension sigma.
 
@@ -111,7 +112,9 @@ class TangentialSolver:
         it, elements that come into or leave the contact during the step count only the part
         of their slip made while in contact (see :func:`contact_fractions`).  ``guess`` is a
         guess of the new shear tractions to start the iteration from (default: the old ones);
-        like ``predicted`` it affects only the work.
+        like ``predicted`` it affects only the work.  ``settle`` moves the predicted stick
+        zone's ends first (:func:`~asymslip.solver.qp.settle_ends`), for a prediction that is
+        not an extrapolation (a segment's first step).
         """
         contact = normal.contact
         capacity = self.mu * normal.pressure
@@ -141,6 +144,7 @@ class TangentialSolver:
             workspace=self._workspace,
             feasible_start=self._feasible(start, capacity, contact, Q),
             guess=guess,
+            settle=settle,
         )
         # An element at its friction limit slips only if it moves: one held at the limit by
         # a locked-in traction, with no slip increment, sticks.
