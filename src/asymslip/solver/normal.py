@@ -70,6 +70,18 @@ class NormalSolver:
         guess[margin:-margin] = True
         return guess
 
+    def problem(self, P: float, M: float) -> BoxQP:
+        """The programme whose minimiser is the pressure at load P and moment M."""
+        return BoxQP(
+            operator=self.operators.gap,
+            domain=self._domain,
+            lower=self._lower,
+            upper=self._upper,
+            linear=-self.heights,
+            rows=self._rows,
+            targets=np.array([P, M], dtype=np.float64),
+        )
+
     def solve(
         self,
         P: float,
@@ -93,15 +105,7 @@ class NormalSolver:
         """
         if start is None:
             start = self.initial_contact()
-        qp = BoxQP(
-            operator=self.operators.gap,
-            domain=self._domain,
-            lower=self._lower,
-            upper=self._upper,
-            linear=-self.heights,
-            rows=self._rows,
-            targets=np.array([P, M], dtype=np.float64),
-        )
+        qp = self.problem(P, M)
         solution = solve_box_qp(
             qp,
             ~start,

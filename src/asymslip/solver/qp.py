@@ -25,6 +25,7 @@ answer is ever returned.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Literal
 
@@ -271,7 +272,7 @@ def solve_box_qp(
     at_upper: BoolArray,
     *,
     workspace: Workspace | None = None,
-    feasible_start: FloatArray | None = None,
+    feasible_start: FloatArray | Callable[[FloatArray], FloatArray] | None = None,
     guess: FloatArray | None = None,
     settle: bool = False,
 ) -> QPSolution:
@@ -286,8 +287,11 @@ def solve_box_qp(
     workspace
         Cached solutions from earlier programmes with the same operator and rows.
     feasible_start
-        A point satisfying the bounds and the equality rows, for the monotone fallback; without
-        it the fallback is unavailable and a cycling primal-dual iteration raises.
+        A point satisfying the bounds and the equality rows, for the monotone fallback, or a
+        function making one from a point inside the bounds (it is given the last primal-dual
+        iterate clipped into the box, so that the fallback starts near the solution and needs
+        few of its one-bound-at-a-time steps); without it the fallback is unavailable and a
+        cycling primal-dual iteration raises.
     guess
         Values to start the first solve from on its free elements (default: the workspace's
         last solution).  Like the sets, it affects only the work, never the solution.
@@ -308,27 +312,30 @@ def solve_box_qp(
         guess = None
     lower_set = at_lower & qp.domain
     upper_set = at_upper & qp.domain & ~lower_set
-    seen: set[bytes] = set()
     # The first two solves are exact (the guess is usually right, or one correction away);
     # once the sets have moved twice, the next solves only need to be good enough to move them
-    # on (LOOSE_TOLERANCE), until they stay put -- then one exact solve confirms them.
-    exact = True
+    # on (LOOSE_TOLERANCE), until they stay put; from then on every solve is exact, and a set
+    # met twice among the exact solves is a cycle.
+    seen: set[bytes] = set()  # sets solved exactly
+    seen_loose: set[bytes] = set()
+    phase = "exact"  # "exact" (the first solves), "loose", "final" (exact to the end)
     moves = 0
+    iteration = 0
     for iteration in range(1, MAX_PRIMAL_DUAL + 1):
         signature = np.packbits(lower_set).tobytes() + np.packbits(upper_set).tobytes()
-        if signature in seen:
-            if exact:
-                break  # a cycle: the primal-dual iteration will not converge from here
-            exact, seen = True, set()  # loose solves can cycle by their own error: be exact
+        if phase == "loose" and signature in seen_loose:
+            phase = "final"  # loose solves can cycle by their own error
+        if phase != "loose" and signature in seen:
+            break  # a cycle: the primal-dual iteration will not converge from here
         if np.count_nonzero(qp.domain & ~lower_set & ~upper_set) < qp.rows.shape[0]:
             break  # a guess with too few free elements to meet the equalities: go monotone
-        seen.add(signature)
+        (seen_loose if phase == "loose" else seen).add(signature)
         y, multipliers, gradient = equality.solve(
             qp,
             lower_set,
             upper_set,
             guess if iteration == 1 else None,
-            CG_TOLERANCE if exact else LOOSE_TOLERANCE,
+            LOOSE_TOLERANCE if phase == "loose" else CG_TOLERANCE,
         )
         value_tol, gradient_tol = _scales(qp, y)
         free = qp.domain & ~lower_set & ~upper_set
@@ -337,8 +344,8 @@ def solve_box_qp(
         new_lower = (free & (y < qp.lower - value_tol)) | (lower_set & (gradient > -gradient_tol))
         new_upper = (free & (y > qp.upper + value_tol)) | (upper_set & (gradient < gradient_tol))
         if np.array_equal(new_lower, lower_set) and np.array_equal(new_upper, upper_set):
-            if not exact:
-                exact, seen = True, set()
+            if phase == "loose":
+                phase = "final"
                 continue
             return QPSolution(
                 y,
@@ -353,14 +360,19 @@ def solve_box_qp(
                 _image(equality),
             )
         moves += 1
-        exact = moves < EXACT_MOVES
+        if phase == "exact" and moves >= EXACT_MOVES:
+            phase = "loose"
         lower_set, upper_set = new_lower, new_upper & ~new_lower
     if feasible_start is None:
         raise SolverError(
-            f"the active-set iteration did not settle in {len(seen)} iterations (it cycles "
+            f"the active-set iteration did not settle in {iteration} iterations (it cycles "
             "between stick/slip guesses) and no feasible starting point was given"
         )
-    return _primal_active_set(qp, feasible_start, equality, settling + len(seen), cg_before)
+    if callable(feasible_start):
+        last = equality.last.y if equality.last is not None else np.zeros(qp.domain.size)
+        clipped = np.where(qp.domain, np.clip(last, qp.lower, qp.upper), 0.0)
+        feasible_start = feasible_start(clipped)
+    return _primal_active_set(qp, feasible_start, equality, settling + iteration, cg_before)
 
 
 def _image(workspace: Workspace) -> FloatArray:

@@ -136,13 +136,12 @@ class TangentialSolver:
         guess_sign = old.slip_sign if predicted is None else predicted
         at_upper = contact & (guess_sign > 0)
         at_lower = contact & (guess_sign < 0)
-        start = np.where(contact, np.clip(old.shear, -capacity, capacity), 0.0)
         solution = solve_box_qp(
             qp,
             at_lower,
             at_upper,
             workspace=self._workspace,
-            feasible_start=self._feasible(start, capacity, contact, Q),
+            feasible_start=lambda inside: self._feasible(inside, capacity, contact, Q),
             guess=guess,
             settle=settle,
         )
