@@ -5,11 +5,11 @@ PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
-EXTRAS := derive,dev,plot,bench,dask,special,parquet
+EXTRAS := derive,dev,plot,bench,dask,special,parquet,fe,docs
 
 .DEFAULT_GOAL := all
-.PHONY: all env demo generate check-generated check-wheel verify test test-languages toolchains bench \
-        figures error-map check-error-map report \
+.PHONY: all env demo generate check-generated check-wheel verify test lint test-languages toolchains bench \
+        figures error-map check-error-map report docs docs-tools test-docs \
         accuracy clean help
 
 all: generate demo ## set up the environment, regenerate the formulas, print the demo
@@ -40,8 +40,13 @@ verify: $(STAMP) ## run every derivation, one line per paper equation
 demo: $(STAMP) ## the paper's Fig. 5 example: a1, a2, b and the slip-zone width
 	$(PY) -m asymslip slip-zone --law hertz --R 1 --E-star 1 --mu 0.1 --P1 100 --Q1 0 --P2 105 --Q2 1
 
-test: $(STAMP) ## run the whole test suite (pytest -W error)
+test: $(STAMP) lint ## the type checker, the formatter and linter, then the test suite (pytest -W error)
 	$(PY) -m pytest
+
+lint: $(STAMP) ## mypy over src/ (strict; pyproject.toml), ruff format --check and ruff check
+	$(VENV)/bin/mypy
+	$(VENV)/bin/ruff format --check src tests derivations docs
+	$(VENV)/bin/ruff check src tests derivations docs
 
 figures: $(STAMP) error-map ## write Fig. 5 (generated/figures/fig5.png, .csv) and the error map
 	$(PY) -m asymslip figure fig5 --out generated/figures
@@ -61,7 +66,7 @@ report: $(STAMP) ## write generated/report/derivation.md from the derivation rec
 check-wheel: ## build sdist and wheel, install the wheel with no extras, run the README example
 	.ci/check-wheel
 
-toolchains: ## install gfortran and Octave where missing (Debian, as root; quiet, idempotent)
+toolchains: ## install gfortran, Octave and CalculiX where missing (Debian, as root; quiet, idempotent)
 	@.ci/install-toolchains
 
 test-languages: $(STAMP) toolchains ## compile the C and Fortran, run the MATLAB files, compare with NumPy
@@ -70,8 +75,25 @@ test-languages: $(STAMP) toolchains ## compile the C and Fortran, run the MATLAB
 bench: $(STAMP) ## issue 10's targets vs the strongest baselines (BENCH_ARGS="--quick", "--markdown F")
 	$(PY) -m tests.benchmarks.run_benchmarks $(BENCH_ARGS)
 
+# The site is built offline with warnings as errors (nitpicky cross-references; --keep-going
+# reports every warning before failing).  The gallery runs docs/examples/*.py; the API pages,
+# the derivation pages and the generated-language pages are written from the sources at build
+# time (docs/_ext), so new modules, commands and examples appear without editing the docs.
+DOCS_OUT := docs/_build/html
+docs: $(STAMP) ## build the documentation site into docs/_build/html (offline, warnings as errors)
+	@rm -rf $(DOCS_OUT)  # no page of an earlier build survives (the link check reads them all)
+	$(PY) -m sphinx -b html -W --keep-going -n -q -d docs/_build/doctrees docs $(DOCS_OUT)
+	@echo "docs: open $(DOCS_OUT)/index.html"
+
+docs-tools: ## install Chromium for the documentation's browser test (Debian, as root; idempotent)
+	@.ci/install-docs-tools
+
+test-docs: docs docs-tools ## build the site, then its checks: links, offline, API coverage, browser
+	ASYMSLIP_REQUIRE_DOCS=1 $(PY) -m pytest tests/docs
+
 accuracy: $(STAMP) ## the long accuracy run against 50-digit mpmath
 	$(PY) -m tests.accuracy.harness --samples 2000
 
 clean: ## remove the virtual environment and caches
-	rm -rf $(VENV) .pytest_cache .ruff_cache .hypothesis build src/*.egg-info
+	rm -rf $(VENV) .pytest_cache .ruff_cache .hypothesis build src/*.egg-info docs/_build \
+	    docs/tutorials docs/reference/api docs/theory/derivations

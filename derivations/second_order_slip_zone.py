@@ -712,6 +712,7 @@ def _emit(d: Derivation, width: sympy.Expr, error: sympy.Expr) -> None:
         module="second_order",
         returns="a1 - b, same units as a1.",
     )
+    _emit_dimensionless(d, sympy.factor(width.subs(by_multiplier)))
     d.emit(
         name="paper_stick_boundary_error_from_multiplier",
         args=(*arguments(mu, lam, eta, a1, da_dP, L_I1, dL_I_dP), OTHER_EDGE),
@@ -721,6 +722,55 @@ def _emit(d: Derivation, width: sympy.Expr, error: sympy.Expr) -> None:
         doc="paper_stick_boundary_error with a'' traded for L_I'(P1) through (19).",
         module="second_order",
         returns="E [length^3/force^2].",
+    )
+
+
+#: The dimensionless groups of the second-order width, each of order one wherever the width
+#: itself is a double: lam/mu, eta a1/mu, a'(P1) dP/a1, L_I1 a1^(3/2)/dP, L_I'(P1) a1^(3/2).
+GROUPS = (
+    Argument(sympy.Symbol("lam_mu", real=True), "lambda/mu, the shear slope over friction."),
+    Argument(sympy.Symbol("eta_a1_mu", real=True), "eta a1/mu, the tension slope over friction."),
+    Argument(sympy.Symbol("growth", positive=True), "a'(P1) dP/a1, the contact growth of (24)."),
+    Argument(
+        sympy.Symbol("multiplier", positive=True),
+        "L_I1 a1^(3/2)/dP, the normal edge multiplier in units of a1 and dP.",
+    ),
+    Argument(
+        sympy.Symbol("multiplier_slope", real=True),
+        "L_I'(P1) a1^(3/2), the multiplier's slope in units of a1.",
+    ),
+)
+
+
+def _emit_dimensionless(d: Derivation, width: sympy.Expr) -> None:
+    """The second-order width as a1 times a function of :data:`GROUPS` alone.
+
+    The width is homogeneous of degree one in length and zero in load, and depends on lam and
+    eta only through lam/mu and eta/mu: asserted below by putting the groups back.  Its
+    dimensional terms (a1^3 eta^2 L_I' dP, mu^2 ...) overflow or underflow at loads of 1e300 or
+    mu = 1e-300 although the width does not; in the groups every term is of order one.
+    """
+    lam_mu, eta_a1_mu, growth, multiplier, multiplier_slope = (g.symbol for g in GROUPS)
+    unit = {mu: 1, lam: lam_mu, eta: eta_a1_mu, a1: 1, da_dP: growth, L_I1: multiplier}
+    unit.update({dL_I_dP: multiplier_slope, dP: 1})
+    dimensionless = sympy.factor(width.subs(unit, simultaneous=True))
+    back = {lam_mu: lam / mu, eta_a1_mu: eta * a1 / mu, growth: da_dP * dP / a1}
+    back.update({multiplier: L_I1 * a1 ** sympy.Rational(3, 2) / dP})
+    back[multiplier_slope] = dL_I_dP * a1 ** sympy.Rational(3, 2)
+    assert sympy.simplify(a1 * dimensionless.subs(back, simultaneous=True) - width) == 0
+    d.emit(
+        name="slip_zone_width_second_order_dimensionless",
+        args=(*GROUPS, OTHER_EDGE),
+        expr=dimensionless,
+        equations=("19", "22", "28"),
+        summary="(a1 - b)/a1 to second order, in dimensionless groups that cannot overflow.",
+        doc="slip_zone_width_second_order_from_multiplier divided by a1, written in lam/mu, "
+        "eta a1/mu, a'(P1) dP/a1, L_I1 a1^(3/2)/dP and L_I'(P1) a1^(3/2) (the width is "
+        "homogeneous of degree one in length and zero in load, and depends on lam, eta only "
+        "through lam/mu, eta/mu): the same digits at ordinary values, and no overflow of "
+        "dimensional terms at loads of 1e300 or mu = 1e-300.",
+        module="second_order",
+        returns="(a1 - b)/a1, dimensionless.",
     )
 
 

@@ -15,6 +15,8 @@ from asymslip.codegen import Derivation
 from ._glossary import (
     L_I1,
     L_I2,
+    L_II1,
+    L_II2,
     P1,
     a1,
     a2,
@@ -27,7 +29,12 @@ from ._glossary import (
     lam,
     mu,
 )
-from .section2_calibrations import slip_zone_width, stick_boundary_proportional
+from .section2_calibrations import (
+    load_coefficients,
+    slip_zone_width,
+    stick_boundary_in_coefficients,
+    stick_boundary_proportional,
+)
 
 law = sympy.Function("a")  # contact half-width as a function of load
 multiplier = sympy.Function("L_I")  # normal edge multiplier as a function of load
@@ -72,6 +79,25 @@ def first_order_slip_zone_width() -> sympy.Expr:
     width = _on_law(width)
     series = sympy.series(width, dP, 0, 2).removeO()
     return sympy.factor(_named_slopes(series))
+
+
+shear = sympy.Function("L_II")  # an edge's own shear multiplier as a function of load
+
+
+@functools.cache
+def first_order_stick_ratio_from_multipliers() -> sympy.Expr:
+    """b/a1 of (17) to first order in dP, in an edge's own multipliers L_I(P), L_II(P).
+
+    For an edge whose L_II does not follow (21) (an asymmetric contact's): the series of (17)
+    along undefined a(P), L_I(P) and L_II(P); their slopes other than a'(P1) drop out.
+    """
+    exact = stick_boundary_in_coefficients().subs(load_coefficients())
+    on_path = _on_law(exact).subs({L_II1: shear(P1), L_II2: shear(P1 + dP)}, simultaneous=True)
+    series = sympy.series(on_path / law(P1), dP, 0, 2).removeO()
+    slope = sympy.Derivative(shear(P1), P1)
+    named = _named_slopes(series).subs(shear(P1), L_II1)
+    assert not named.has(slope, sympy.Derivative), named
+    return sympy.expand(named)
 
 
 def derive() -> Derivation:
@@ -187,6 +213,33 @@ def derive() -> Derivation:
         "and (27) to be small.",
         module="validity",
         returns="b / a1, dimensionless.",
+    )
+    # The same in an edge's own multipliers: (28) with lam + pi eta a1/4 -> L_II1/L_I1.
+    own = first_order_stick_ratio_from_multipliers()
+    on_21 = own.subs(L_II1, (lam + sympy.pi * eta * a1 / 4) * L_I1)
+    assert sympy.simplify(on_21 - first_order_stick_ratio()) == 0
+    d.emit(
+        name="stick_ratio_first_order_from_multipliers",
+        args=arguments(mu, L_I1, L_II1, a1, dP, da_dP),
+        expr=own,
+        equations=("17", "28"),
+        summary="First-order b / a1 of (17) in an edge's own multipliers L_I1, L_II1.",
+        doc="The series of (17) in dP along the edge's a(P), L_I(P) and L_II(P); their slopes "
+        "other than a'(P1) drop out.  Equals (28) where L_II follows (21); for an edge of an "
+        "asymmetric contact, whose L_II does not (derivations/asymmetric_edge_multipliers.py).",
+        module="validity",
+        returns="b / a1, dimensionless.",
+    )
+    d.emit(
+        name="slip_zone_growth_measure_from_multipliers",
+        args=arguments(mu, L_I1, L_II1, a1, dP, da_dP),
+        expr=sympy.Abs(2 * sympy.factor(1 - own)),
+        equations=("17", "27"),
+        summary="Measure (27) in an edge's own multipliers: twice the first-order |b - a1| / a1.",
+        doc="dP a'(P) / a1 |1 - L_II1/(mu L_I1)|, from the first-order (17) in the edge's own "
+        "multipliers; equals slip_zone_growth_measure where L_II follows (21).",
+        module="validity",
+        returns="Dimensionless measure.",
     )
     d.emit(
         name="slip_zone_width_first_order",

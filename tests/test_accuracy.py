@@ -31,6 +31,10 @@ WELL_CONDITIONED = 100.0  # kappa below which the 1e-12 target must hold outrigh
 # Why each exception's error can exceed 1e-12: the quantity vanishes where the named terms
 # cancel, so its relative condition number is unbounded there.
 CONDITIONING_EXCEPTIONS = {
+    "matched_tension_slope": "proportional to L_II2/L_I2 - L_II1/L_I1, which cancels as the "
+    "prototype's tension change vanishes",
+    "matched_shear_slope": "L_II1/L_I1 minus the tension term, which cancel where tension "
+    "drives the slip",
     "slip_zone_width_second_order": "its dP term is proportional to lam/mu + pi eta a1/(4 mu) - 1",
     "slip_zone_width_second_order_from_multiplier": "as slip_zone_width_second_order",
     "slip_zone_width_second_coefficient": "a sum of terms of both signs (r - 1 and Phi)",
@@ -42,6 +46,9 @@ CONDITIONING_EXCEPTIONS = {
     "relative_slip_zone_measure": "|a1 - b|/a1, proportional to lam + pi eta a2/4 - mu",
     "hertz slip_zone_width, end to end from (P1, dP)": "a1 - b, as slip_zone_width",
     "slip_zone_growth_measure": "proportional to |1 - lam/mu - pi eta a1/(4 mu)|",
+    "slip_zone_growth_measure_from_multipliers": "proportional to |1 - L_II1/(mu L_I1)|, as "
+    "slip_zone_growth_measure",
+    "slip_zone_width_second_order_dimensionless": "as slip_zone_width_second_order",
     "slip_zone_width_first_order": "proportional to lam/mu + pi eta a1/(4 mu) - 1",
     "hertz_slip_zone_width_first_order": "proportional to lam/mu + pi eta a1/(4 mu) - 1",
     "corrective_stick_slip_zone_width": "dK_II/(mu L_I) - da/2: the two terms cancel as the "

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
@@ -94,10 +96,63 @@ def test_a_zero_denominator_in_eq17_is_refused():
     L_I1, L_I2 = (2 * P / np.pi * np.sqrt(2 / a**3) for P, a in ((P1, a1), (P2, a2)))
     eta = mu * (L_I1 + L_I2) / (np.pi / 4 * (a2 * L_I2 - a1 * L_I1))
     cycle = LoadCycle(P1=P1, Q1=0.0, P2=P2, Q2=0.0, sigma1=0.0, sigma2=eta * (P2 - P1))
-    with pytest.raises(InputError, match=r"^mu: at the right edge the denominator of \(17\)"):
+    with pytest.raises(
+        InputError, match=r"^sigma2: the bulk-tension change .* denominator of \(17\)"
+    ):
         slip_zone(LAW, cycle, mu)
 
 
 def test_an_unknown_edge_is_refused():
     with pytest.raises(InputError, match=r"^edge: must be"):
         slip_zone(LAW, CYCLE, 0.1, edge="top")
+
+
+# --- messages that name the right cause (issue 17) ---------------------------------------------
+def test_a_subnormal_P1_without_shear_is_not_gross_sliding():
+    """mu P1 = 0.1 x 5e-324 rounds to 0, and |Q1| = 0 < 0 is false: the cycle was refused as
+    gross sliding.  A contact with no shear force never slides as a whole."""
+    result = slip_zone(LAW, LoadCycle(5e-324, 0.0, 1e-323, 0.0), 0.1)
+    assert result.slip_direction == 0 and result.b == result.a1 > 0
+
+
+def test_gross_sliding_is_decided_exactly_where_mu_P_is_subnormal():
+    """P1 = 2^-1060, mu = 0.3: mu P1 = 4915.2 x 2^-1074 rounds to 4915 x 2^-1074.  |Q1| of
+    4915 units of 2^-1074 lies below the true mu P1 (no gross sliding: the rounded product
+    said otherwise); 4916 units lie above it (gross sliding)."""
+    P1, mu = math.ldexp(1.0, -1060), 0.3
+    unit = math.ldexp(1.0, -1074)
+    assert mu * P1 == 4915 * unit  # the rounding the check must see through
+    result = slip_zone(LAW, LoadCycle(P1, 4915 * unit, 2 * P1, 0.0), mu)
+    assert result.b > 0
+    with pytest.raises(InputError, match=r"^Q1: .*gross sliding"):
+        slip_zone(LAW, LoadCycle(P1, 4916 * unit, 2 * P1, 0.0), mu)
+
+
+def test_a_huge_tension_change_is_named_not_mu():
+    """--sigma2 1e300 blamed --mu: the denominator of (17) is not positive because of the
+    tension change; the same cycle without it has a partial-slip state."""
+    with pytest.raises(InputError, match=r"^sigma2: the bulk-tension change") as raised:
+        slip_zone(LAW, LoadCycle(100.0, 0.0, 105.0, 1.0, 0.0, 1e300), 0.1)
+    assert raised.value.parameter == "sigma2"
+    assert slip_zone(LAW, LoadCycle(100.0, 0.0, 105.0, 1.0), 0.1).b > 0
+
+
+@pytest.mark.parametrize(
+    "lam, eta, parameter",
+    [
+        (50.0, 0.0, "Q2"),  # no tension: the shear change alone
+        (50.0, 1.0, "Q2"),  # the shear change alone already leaves no state
+        (0.0, 1.0, "sigma2"),  # the tension change alone
+        (0.1, 1.0, "sigma2"),  # without the tension change there would be a state
+    ],
+)
+def test_a_non_positive_denominator_names_the_load_change_to_blame(lam, eta, parameter):
+    """The rules themselves, on one edge: mu (L_I1 + L_I2) = 0.21 against lambda |L_I2 - L_I1|."""
+    from asymslip.rules import Verdict, denominator_checks
+
+    verdict = Verdict(())
+    for key, ok in denominator_checks(False, 0.1, lam, eta, 1.0, 1.1):
+        verdict.require(key, ok, None, side="right", denominator=-1.0, mu=0.1, note="")
+    error = verdict.first_error()
+    assert error is not None and error.parameter == parameter
+    assert "too large for mu = 0.1" in str(error)

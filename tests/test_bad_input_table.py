@@ -173,6 +173,7 @@ FILES = {
     "cases_comments.csv": "# no header\n\n",
     "cases_no_Q2.csv": "P1,Q1,P2\n100,0,105\n",
     "cases_header_only.csv": "P1,Q1,P2,Q2\n",
+    "cases_field_counts.csv": "P1,Q1,P2,Q2\n100,0,105\n1,000,0,105,1\n",
     "cases_binary.csv": b"P1,Q1,P2,Q2\n100,0,105,1\n100,0,\xff05,1\n",
     "cases_clash.csv": "P1,Q1,P2,Q2,b\n100,0,105,1,3\n",
     "cases_wide.csv": "P1,Q1,P2,Q2\n100,-9,1e4,999\n100,0,105,1\n",
@@ -184,6 +185,9 @@ FILES = {
     "cases_bad_rows.csv": "# cycles\nP1,Q1,P2,Q2,case\n100,0,105,1,good\n100,0,1o5,1,typo\n"
     "100,0,100,1,flat\n100,900,105,1,sliding\n100,nan,105,1,nan\n100,,105,1,empty\n"
     "1e2,-1e-1,1.05e2,5e-1,good\n",
+    # solve-batch: a case, and a table with neither a cycle nor a path
+    "batch.csv": "case,P1,Q1,P2,Q2\nfig5,100,0,105,1\n",
+    "batch_no_cycle.csv": "case,P1,Q1\na,100,0\n",
     # module laws: one row inside the cubic's range, one beyond its maximum load
     "cases_cubic.csv": "P1,Q1,P2,Q2\n1,0,1.05,0.01\n100,0,105,1\n2,0,2.1,0.02\n",
     "not_a_law.py": "x = 1\n",
@@ -191,9 +195,22 @@ FILES = {
     "path.csv": "P,Q\n100,0\n105,1\n",
     "profile.csv": "x,h\n" + "".join(f"{x:g},{x * x / 2!r}\n" for x in range(-30, 31)),
     "profile_one_point.csv": "x,h\n0,0\n",
+    # inputs named like the files solve --out writes (tractions.csv, slip.csv)
+    "tractions.csv": "P,Q\n100,0\n105,1\n",
+    "slip.csv": "x,h\n" + "".join(f"{x:g},{x * x / 2!r}\n" for x in range(-30, 31)),
     "traces.csv": hertz_traces(),
     "traces_nan.csv": hertz_traces().replace("\n80.0,0.0,", "\n80.0,nan,", 1),
     "calibration_bad.json": "{not json",
+    # issue 17: semicolons, a load given twice, pressures integrating to twice the load
+    "traces_semicolons.csv": hertz_traces().replace(",", ";"),
+    "traces_twice.csv": hertz_traces() + hertz_traces().split("\n", 1)[1].split("\n100.0,")[0],
+    "traces_double.csv": "P,x,p\n"
+    + "".join(
+        f"{P},{x},{2 * float(p)!r}\n"
+        for P, x, p in (row.split(",") for row in hertz_traces().splitlines()[1:])
+    ),
+    "not_frd.frd": "hello\n",
+    "surface.vtu": "<VTKFile/>\n",  # a mesh file: reading it needs meshio (the fe extra)
     # law modules written by hand in the form `asymslip derive` writes (which refuses these)
     "inverse.py": "import numpy\n__asymslip_law__ = {'name': 'inverse', 'params': []}\n"
     "def load(a):\n    return 1 / a\ndef load_slope(a):\n    return -1 / a**2\n"
@@ -203,6 +220,10 @@ FILES = {
     "def normal_edge_multiplier(a, k):\n"
     "    return numpy.sqrt(2 / a) / numpy.pi * load_slope(a, k)\n",
     "broken_law.py": "def load(a:\n",
+    # a law module in form, but its import would run code (line 2)
+    "runs_code.py": "__asymslip_law__ = {'name': 'runs', 'params': []}\nprint('ran')\n"
+    "def load(a):\n    return a\ndef load_slope(a):\n    return 1 + 0 * a\n"
+    "def normal_edge_multiplier(a):\n    return a\n",
     "law.txt": "P(a) = a**2\n",
 }
 
@@ -217,7 +238,17 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
         else:
             path.write_bytes(content.encode("utf-8"))
     (folder / "a_file").write_text("not a folder\n")
+    os.symlink(folder / "cases.csv", folder / "cases_symlink.csv")
+    os.link(folder / "cases.csv", folder / "cases_hardlink.csv")
     (folder / "a_folder").mkdir()
+    (folder / "batch_dataset").mkdir()  # a Parquet dataset of solve-batch cases
+    import pyarrow
+    import pyarrow.parquet
+
+    pyarrow.parquet.write_table(
+        pyarrow.table({"P1": [100.0], "Q1": [0.0], "P2": [105.0], "Q2": [1.0]}),
+        folder / "batch_dataset" / "part.parquet",
+    )
     (folder / "folder.py").mkdir()
     # The law modules of `asymslip derive` that the table uses (their derivation is a case of
     # its own below too).
@@ -228,6 +259,8 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
     for name, formula, params in (
         ("cubic", "E_star*a**2 - k*a**3", "E_star k"),
         ("tanh_law", "k*tanh(a)", "k"),
+        ("selfpow", "a**a", ""),
+        ("tower", "a**a**a", ""),
     ):
         status, out, err = run(
             [
@@ -590,8 +623,34 @@ def physics_cases() -> list[Bad]:
         Bad(
             "bulk tension that overflows the denominator of (17)",
             ("slip-zone", *hertz(R="1e300", P1="1e-300", sigma2="1.7e308")),
-            "--mu",
-            r"is not positive \(a negative number beyond double precision\)",
+            "--sigma2",
+            r"bulk-tension change sigma2 - sigma1 is too large for mu = 0\.1: .* is not "
+            r"positive \(a negative number beyond double precision\)",
+        ),
+        Bad(
+            "--sigma2 1e300 names the tension, not --mu",
+            ("slip-zone", *hertz(sigma2="1e300")),
+            "--sigma2",
+            r"bulk-tension change sigma2 - sigma1 is too large for mu = 0\.1: at the right edge "
+            r"the denominator of \(17\).*is not positive \(-1\.569\d*e\+299\)",
+        ),
+        Bad(
+            "--sigma1 -1e300 names the tension (at state 2's option)",
+            ("slip-zone", *hertz(sigma1="-1e300")),
+            "--sigma2",
+            r"bulk-tension change sigma2 - sigma1 is too large",
+        ),
+        Bad(
+            "gross sliding with a subnormal P1 and Q1 (mu P1 rounds to 0)",
+            ("slip-zone", *hertz(P1="5e-324", Q1="5e-324", P2="1e-323", Q2="0")),
+            "--Q1",
+            r"gross sliding",
+        ),
+        Bad(
+            "a subnormal P1 is no gross sliding: its contact growth overflows",
+            ("slip-zone", *hertz(P1="5e-324")),
+            "--P1",
+            r"non-finite eq24 at the right edge",
         ),
         Bad(
             "power law: A = 1e300 overflows",
@@ -614,8 +673,8 @@ def physics_cases() -> list[Bad]:
         Bad(
             "zero denominator of (17) (bulk tension)",
             ("slip-zone", *hertz(Q2="0", sigma2=repr(eta_zero * (P2 - P1)))),
-            "--mu",
-            r"denominator of \(17\).*not positive",
+            "--sigma2",
+            r"bulk-tension change .* denominator of \(17\).*not positive",
         ),
         Bad(
             "stick boundary beyond the contact (bulk tension)",
@@ -822,6 +881,24 @@ def law_cases() -> list[Bad]:
             r"not an asymslip law module",
         ),
         Bad(
+            "module file is a folder",
+            (*module, "{d}/a_folder", *cycle()),
+            "--module",
+            r"is a folder, not a law module file",
+        ),
+        Bad(
+            "module file whose import would run code",
+            (*module, "{d}/runs_code.py", *cycle()),
+            "--module",
+            r"not an asymslip law module: line 2 evaluates an expression.*nothing of it was run",
+        ),
+        Bad(
+            "a**a below its rising branch",
+            (*module, "{d}/selfpow.py", *cycle(P1="0.5", P2="0.6", Q2="0.01")),
+            "--P1",
+            r"no contact half-width of the selfpow law .* loads above 0\.692201 only",
+        ),
+        Bad(
             "module file with a syntax error",
             (*module, "{d}/broken_law.py", *cycle()),
             "--module",
@@ -988,6 +1065,24 @@ def derive_cases() -> list[Bad]:
             "--out",
             r"cannot write",
         ),
+        Bad(
+            "derive --out numpy.py (would shadow NumPy)",
+            derive("k*a**2", name="numpy", out="{d}/numpy.py"),
+            "--out",
+            r"numpy\.py would shadow an installed module .*numpy.*choose another file name",
+        ),
+        Bad(
+            "derive --out json.py (would shadow the standard library)",
+            derive("k*a**2", out="{d}/json.py"),
+            "--out",
+            r"json\.py would shadow a module of Python's standard library",
+        ),
+        Bad(
+            "derive --out asymslip.py (would shadow asymslip)",
+            derive("k*a**2", out="{d}/asymslip.py"),
+            "--out",
+            r"asymslip\.py would shadow asymslip's own package",
+        ),
         Bad("derive a parameter named a", derive("k*a**2", "a k"), "--params", r"\ba\b"),
         Bad("derive a parameter twice", derive("k*a**2", "k k"), "--params", r"distinct|twice"),
         Bad(
@@ -1078,13 +1173,78 @@ def sweep_cases() -> list[Bad]:
             "sweep: --out is the input",
             sweep("{d}/cases.csv", out="{d}/cases.csv"),
             "--out",
-            r"is also the input",
+            r"is also an input",
         ),
         Bad(
             "sweep: --out is the input by another path",
             sweep("{d}/cases.csv", out="{d}/a_folder/../cases.csv"),
             "--out",
-            r"is also the input",
+            r"is also an input",
+        ),
+        Bad(
+            "sweep: --out a symbolic link to the input",
+            sweep("{d}/cases.csv", out="{d}/cases_symlink.csv"),
+            "--out",
+            r"cases_symlink\.csv is also an input \(the cases, .*cases\.csv\)",
+        ),
+        Bad(
+            "sweep: --out a hard link of the input",
+            sweep("{d}/cases.csv", out="{d}/cases_hardlink.csv"),
+            "--out",
+            r"cases_hardlink\.csv is also an input \(the cases",
+        ),
+        Bad(
+            "sweep: --out is the table law's file",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "table",
+                "--table",
+                "{d}/hertz.csv",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/hertz.csv",
+            ),
+            "--out",
+            r"hertz\.csv is also an input \(the table law",
+        ),
+        Bad(
+            "sweep: --out is the law module",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "module",
+                "--module",
+                "{d}/tanh_law.py",
+                "--param",
+                "k=10",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/./tanh_law.py",
+            ),
+            "--out",
+            r"tanh_law\.py is also an input \(the law module",
+        ),
+        Bad(
+            "sweep: --out is the calibration",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                "--law",
+                "calibrated",
+                "--calibration",
+                "{d}/calibration.json",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/calibration.json",
+            ),
+            "--out",
+            r"calibration\.json is also an input \(the calibration",
         ),
         Bad(
             "sweep: --out in a missing folder",
@@ -1215,6 +1375,145 @@ def command_line_cases() -> list[Bad]:
     ]
 
 
+def match_cases() -> list[Bad]:
+    """The laboratory match: the rig's options, and the requests no rig can answer."""
+
+    def match(*options: str) -> tuple[str, ...]:
+        return ("match", *hertz(), *options)
+
+    near_flat = (
+        "--law",
+        "flat-rounded",
+        "--flat-half-width",
+        "10",
+        "--R",
+        "1",
+        "--E-star",
+        "1",
+        "--mu",
+        "0.3",
+        "--P1",
+        "0.0960507665409116",
+        "--Q1",
+        "-0.025256618057330878",
+        "--P2",
+        "0.14251897820901327",
+        "--Q2",
+        "0.037475467694606364",
+    )
+    return [
+        Bad("match without --rig", match(), "--rig", r"required"),
+        Bad("match --rig cylinder", match("--rig", "cylinder"), "--rig", r"invalid choice"),
+        Bad(
+            "match --rig-E-star -1",
+            match("--rig", "hertz", "--rig-E-star", "-1"),
+            "--rig-E-star",
+            r"must be > 0",
+        ),
+        Bad("match --rig-mu 0", match("--rig", "hertz", "--rig-mu", "0"), "--rig-mu", r"> 0"),
+        Bad(
+            "match --rig-mu -inf",
+            match("--rig", "hertz", "--rig-mu", "-inf"),
+            "--rig-mu",
+            FINITE,
+        ),
+        Bad(
+            "match --rig-R -1",
+            match("--rig", "hertz", "--rig-R", "-1", "2"),
+            "--rig-R",
+            r"every value must be > 0",
+        ),
+        Bad(
+            "match --rig-R and --rig-R-range",
+            match("--rig", "hertz", "--rig-R", "1", "--rig-R-range", "1", "2"),
+            "--rig-R",
+            r"either --rig-R or --rig-R-range",
+        ),
+        Bad(
+            "match --rig-R-range upside down",
+            match("--rig", "hertz", "--rig-R-range", "2", "1"),
+            "--rig-R",
+            r"upper end must be >= the lower end",
+        ),
+        Bad(
+            "match: a flat half-width on a Hertz rig",
+            match("--rig", "hertz", "--rig-flat-half-width", "1"),
+            "--rig-flat-half-width",
+            r"needs --rig flat-rounded",
+        ),
+        Bad(
+            "match --rig-max-P 0",
+            match("--rig", "hertz", "--rig-max-P", "0"),
+            "--rig-max-P",
+            r"must be > 0",
+        ),
+        Bad(
+            "match --rig-max-Q nan",
+            match("--rig", "hertz", "--rig-max-Q", "nan"),
+            "--rig-max-Q",
+            r"must be > 0",
+        ),
+        Bad(
+            "match: an edge that does not slip",
+            ("match", *hertz(Q2="0.1"), "--rig", "hertz"),
+            "--edge",
+            r"does not slip in this cycle",
+        ),
+        Bad(
+            "match: the prototype's L_I falls along the path",
+            (
+                "match",
+                "--law",
+                "power",
+                "--A",
+                "0.05",
+                "--n",
+                "1.2",
+                "--E-star",
+                "1",
+                "--mu",
+                "0.3",
+                "--P1",
+                "1",
+                "--Q1",
+                "0",
+                "--P2",
+                "1.05",
+                "--Q2",
+                "0.02",
+                "--rig",
+                "hertz",
+            ),
+            "--law",
+            r"L_I does not rise along the path",
+        ),
+        Bad(
+            "match: every rig cycle slides grossly",
+            ("match", *near_flat, "--rig", "hertz"),
+            "--rig",
+            r"every rig cycle .* slides grossly",
+        ),
+        Bad(
+            "match: no rig within the limits comes near",
+            match("--rig", "hertz", "--rig-R", "1000", "--rig-max-P", "1e-3"),
+            "--rig",
+            r"no rig within its limits",
+        ),
+        Bad(
+            "match --verify-profile without --verify-E-star",
+            match("--rig", "hertz", "--verify", "--verify-profile", "x**2/2"),
+            "--verify-E-star",
+            r"is required with a --verify profile",
+        ),
+        Bad(
+            "match --elements 10 --verify",
+            match("--rig", "hertz", "--verify", "--elements", "10"),
+            "--elements",
+            r"must be at least 64",
+        ),
+    ]
+
+
 SOLVE = ("--elements", "100", "--steps", "3")
 
 
@@ -1316,6 +1615,18 @@ def solve_cases() -> list[Bad]:
             r"reference solver overflows double precision",
         ),
         Bad(
+            "solve: --path inside --out, named as a file solve writes",
+            solve(*HERTZ, "--mu", "0.1", "--path", "{d}/tractions.csv", "--out", "{d}"),
+            "--out",
+            r"tractions\.csv is also an input \(the load path",
+        ),
+        Bad(
+            "solve: --profile-table inside --out, named as a file solve writes",
+            solve("--profile-table", "{d}/slip.csv", *profile, "--out", "{d}/."),
+            "--out",
+            r"slip\.csv is also an input \(the profile table",
+        ),
+        Bad(
             "solve --out under a file",
             solve(*hertz(), "--out", "{d}/a_file/solver"),
             "--out",
@@ -1334,6 +1645,23 @@ def solve_cases() -> list[Bad]:
             r"the finest grid \(1,600,000,000 elements\) needs about",
         ),
     ]
+
+
+#: fe-model's options but --Q2 (steel, R = 50, the cycle of tests/fe).
+FE_MODEL = (
+    "--R",
+    "50",
+    "--E-star",
+    "115384.6",
+    "--mu",
+    "0.5",
+    "--P1",
+    "1000",
+    "--Q1",
+    "-100",
+    "--P2",
+    "1100",
+)
 
 
 def calibrate_cases() -> list[Bad]:
@@ -1396,13 +1724,88 @@ def calibrate_cases() -> list[Bad]:
             "calibrate --out is TRACES",
             ("calibrate", traces, "--out", traces),
             "--out",
-            r"is also the input",
+            r"is also an input",
+        ),
+        Bad(
+            "calibrate --out is TRACES by another path",
+            ("calibrate", traces, "--out", "{d}/a_folder/../traces.csv"),
+            "--out",
+            r"is also an input \(the traces",
         ),
         Bad(
             "calibrate --out in a missing folder",
             ("calibrate", traces, "--out", "{d}/missing/calibration.json"),
             "--out",
             r"cannot write",
+        ),
+        Bad(
+            "calibrate: semicolons between fields",
+            ("calibrate", "{d}/traces_semicolons.csv"),
+            "TRACES",
+            r"the fields are separated by ';'",
+        ),
+        Bad(
+            "calibrate: a load given twice",
+            ("calibrate", "{d}/traces_twice.csv"),
+            "TRACES",
+            r"P = 80 is given twice",
+        ),
+        Bad(
+            "calibrate: pressures integrating to twice the load",
+            ("calibrate", "{d}/traces_double.csv"),
+            "TRACES",
+            r"the pressures integrate to 2(\.0+)? times the load",
+        ),
+        Bad(
+            "calibrate --field on a CSV",
+            ("calibrate", traces, "--field", "CPRESS"),
+            "--field",
+            r"is for mesh files",
+        ),
+        Bad(
+            "calibrate: an .frd that is not one",
+            ("calibrate", "{d}/not_frd.frd"),
+            "TRACES",
+            r"not a CalculiX .frd file",
+        ),
+        Bad(
+            "fe-model: gross sliding",
+            ("fe-model", *FE_MODEL, "--Q2", "600", "--out", "{d}/fe"),
+            "--Q2",
+            r"gross sliding at state 2",
+        ),
+        Bad(
+            "fe-model --nu 0.5",
+            ("fe-model", *FE_MODEL, "--Q2", "150", "--nu", "0.5", "--out", "{d}/fe"),
+            "--nu",
+            r"must be in \[0, 0.5\)",
+        ),
+        Bad(
+            "fe-model --elements-per-half-width 4",
+            (
+                "fe-model",
+                *FE_MODEL,
+                "--Q2",
+                "150",
+                "--elements-per-half-width",
+                "4",
+                "--out",
+                "{d}/fe",
+            ),
+            "--elements-per-half-width",
+            r"must be an integer >= 8",
+        ),
+        Bad(
+            "fe-model: a contact not small beside R",
+            ("fe-model", *FE_MODEL, "--Q2", "150", "--R", "0.5", "--out", "{d}/fe"),
+            "--R",
+            r"is not small beside",
+        ),
+        Bad(
+            "fe-model --out is a file",
+            ("fe-model", *FE_MODEL, "--Q2", "150", "--out", "{d}/a_file"),
+            "--out",
+            r"is not a folder",
         ),
         Bad(
             "calibrated law without --calibration",
@@ -1431,6 +1834,126 @@ def calibrate_cases() -> list[Bad]:
     ]
 
 
+def solve_batch_cases() -> list[Bad]:
+    def batch(*options: str, cases: str = "{d}/batch.csv", out: str = "{d}/o.parquet") -> tuple:
+        return ("solve-batch", cases, *HERTZ, "--mu", "0.1", *options, "--out", out)
+
+    return [
+        Bad("solve-batch: CASES missing", batch(cases="{d}/nowhere.csv"), "CASES", "cannot read"),
+        Bad(
+            "solve-batch: CASES an empty folder",
+            batch(cases="{d}/a_folder"),
+            "CASES",
+            r"cannot read .*no \.parquet file",
+        ),
+        Bad(
+            "solve-batch: CASES with neither a cycle nor a path",
+            batch(cases="{d}/batch_no_cycle.csv"),
+            "CASES",
+            r"no column P2, Q2 and no path column",
+        ),
+        Bad(
+            "solve-batch: a law without a profile",
+            (
+                "solve-batch",
+                "{d}/batch.csv",
+                "--law",
+                "table",
+                "--table",
+                "{d}/table.csv",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/o.parquet",
+            ),
+            "--law",
+            r"solves a law's profile",
+        ),
+        Bad(
+            "solve-batch: no radius",
+            ("solve-batch", "{d}/batch.csv", "--E-star", "1", "--mu", "0.1", "--out", "{d}/o.csv"),
+            "--R",
+            r"is required with --law hertz",
+        ),
+        Bad(
+            "solve-batch: no friction coefficient",
+            ("solve-batch", "{d}/batch.csv", *HERTZ, "--out", "{d}/o.parquet"),
+            "--mu",
+            r"is required",
+        ),
+        Bad("solve-batch: --mu 0", batch("--mu", "0"), "--mu", r"must be > 0"),
+        Bad("solve-batch: too few elements", batch("--elements", "10"), "--elements", "at least"),
+        Bad("solve-batch: no steps", batch("--steps", "0"), "--steps", "at least 1"),
+        Bad(
+            "solve-batch: no cases per task",
+            batch("--cases-per-task", "0"),
+            "--cases-per-task",
+            ">= 1",
+        ),
+        Bad("solve-batch: no workers", batch("--workers", "0"), "--workers", ">= 1"),
+        Bad(
+            "solve-batch: workers and a scheduler",
+            batch("--workers", "2", "--scheduler", "tcp://127.0.0.1:8786"),
+            "--scheduler",
+            r"either --workers or --scheduler",
+        ),
+        Bad(
+            "solve-batch: --out is the input",
+            batch(out="{d}/batch.csv"),
+            "--out",
+            r"is also an input \(the cases",
+        ),
+        Bad(
+            "solve-batch: --out a folder without its slash",
+            batch(out="{d}/a_folder"),
+            "--out",
+            r"is a folder: end it with /",
+        ),
+        Bad(
+            "solve-batch: --out a file of the cases folder",
+            (
+                "solve-batch",
+                "{d}/batch_dataset",
+                *HERTZ,
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/batch_dataset/part.parquet",
+            ),
+            "--out",
+            r"part\.parquet is also an input \(a file of the cases",
+        ),
+        Bad(
+            "solve-batch: --out a folder holding the input",
+            batch(out="{d}/"),
+            "--out",
+            r"holds an input",
+        ),
+        Bad(
+            "solve-batch: --out a bad extension",
+            batch(out="{d}/o.txt"),
+            "--out",
+            r"name a \.csv or \.parquet file",
+        ),
+        Bad(
+            "sweep: no workers",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                *HERTZ,
+                "--mu",
+                "0.1",
+                "--workers",
+                "0",
+                "--out",
+                "{d}/o.csv",
+            ),
+            "--workers",
+            ">= 1",
+        ),
+    ]
+
+
 BAD: list[Bad] = [
     *number_option_cases(),
     *physics_cases(),
@@ -1440,6 +1963,8 @@ BAD: list[Bad] = [
     *command_line_cases(),
     *solve_cases(),
     *calibrate_cases(),
+    *match_cases(),
+    *solve_batch_cases(),
 ]
 
 
@@ -1458,11 +1983,13 @@ def solve_increasing(
 
 
 def module_law_check(
-    law: Callable[[float], float], high: float, P1: float, P2: float
+    law: Callable[[float], float], high: float, P1: float, P2: float, low: float = 0.0
 ) -> Callable[..., None]:
+    """a1, a2 against bisection of the law on (low, high), where it increases."""
+
     def check(result: dict, folder: Path) -> None:
         for key, P in (("a1", P1), ("a2", P2)):
-            assert result[key] == pytest.approx(solve_increasing(law, P, 0.0, high), rel=1e-12)
+            assert result[key] == pytest.approx(solve_increasing(law, P, low, high), rel=1e-12)
         assert 0 < result["b"] <= result["a2"]
 
     return check
@@ -1504,12 +2031,12 @@ def sweep_check(out: str, lam: list[float]) -> Callable[..., None]:
 
 def slip_check(points: list[float]) -> Callable[..., None]:
     """Fig. 5's cycle slips forward at the right edge: no slip in the stick zone (x < b), and
-    h < 0 in the slip zone (the traction resists the slip; see ``asymslip slip --help``)."""
+    delta > 0 in the slip zone (the sign of q2 - q1; see ``asymslip slip --help``)."""
 
     def check(result: dict, folder: Path) -> None:
         assert result["x"] == points
-        for x, h in zip(result["x"], result["slip"], strict=True):
-            assert h == 0 if x < result["b"] else h < 0
+        for x, delta in zip(result["x"], result["slip"], strict=True):
+            assert delta == 0 if x < result["b"] else delta > 0
 
     return check
 
@@ -1648,6 +2175,11 @@ def valid_cases() -> list[Valid]:
             slip_zone_check(1e-320, 0, 2e-320, 0, 0.1, slips=False, rel=1e-3),
         ),
         Valid(
+            "P1 = 5e-324 (mu P1 rounds to 0), Q1 = 0: not gross sliding",
+            ("slip-zone", *hertz(P1="5e-324", P2="1e-323", Q2="0"), "--json"),
+            slip_zone_check(5e-324, 0, 1e-323, 0, 0.1, slips=False, rel=1e-3),
+        ),
+        Valid(
             "P1 = 1, P2 = 1e6 (no slip; eq24 flagged)",
             ("slip-zone", *hertz(P1="1", P2="1e6"), "--json"),
             slip_zone_check(1, 0, 1e6, 1, 0.1, slips=False, warns=r"^eq24 > 0\.1"),
@@ -1757,6 +2289,22 @@ def valid_cases() -> list[Valid]:
             ),
             module_law_check(lambda a: 10 * math.tanh(a), 50.0, 1.0, 1.05),
         ),
+        Valid(
+            "a**a module law on its rising branch",
+            (*module, "{d}/selfpow.py", *cycle(P1="2", P2="2.1", Q2="0.01"), "--json"),
+            module_law_check(lambda a: a**a, 3.0, 2.0, 2.1, low=1 / math.e),
+        ),
+        Valid(
+            "a**a**a module law at P = 1e300",
+            (*module, "{d}/tower.py", *cycle(P1="1e300", P2="1.05e300", Q2="1e298"), "--json"),
+            module_law_check(
+                lambda a: math.exp(math.log(a) * a**a) if a < 4.27 else math.inf,
+                4.3,
+                1e300,
+                1.05e300,
+                low=1.0,
+            ),
+        ),
         # tractions and slip: far from the edge is reported, not refused
         Valid(
             "traction --x 0.1 -1e-2",
@@ -1859,6 +2407,11 @@ def valid_cases() -> list[Valid]:
                 "{d}/minus.py",
             ),
             derive_check("minus", r"positive and increasing for a > 1/k"),
+        ),
+        Valid(
+            "derive a tower of powers",
+            ("derive", "--P-of-a", "a**a**a**a", "--name", "tower4", "--out", "{d}/tower4.py"),
+            derive_check("tower4", r"was not established symbolically"),
         ),
         Valid(
             "derive a long sum",
@@ -2009,6 +2562,23 @@ ROW_ERRORS = [
             8: r"^Q1: missing",
         },
         (3, 9),
+    ),
+    RowErrors(
+        "sweep: no row with the header's field count (pyarrow read it as an empty file)",
+        (
+            "sweep",
+            "{d}/cases_field_counts.csv",
+            *HERTZ,
+            "--mu",
+            "0.1",
+            "--out",
+            "{d}/field_counts.csv",
+        ),
+        "field_counts.csv",
+        {
+            2: r"^line has 3 fields, the header has 4: '100,0,105'",
+            3: r"^line has 5 fields, the header has 4: '1,000,0,105,1'",
+        },
     ),
     RowErrors(
         "sweep: bad values in the mu column",
@@ -2178,6 +2748,28 @@ MISSING_EXTRAS = [
         ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/out.parquet"),
         "out.parquet",
     ),
+    (
+        "dask",
+        "distributed",
+        (
+            "solve-batch",
+            "{d}/batch.csv",
+            *HERTZ,
+            "--mu",
+            "0.1",
+            "--workers",
+            "2",
+            "--out",
+            "{d}/batch_on_dask.csv",
+        ),
+        "batch_on_dask.csv",
+    ),
+    (
+        "fe",
+        "meshio",
+        ("calibrate", "{d}/surface.vtu", "--out", "{d}/cal_without_meshio.json"),
+        "cal_without_meshio.json",
+    ),
 ]
 #: (package, a command that must work without it): only what needs an extra may refuse.
 WITHOUT_EXTRAS = [
@@ -2201,6 +2793,20 @@ WITHOUT_EXTRAS = [
         "pyarrow",
         ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/without_pyarrow.csv"),
     ),
+    (
+        "distributed",
+        (
+            "solve-batch",
+            "{d}/batch.csv",
+            *HERTZ,
+            "--mu",
+            "0.1",
+            "--elements",
+            "100",
+            "--out",
+            "{d}/batch_in_one_process.csv",
+        ),
+    ),
 ]
 
 
@@ -2209,7 +2815,7 @@ WITHOUT_EXTRAS = [
 #: JSON one after the other and printing each one's (exit status, stdout, stderr) as JSON.
 WITHOUT_OPTIONAL_PACKAGES = """
 import contextlib, io, json, sys
-for package in ("matplotlib", "scipy", "sympy", "pyarrow"):
+for package in ("matplotlib", "scipy", "sympy", "pyarrow", "meshio", "dask", "distributed"):
     sys.modules[package] = None
 from asymslip.cli import main
 results = []
@@ -2328,6 +2934,8 @@ def test_what_needs_no_optional_dependency_works_without_them(files: Path, proce
     assert json.loads(results["scipy"][1])["a1"] > 0  # the power law's slip zone: no 2F1
     with open(files / "without_pyarrow.csv", newline="") as handle:
         assert [float(row["lam"]) for row in csv.DictReader(handle)] == [0.2, 0.12]
+    with open(files / "batch_in_one_process.csv", newline="") as handle:  # no pyarrow, no Dask
+        assert [row["edge"] for row in csv.DictReader(handle)] == ["right", "left"]
 
 
 def test_a_reader_that_goes_away_stops_the_command_quietly(processes: dict):

@@ -245,3 +245,19 @@ def test_missing_or_invalid_law_parameters_name_their_option(law_options, option
     completed = run(["slip-zone", *law_options, *cycle], capsys)
     assert completed.returncode == 2
     assert completed.stderr.startswith(f"asymslip: error: {option}:"), completed.stderr
+
+
+def test_version_prints_the_installed_version_and_exits_0():
+    """``asymslip --version`` said a command was required (issue 17).  It prints the version of
+    pyproject.toml, which is also the installed distribution's."""
+    import importlib.metadata
+    import pathlib
+    import tomllib
+
+    project = tomllib.loads((pathlib.Path(__file__).parents[1] / "pyproject.toml").read_text())
+    version = project["project"]["version"]
+    assert importlib.metadata.version("asymslip") == version
+    done = subprocess.run(
+        [sys.executable, "-m", "asymslip", "--version"], capture_output=True, text=True
+    )
+    assert (done.returncode, done.stdout, done.stderr) == (0, f"asymslip {version}\n", "")

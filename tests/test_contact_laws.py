@@ -18,8 +18,10 @@ from hypothesis import given, settings
 
 from asymslip.errors import InputError
 from asymslip.laws.flat_rounded import FlatRoundedLaw
+from asymslip.laws.hertz import HertzLaw
 from asymslip.laws.power import PowerLaw, shape_factor
 from asymslip.laws.roots import growth_from, invert_increasing, load_difference
+from asymslip.laws.table import TableLaw
 from tests.accuracy.references import (
     flat_half_width_mp,
     flat_slope,
@@ -469,3 +471,55 @@ def test_growth_of_a_square_root_law_is_accurate_from_one_newton_correction(rela
         reference = mpmath.sqrt(mpmath.mpf(P1) + mpmath.mpf(dP)) - mpmath.sqrt(P1)
     assert found
     assert abs(growth - reference) < 4e-15 * reference
+
+
+# --- a law's parameters: one finite number each (issue 17) -------------------------------------
+LAW_BUILDERS = {
+    "HertzLaw R": (lambda v: HertzLaw(v, 1.0), "R"),
+    "HertzLaw E_star": (lambda v: HertzLaw(1.0, v), "E_star"),
+    "FlatRoundedLaw c": (lambda v: FlatRoundedLaw(v, 1.0, 1.0), "c"),
+    "FlatRoundedLaw R": (lambda v: FlatRoundedLaw(1.0, v, 1.0), "R"),
+    "PowerLaw A": (lambda v: PowerLaw(v, 2.0, 1.0), "A"),
+    "PowerLaw n": (lambda v: PowerLaw(1.0, v, 1.0), "n"),
+    "PowerLaw E_star": (lambda v: PowerLaw(1.0, 2.0, v), "E_star"),
+}
+NOT_ONE_NUMBER = {
+    "an array": (np.array([1.0, 2.0]), r"must be one number, not an array of 2"),
+    "a list of one": ([2.0], r"must be one number, not an array of 1"),
+    "None": (None, r"is missing"),
+    "text": ("2", r"must be a real number"),
+    "a complex number": (2 + 0j, r"must be a real number"),
+    "True": (True, r"must be a number, not True or False"),
+    "nan": (float("nan"), r"must be finite"),
+}
+
+
+@pytest.mark.parametrize("value", list(NOT_ONE_NUMBER))
+@pytest.mark.parametrize("law", list(LAW_BUILDERS))
+def test_a_law_parameter_that_is_not_one_finite_number_is_refused_naming_it(law, value):
+    """HertzLaw(np.array([1., 2.]), 1) ended in NumPy's "only 0-dimensional arrays can be
+    converted"; None was "must be finite".  Each is an InputError naming the parameter."""
+    build, name = LAW_BUILDERS[law]
+    given_value, rule = NOT_ONE_NUMBER[value]
+    with pytest.raises(InputError, match=rf"^{name}: {rule}") as raised:
+        build(given_value)
+    assert raised.value.parameter == name
+
+
+def test_a_zero_dimensional_array_or_numpy_scalar_is_one_number():
+    law = PowerLaw(np.array(0.5), np.float32(2.0), np.int64(1))
+    assert (law.A, law.n, law.E_star) == (0.5, 2.0, 1.0)
+    assert all(type(value) is float for value in (law.A, law.n, law.E_star))
+
+
+@pytest.mark.parametrize(
+    "P, a, parameter, rule",
+    [
+        (None, [1.0, 2.0, 3.0, 4.0], "P", r"is missing"),
+        ([1.0, 2.0, 3.0, 4.0], None, "a", r"is missing"),
+        ("abcd", [1.0, 2.0, 3.0, 4.0], "P", r"must be a real number"),
+    ],
+)
+def test_a_table_law_without_its_points_is_refused_naming_them(P, a, parameter, rule):
+    with pytest.raises(InputError, match=rf"^{parameter}: {rule}"):
+        TableLaw(P, a)

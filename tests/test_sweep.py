@@ -237,16 +237,52 @@ def test_parquet_output_holds_the_same_numbers_text_and_nulls_as_the_csv(tmp_pat
         assert (parquet["error"] or "") == csv_row["error"] and parquet["case"] == csv_row["case"]
 
 
+def test_parquet_keeps_the_numbers_it_read_as_numbers_and_csv_their_text(tmp_path):
+    """The copied cycle columns were strings in Parquet (pandas arithmetic on them raised
+    TypeError).  They are float64 there -- the doubles the sweep computed with, null where a
+    field is empty, not a number, or its row has the wrong number of fields -- and arithmetic
+    works on them; other input columns stay text; CSV copies every field as written."""
+    pa = pytest.importorskip("pyarrow")
+    pq = pytest.importorskip("pyarrow.parquet")
+    import pyarrow.compute as pc
+
+    cases = tmp_path / "cases.csv"
+    cases.write_text(CASES.replace("fig5,100,0,105,1", "fig5,1e2,0,105.0,1"))
+    sweep_file(cases, LAW, tmp_path / "out.parquet", mu=DEFAULT_MU, progress=False)
+    sweep_file(cases, LAW, tmp_path / "out.csv", mu=DEFAULT_MU, progress=False)
+    table = pq.read_table(tmp_path / "out.parquet")
+    numeric = ("P1", "Q1", "P2", "Q2", "sigma1", "sigma2", "mu")
+    assert all(table.schema.field(name).type == pa.float64() for name in numeric)
+    assert pa.types.is_string(table.schema.field("case").type) or pa.types.is_large_string(
+        table.schema.field("case").type
+    )
+    listed = table.to_pylist()
+    rows = {row["case"]: row for row in listed}
+    assert (rows["fig5"]["P1"], rows["fig5"]["P2"]) == (100.0, 105.0)
+    assert rows["text"]["Q1"] is None and "Q1: 'abc' is not a number" in rows["text"]["error"]
+    assert rows["default-mu"]["sigma1"] is None and rows["default-mu"]["mu"] is None
+    short = listed[10]  # "short,100,0,105": every field of a wrong field count is empty
+    assert short["P1"] is None and short["error"].startswith("line has 4 fields")
+    assert rows["nan-load"]["P1"] is None
+    assert rows["tension"]["sigma2"] == 0.9
+    doubled = pc.multiply(table["P2"], 2).to_pylist()  # arithmetic on the column works
+    assert doubled[0] == 210.0
+    # CSV: the same rows, every input field as written
+    text = {row["case"]: row for row in read(tmp_path / "out.csv")}
+    assert (text["fig5"]["P1"], text["fig5"]["P2"]) == ("1e2", "105.0")
+    assert text["text"]["Q1"] == "abc" and text["default-mu"]["sigma1"] == ""
+
+
 def test_an_output_that_is_the_input_is_refused_and_the_input_kept(tmp_path):
     cases = tmp_path / "cases.csv"
     cases.write_text(CASES)
-    with pytest.raises(InputError, match=r"^out: .*is also the input"):
+    with pytest.raises(InputError, match=r"^out: .*is also an input \(the cases"):
         sweep_file(cases, LAW, cases, mu=DEFAULT_MU)
     assert cases.read_text() == CASES
 
 
 def test_an_interrupted_sweep_leaves_no_results_file(tmp_path, monkeypatch):
-    import asymslip.sweep as sweep
+    from asymslip.sweep import chunk
 
     cases = tmp_path / "cases.csv"
     cases.write_text(CASES)
@@ -258,8 +294,8 @@ def test_an_interrupted_sweep_leaves_no_results_file(tmp_path, monkeypatch):
             raise KeyboardInterrupt  # Ctrl-C during the second chunk
         return original(*args, **kwargs)
 
-    original = sweep.evaluate_chunk
-    monkeypatch.setattr(sweep, "evaluate_chunk", interrupted)
+    original = chunk.evaluate_chunk  # the evaluation of every way of running a sweep
+    monkeypatch.setattr(chunk, "evaluate_chunk", interrupted)
     with pytest.raises(KeyboardInterrupt):
         sweep_file(cases, LAW, tmp_path / "out.csv", mu=DEFAULT_MU, chunk_rows=4, progress=False)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["cases.csv"]
@@ -373,3 +409,33 @@ def test_generated_kernels_give_the_numpy_values_on_chunked_dask_arrays():
         assert np.array_equal(lazy.compute(), kernel(*(inputs[name] for name in names))), (
             kernel.__name__
         )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "P1,Q1,P2,Q2\n100,0,105\n",
+        "P1,Q1,P2,Q2\n1,000,0,105,1\n",
+        'P1,Q1,P2,Q2\n"100",0,105\n1,000,0,105,1\n',
+    ],
+    ids=["short", "long", "quoted, both"],
+)
+def test_rows_of_the_wrong_field_count_give_the_same_result_with_or_without_pyarrow(
+    tmp_path, monkeypatch, text
+):
+    """With no well-formed row, the pyarrow reader ended in a traceback ("Empty CSV file")
+    while the NumPy one marked every row: now both mark them, byte for byte the same file."""
+    from asymslip.files import arrow
+
+    if not arrow.available():
+        pytest.skip("pyarrow not installed")
+    cases = tmp_path / "cases.csv"
+    cases.write_text(text)
+    with_arrow = sweep_file(cases, LAW, tmp_path / "arrow.csv", mu=DEFAULT_MU, progress=False)
+    monkeypatch.setattr(arrow, "available", lambda: False)
+    with_numpy = sweep_file(cases, LAW, tmp_path / "numpy.csv", mu=DEFAULT_MU, progress=False)
+    assert (tmp_path / "arrow.csv").read_bytes() == (tmp_path / "numpy.csv").read_bytes()
+    assert with_arrow.invalid == with_numpy.invalid and all(
+        re.match(r"line has [35] fields, the header has 4", message)
+        for _, message in with_arrow.invalid
+    )

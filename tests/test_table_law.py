@@ -229,15 +229,47 @@ def test_fit_of_any_increasing_table_is_strictly_increasing(steps_P, ratios):
     law = TableLaw(P, a)
     inside = np.linspace(P[0], P[-1], 2001)
     assert np.all(law.half_width_slope(inside) > 0)
-    # Beyond the table the fit continues as a power law; with an extreme table (a growing
-    # 500-fold over a 1 % load step) its slope can underflow to 0 far out, never below.
+    # Beyond the table the fit continues as the power law of its end slope.  With an extreme
+    # table (a growing 500-fold over a 1 % load step) that exponent runs into the thousands and
+    # the half-width leaves the double range not far out: such a load has no half-width (marked,
+    # and refused by half_width), never inf or 0.  Every other load's half-width is a positive
+    # double, increasing with the load.
     outside = np.concatenate(
         [np.linspace(0.5 * P[0], P[0], 500), np.linspace(P[-1], 2 * P[-1], 500)]
     )
-    assert np.all(law.half_width_slope(outside) >= 0)
     loads = np.sort(np.concatenate([inside, outside]))
-    assert np.all(np.diff(law.half_width(loads)) >= 0)
+    values, found = law.half_width_where_possible(loads)
+    assert found[(loads >= P[0]) & (loads <= P[-1])].all()
+    assert np.all(np.isfinite(values[found]) & (values[found] > 0))
+    assert np.all(np.diff(values[found]) >= 0)
+    assert np.isnan(values[~found]).all()
+    if not found.all():
+        with pytest.raises(InputError, match="beyond double precision"):
+            law.half_width(loads[~found])
     assert np.allclose(law.half_width(P), a, rtol=1e-13, atol=0)
+
+
+def test_a_steep_table_refuses_loads_whose_continuation_leaves_the_doubles():
+    """Hypothesis found this table: the last point's a jumps 3 -> 8 over a load step of
+    0.09 %, so the continuation is a ~ P^1067 and a(2 P_max) was inf (with a RuntimeWarning
+    from the arithmetic on it).  Now that load has no half-width: refused by the law, marked
+    by the cycle, and the slip zone names --P2; within double range the law still answers."""
+    law = TableLaw(np.cumsum([1, 6, 10, 0.015625]), np.cumsum([1, 1, 1, 5]))
+    P_max = law.load_range[1]
+    exponent = float(np.log(8 / 3) / np.log(P_max / 17))  # the end secant's exponent
+    with pytest.raises(InputError, match=r"^P: is outside the range.*beyond double precision"):
+        law.half_width(2 * P_max)
+    with pytest.raises(InputError, match="beyond double precision"):
+        law.half_width_slope(2 * P_max)
+    _, found = law.half_width_where_possible(np.array([P_max, 2 * P_max]))
+    assert found.tolist() == [True, False]
+    state = law.cycle_state(17.0, 2 * P_max - 17.0)
+    assert not bool(state.found2) and np.isnan(state.a2)
+    with pytest.raises(InputError, match="^P2: "):
+        slip_zone(law, LoadCycle(17.0, 0.0, 2 * P_max, 0.0), 0.3)
+    # a load just beyond the table: a finite power-law continuation of about that exponent
+    a = float(law.half_width(1.001 * P_max))
+    assert 8 < a < 8 * 1.001 ** (2 * exponent)
 
 
 # --- reading the table --------------------------------------------------------------------

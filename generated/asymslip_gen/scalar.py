@@ -2,12 +2,12 @@
 # derivations/contact_law_flat_rounded.py, derivations/contact_law_hertz.py,
 # derivations/contact_law_power.py, derivations/contact_law_table.py,
 # derivations/edge_drive.py, derivations/generic_law_comparison.py,
-# derivations/second_order_slip_zone.py, derivations/section2_calibrations.py,
-# derivations/section2_consistency.py, derivations/section2_dislocation_density.py,
-# derivations/section2_validity.py, derivations/section3_corrective_stick.py,
-# derivations/section3_exact_solution.py, derivations/section3_method_agreement.py,
-# derivations/section3_slip_displacement.py, derivations/section3_tractions.py,
-# derivations/solver_influence.py.
+# derivations/lab_transfer.py, derivations/second_order_slip_zone.py,
+# derivations/section2_calibrations.py, derivations/section2_consistency.py,
+# derivations/section2_dislocation_density.py, derivations/section2_validity.py,
+# derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
+# derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
+# derivations/section3_tractions.py, derivations/solver_influence.py.
 # Do not edit: change the derivation and run `make generate`.
 """The generated formulas for one value at a time, on Python floats with ``math``.
 
@@ -68,6 +68,13 @@ __all__ = [
     "hertz_normal_edge_multiplier",
     "hertz_normal_edge_multiplier_slope",
     "hertz_half_width_growth",
+    "peak_shear_change",
+    "hertz_matched_half_width",
+    "hertz_matched_radius",
+    "matched_tension_slope",
+    "matched_shear_slope",
+    "flat_rounded_matched_radius",
+    "flat_rounded_multiplier_ratio",
     "hertz_slip_zone_width_first_order",
     "corrective_slip_discrepancy_third_order",
     "corrective_stick_discrepancy_second_order",
@@ -87,6 +94,7 @@ __all__ = [
     "slip_zone_width_second_coefficient",
     "paper_stick_boundary_error",
     "slip_zone_width_second_order_from_multiplier",
+    "slip_zone_width_second_order_dimensionless",
     "paper_stick_boundary_error_from_multiplier",
     "slip_on_loading",
     "gap_opening_influence",
@@ -102,6 +110,8 @@ __all__ = [
     "multiplier_growth_measure",
     "slip_zone_growth_measure",
     "stick_ratio_first_order",
+    "stick_ratio_first_order_from_multipliers",
+    "slip_zone_growth_measure_from_multipliers",
     "slip_zone_width_first_order",
 ]
 
@@ -1575,6 +1585,217 @@ def hertz_half_width_growth(P1: float, dP: float, R: float, E_star: float) -> fl
     return 4 * R * dP / (math.pi * E_star * (math.sqrt(P1) * tmp0 + tmp0 * math.sqrt(P1 + dP)))
 
 
+def peak_shear_change(mu: float, L_I1: float, L_I2: float, w: float, da: float) -> float:
+    """Largest |q2 - q1| over the slip zone: its value at the stick boundary.
+
+    mu (L_I1 sqrt(w) + L_I2 sqrt(w + da)), w = a1 - b: the slip conditions (8) and (11) at x =
+    b, equal to (49) there when b is (17)'s.  For backward slip q2 - q1 is its negative.  One
+    value at a time, as ``asymslip_gen.lab_transfer.peak_shear_change``.
+
+    Implements Eqs. (8), (11), (49) of the paper; derived in ``derivations/lab_transfer.py``.
+
+    Parameters
+    ----------
+    mu : float
+        Coefficient of friction, mu > 0.
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_I2 : float
+        Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    w : float
+        Slip-zone width a1 - b >= 0 of the edge [length].
+    da : float
+        Advance of the edge a2 - a1 > 0 over the cycle [length].
+
+    Returns
+    -------
+    float
+        Peak shear change [force/length^2].
+    """
+    return mu * (L_I1 * math.sqrt(w) + L_I2 * math.sqrt(da + w))
+
+
+def hertz_matched_half_width(L_I1: float, L_I2: float, da: float) -> float:
+    """Half-width a1 of the one cylinder whose edge has L_I1, L_I2 and a2 - a1 = da.
+
+    da L_I1^2/(L_I2^2 - L_I1^2) (LT3 of derivations/lab_transfer.py); needs L_I2 > L_I1, since a
+    cylinder's L_I rises with the load.  One value at a time, as
+    ``asymslip_gen.lab_transfer.hertz_matched_half_width``.
+
+    Implements Eqs. (29), (31) of the paper; derived in ``derivations/lab_transfer.py``.
+
+    Parameters
+    ----------
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_I2 : float
+        Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    da : float
+        Advance of the edge a2 - a1 > 0 over the cycle [length].
+
+    Returns
+    -------
+    float
+        a1 [length].
+    """
+    return -(L_I1**2) * da / ((L_I1 - L_I2) * (L_I1 + L_I2))
+
+
+def hertz_matched_radius(E_star: float, L_I1: float, a1: float) -> float:
+    """Radius R of the cylinder whose L_I at half-width a1 is L_I1.
+
+    E* sqrt(a1/2)/L_I1, from (31) (LT3).  One value at a time, as
+    ``asymslip_gen.lab_transfer.hertz_matched_radius``.
+
+    Implements Eq. (31) of the paper; derived in ``derivations/lab_transfer.py``.
+
+    Parameters
+    ----------
+    E_star : float
+        Plane-strain contact modulus E* of the rig > 0 [force/length^2].
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    a1 : float
+        Contact half-width of the rig at load state 1 [length].
+
+    Returns
+    -------
+    float
+        R [length].
+    """
+    return (1 / 2) * math.sqrt(2) * E_star * math.sqrt(a1) / L_I1
+
+
+def matched_tension_slope(da: float, L_I1: float, L_I2: float, L_II1: float, L_II2: float) -> float:
+    """Slope eta = dsigma/dP of the rig's path that gives its edge L_II1 and L_II2.
+
+    4 (L_II2/L_I2 - L_II1/L_I1)/(pi da) (LT4), with the rig's own L_I1, L_I2 and a2 - a1 = da.
+    One value at a time, as ``asymslip_gen.lab_transfer.matched_tension_slope``.
+
+    Implements Eqs. (18), (21) of the paper; derived in ``derivations/lab_transfer.py``.
+
+    Parameters
+    ----------
+    da : float
+        Growth of the contact half-width a2 - a1 > 0, passed in directly so that callers who
+        know it accurately keep every digit [length].
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_I2 : float
+        Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    L_II1 : float
+        Shear edge multiplier L_II at load state 1 (5), either sign [force/length^(5/2)].
+    L_II2 : float
+        Shear edge multiplier L_II at load state 2 (5), either sign [force/length^(5/2)].
+
+    Returns
+    -------
+    float
+        eta [1/length].
+    """
+    return 4 * (L_I1 * L_II2 - L_I2 * L_II1) / (math.pi * L_I1 * L_I2 * da)
+
+
+def matched_shear_slope(
+    a1: float, da: float, L_I1: float, L_I2: float, L_II1: float, L_II2: float
+) -> float:
+    """Slope lambda = dQ/dP of the rig's path that gives its edge L_II1 and L_II2.
+
+    L_II1/L_I1 - pi eta a1/4 with eta from matched_tension_slope (LT4), with the rig's own a1,
+    L_I1, L_I2 and a2 - a1 = da.  One value at a time, as
+    ``asymslip_gen.lab_transfer.matched_shear_slope``.
+
+    Implements Eqs. (18), (21) of the paper; derived in ``derivations/lab_transfer.py``.
+
+    Parameters
+    ----------
+    a1 : float
+        Contact half-width a(P1) at load state 1 [length].
+    da : float
+        Growth of the contact half-width a2 - a1 > 0, passed in directly so that callers who
+        know it accurately keep every digit [length].
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_I2 : float
+        Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    L_II1 : float
+        Shear edge multiplier L_II at load state 1 (5), either sign [force/length^(5/2)].
+    L_II2 : float
+        Shear edge multiplier L_II at load state 2 (5), either sign [force/length^(5/2)].
+
+    Returns
+    -------
+    float
+        lambda, dimensionless.
+    """
+    tmp0 = 1 / L_I1
+    return L_II1 * tmp0 - a1 * tmp0 * (L_I1 * L_II2 - L_I2 * L_II1) / (L_I2 * da)
+
+
+def flat_rounded_matched_radius(a: float, c: float, E_star: float, L_I: float) -> float:
+    """Corner radius R of the rounded flat whose L_I at half-width a is L_I.
+
+    E* sqrt(2a) arccos(c/a)/(pi L_I) (LT5); c = 0 is the cylinder's radius.  One value at a
+    time, as ``asymslip_gen.lab_transfer.flat_rounded_matched_radius``.
+
+    Implements Eq. (19) of the paper; derived in ``derivations/lab_transfer.py``.
+
+    Parameters
+    ----------
+    a : float
+        Contact half-width a > c [length].
+    c : float
+        Half-width c >= 0 of the flat face of the rig's pad [length].
+    E_star : float
+        Plane-strain contact modulus E* of the rig > 0 [force/length^2].
+    L_I : float
+        Normal edge multiplier L_I to reproduce at half-width a (4) [force/length^(5/2)].
+
+    Returns
+    -------
+    float
+        R [length].
+    """
+    return (
+        math.sqrt(2)
+        * E_star
+        * math.sqrt(a)
+        * math.atan2(math.sqrt(max(0, (a - c) * (a + c))), c)
+        / (math.pi * L_I)
+    )
+
+
+def flat_rounded_multiplier_ratio(a1: float, a2: float, c: float) -> float:
+    """L_I2/L_I1 of one rounded flat between half-widths a1 and a2 (> c).
+
+    sqrt(a2/a1) arccos(c/a2)/arccos(c/a1) (LT5): sqrt(a2/a1) at c = 0, rising with c without
+    bound as c -> a1.  One value at a time, as
+    ``asymslip_gen.lab_transfer.flat_rounded_multiplier_ratio``.
+
+    Implements Eq. (19) of the paper; derived in ``derivations/lab_transfer.py``.
+
+    Parameters
+    ----------
+    a1 : float
+        Contact half-width of the rig at load state 1 [length].
+    a2 : float
+        Contact half-width of the rig at load state 2, a2 > a1 [length].
+    c : float
+        Half-width c >= 0 of the flat face of the rig's pad [length].
+
+    Returns
+    -------
+    float
+        L_I2/L_I1, dimensionless.
+    """
+    tmp0 = -c
+    return (
+        math.sqrt(a2)
+        * math.atan2(math.sqrt(max(0, (a2 + c) * (a2 + tmp0))), c)
+        / (math.sqrt(a1) * math.atan2(math.sqrt(max(0, (a1 + c) * (a1 + tmp0))), c))
+    )
+
+
 def hertz_slip_zone_width_first_order(
     P1: float, dP: float, lam: float, eta: float, mu: float, R: float, E_star: float
 ) -> float:
@@ -2451,6 +2672,91 @@ def slip_zone_width_second_order_from_multiplier(
     )
 
 
+def slip_zone_width_second_order_dimensionless(
+    lam_mu: float,
+    eta_a1_mu: float,
+    growth: float,
+    multiplier: float,
+    multiplier_slope: float,
+    other_edge: float,
+) -> float:
+    """(a1 - b)/a1 to second order, in dimensionless groups that cannot overflow.
+
+    slip_zone_width_second_order_from_multiplier divided by a1, written in lam/mu, eta a1/mu,
+    a'(P1) dP/a1, L_I1 a1^(3/2)/dP and L_I'(P1) a1^(3/2) (the width is homogeneous of degree one
+    in length and zero in load, and depends on lam, eta only through lam/mu, eta/mu): the same
+    digits at ordinary values, and no overflow of dimensional terms at loads of 1e300 or mu =
+    1e-300.  One value at a time, as
+    ``asymslip_gen.second_order.slip_zone_width_second_order_dimensionless``.
+
+    Implements Eqs. (19), (22), (28) of the paper; derived in
+    ``derivations/second_order_slip_zone.py``.
+
+    Parameters
+    ----------
+    lam_mu : float
+        lambda/mu, the shear slope over friction.
+    eta_a1_mu : float
+        eta a1/mu, the tension slope over friction.
+    growth : float
+        a'(P1) dP/a1, the contact growth of (24).
+    multiplier : float
+        L_I1 a1^(3/2)/dP, the normal edge multiplier in units of a1 and dP.
+    multiplier_slope : float
+        L_I'(P1) a1^(3/2), the multiplier's slope in units of a1.
+    other_edge : float
+        +1 when the other edge of the contact slips in the same direction as this one (the same
+        sign of q2 - q1 there), -1 when it slips the opposite way.  For an other edge that does
+        not slip use +1: that branch joins the -1 branch continuously where the other edge
+        starts to slip the opposite way, but in between it is not derived (see the module
+        notes).
+
+    Returns
+    -------
+    float
+        (a1 - b)/a1, dimensionless.
+    """
+    tmp0 = 256 * multiplier
+    tmp1 = 64 * multiplier_slope
+    tmp2 = growth * multiplier
+    tmp3 = lam_mu * multiplier_slope
+    tmp4 = math.pi * eta_a1_mu
+    tmp5 = 32 * tmp4
+    tmp6 = lam_mu * tmp2
+    tmp7 = 16 * tmp2
+    tmp8 = other_edge * tmp7
+    tmp9 = lam_mu**2
+    tmp10 = 8 * tmp4 * tmp6
+    tmp11 = math.pi**2 * eta_a1_mu**2
+    tmp12 = tmp11 * tmp2
+    return (
+        (1 / 512)
+        * growth
+        * (
+            lam_mu * tmp0
+            + 64 * multiplier * tmp4
+            + 4 * multiplier_slope * tmp11
+            - multiplier_slope * tmp5
+            - other_edge * tmp10
+            + other_edge * tmp12
+            - tmp0
+            + tmp1 * tmp9
+            + tmp1
+            - tmp10
+            - 3 * tmp12
+            + 48 * tmp2
+            + tmp3 * tmp5
+            - 128 * tmp3
+            + tmp4 * tmp7
+            - 64 * tmp6
+            + tmp7 * tmp9
+            + tmp8 * tmp9
+            - tmp8
+        )
+        / multiplier
+    )
+
+
 def paper_stick_boundary_error_from_multiplier(
     mu: float,
     lam: float,
@@ -3081,6 +3387,76 @@ def stick_ratio_first_order(
         - 1 / 2 * lam * tmp0 * tmp1 * tmp2
         + 1
     )
+
+
+def stick_ratio_first_order_from_multipliers(
+    mu: float, L_I1: float, L_II1: float, a1: float, dP: float, da_dP: float
+) -> float:
+    """First-order b / a1 of (17) in an edge's own multipliers L_I1, L_II1.
+
+    The series of (17) in dP along the edge's a(P), L_I(P) and L_II(P); their slopes other than
+    a'(P1) drop out.  Equals (28) where L_II follows (21); for an edge of an asymmetric contact,
+    whose L_II does not (derivations/asymmetric_edge_multipliers.py).  One value at a time, as
+    ``asymslip_gen.validity.stick_ratio_first_order_from_multipliers``.
+
+    Implements Eqs. (17), (28) of the paper; derived in ``derivations/section2_validity.py``.
+
+    Parameters
+    ----------
+    mu : float
+        Coefficient of friction, mu > 0.
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_II1 : float
+        Shear edge multiplier L_II at load state 1 (5), either sign [force/length^(5/2)].
+    a1 : float
+        Contact half-width a(P1) at load state 1 [length].
+    dP : float
+        Normal-load change P2 - P1 > 0 [force/length].
+    da_dP : float
+        Slope a'(P) of the contact law [length^2/force].
+
+    Returns
+    -------
+    float
+        b / a1, dimensionless.
+    """
+    tmp0 = (1 / 2) * dP * da_dP / a1
+    return tmp0 + 1 - L_II1 * tmp0 / (L_I1 * mu)
+
+
+def slip_zone_growth_measure_from_multipliers(
+    mu: float, L_I1: float, L_II1: float, a1: float, dP: float, da_dP: float
+) -> float:
+    """Measure (27) in an edge's own multipliers: twice the first-order |b - a1| / a1.
+
+    dP a'(P) / a1 |1 - L_II1/(mu L_I1)|, from the first-order (17) in the edge's own
+    multipliers; equals slip_zone_growth_measure where L_II follows (21).  One value at a time,
+    as ``asymslip_gen.validity.slip_zone_growth_measure_from_multipliers``.
+
+    Implements Eqs. (17), (27) of the paper; derived in ``derivations/section2_validity.py``.
+
+    Parameters
+    ----------
+    mu : float
+        Coefficient of friction, mu > 0.
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_II1 : float
+        Shear edge multiplier L_II at load state 1 (5), either sign [force/length^(5/2)].
+    a1 : float
+        Contact half-width a(P1) at load state 1 [length].
+    dP : float
+        Normal-load change P2 - P1 > 0 [force/length].
+    da_dP : float
+        Slope a'(P) of the contact law [length^2/force].
+
+    Returns
+    -------
+    float
+        Dimensionless measure.
+    """
+    return dP * da_dP * abs(L_I1 * mu - L_II1) / (L_I1 * a1 * mu)
 
 
 def slip_zone_width_first_order(

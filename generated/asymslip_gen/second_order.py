@@ -20,6 +20,7 @@ __all__ = [
     "slip_zone_width_second_coefficient",
     "paper_stick_boundary_error",
     "slip_zone_width_second_order_from_multiplier",
+    "slip_zone_width_second_order_dimensionless",
     "paper_stick_boundary_error_from_multiplier",
 ]
 
@@ -442,6 +443,90 @@ def slip_zone_width_second_order_from_multiplier(
             - 3 * tmp21
         )
         / (L_I1 * a1 * tmp0)
+    )
+
+
+def slip_zone_width_second_order_dimensionless(
+    lam_mu: ArrayLike,
+    eta_a1_mu: ArrayLike,
+    growth: ArrayLike,
+    multiplier: ArrayLike,
+    multiplier_slope: ArrayLike,
+    other_edge: ArrayLike,
+) -> FloatArray:
+    """(a1 - b)/a1 to second order, in dimensionless groups that cannot overflow.
+
+    slip_zone_width_second_order_from_multiplier divided by a1, written in lam/mu, eta a1/mu,
+    a'(P1) dP/a1, L_I1 a1^(3/2)/dP and L_I'(P1) a1^(3/2) (the width is homogeneous of degree one
+    in length and zero in load, and depends on lam, eta only through lam/mu, eta/mu): the same
+    digits at ordinary values, and no overflow of dimensional terms at loads of 1e300 or mu =
+    1e-300.
+
+    Implements Eqs. (19), (22), (28) of the paper; derived in
+    ``derivations/second_order_slip_zone.py``.
+
+    Parameters
+    ----------
+    lam_mu : array_like
+        lambda/mu, the shear slope over friction.
+    eta_a1_mu : array_like
+        eta a1/mu, the tension slope over friction.
+    growth : array_like
+        a'(P1) dP/a1, the contact growth of (24).
+    multiplier : array_like
+        L_I1 a1^(3/2)/dP, the normal edge multiplier in units of a1 and dP.
+    multiplier_slope : array_like
+        L_I'(P1) a1^(3/2), the multiplier's slope in units of a1.
+    other_edge : array_like
+        +1 when the other edge of the contact slips in the same direction as this one (the same
+        sign of q2 - q1 there), -1 when it slips the opposite way.  For an other edge that does
+        not slip use +1: that branch joins the -1 branch continuously where the other edge
+        starts to slip the opposite way, but in between it is not derived (see the module
+        notes).
+
+    Returns
+    -------
+    ndarray or float64
+        (a1 - b)/a1, dimensionless.
+    """
+    tmp0 = 256 * multiplier
+    tmp1 = 64 * multiplier_slope
+    tmp2 = growth * multiplier
+    tmp3 = lam_mu * multiplier_slope
+    tmp4 = numpy.pi * eta_a1_mu
+    tmp5 = 32 * tmp4
+    tmp6 = lam_mu * tmp2
+    tmp7 = 16 * tmp2
+    tmp8 = other_edge * tmp7
+    tmp9 = lam_mu**2
+    tmp10 = 8 * tmp4 * tmp6
+    tmp11 = numpy.pi**2 * eta_a1_mu**2
+    tmp12 = tmp11 * tmp2
+    return (
+        (1 / 512)
+        * growth
+        * (
+            lam_mu * tmp0
+            + 64 * multiplier * tmp4
+            + 4 * multiplier_slope * tmp11
+            - multiplier_slope * tmp5
+            - other_edge * tmp10
+            + other_edge * tmp12
+            - tmp0
+            + tmp1 * tmp9
+            + tmp1
+            - tmp10
+            - 3 * tmp12
+            + 48 * tmp2
+            + tmp3 * tmp5
+            - 128 * tmp3
+            + tmp4 * tmp7
+            - 64 * tmp6
+            + tmp7 * tmp9
+            + tmp8 * tmp9
+            - tmp8
+        )
+        / multiplier
     )
 
 

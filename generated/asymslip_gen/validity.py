@@ -19,6 +19,8 @@ __all__ = [
     "multiplier_growth_measure",
     "slip_zone_growth_measure",
     "stick_ratio_first_order",
+    "stick_ratio_first_order_from_multipliers",
+    "slip_zone_growth_measure_from_multipliers",
     "slip_zone_width_first_order",
 ]
 
@@ -192,6 +194,74 @@ def stick_ratio_first_order(
         - 1 / 2 * lam * tmp0 * tmp1 * tmp2
         + 1
     )
+
+
+def stick_ratio_first_order_from_multipliers(
+    mu: ArrayLike, L_I1: ArrayLike, L_II1: ArrayLike, a1: ArrayLike, dP: ArrayLike, da_dP: ArrayLike
+) -> FloatArray:
+    """First-order b / a1 of (17) in an edge's own multipliers L_I1, L_II1.
+
+    The series of (17) in dP along the edge's a(P), L_I(P) and L_II(P); their slopes other than
+    a'(P1) drop out.  Equals (28) where L_II follows (21); for an edge of an asymmetric contact,
+    whose L_II does not (derivations/asymmetric_edge_multipliers.py).
+
+    Implements Eqs. (17), (28) of the paper; derived in ``derivations/section2_validity.py``.
+
+    Parameters
+    ----------
+    mu : array_like
+        Coefficient of friction, mu > 0.
+    L_I1 : array_like
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_II1 : array_like
+        Shear edge multiplier L_II at load state 1 (5), either sign [force/length^(5/2)].
+    a1 : array_like
+        Contact half-width a(P1) at load state 1 [length].
+    dP : array_like
+        Normal-load change P2 - P1 > 0 [force/length].
+    da_dP : array_like
+        Slope a'(P) of the contact law [length^2/force].
+
+    Returns
+    -------
+    ndarray or float64
+        b / a1, dimensionless.
+    """
+    tmp0 = (1 / 2) * dP * da_dP / a1
+    return tmp0 + 1 - L_II1 * tmp0 / (L_I1 * mu)
+
+
+def slip_zone_growth_measure_from_multipliers(
+    mu: ArrayLike, L_I1: ArrayLike, L_II1: ArrayLike, a1: ArrayLike, dP: ArrayLike, da_dP: ArrayLike
+) -> FloatArray:
+    """Measure (27) in an edge's own multipliers: twice the first-order |b - a1| / a1.
+
+    dP a'(P) / a1 |1 - L_II1/(mu L_I1)|, from the first-order (17) in the edge's own
+    multipliers; equals slip_zone_growth_measure where L_II follows (21).
+
+    Implements Eqs. (17), (27) of the paper; derived in ``derivations/section2_validity.py``.
+
+    Parameters
+    ----------
+    mu : array_like
+        Coefficient of friction, mu > 0.
+    L_I1 : array_like
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_II1 : array_like
+        Shear edge multiplier L_II at load state 1 (5), either sign [force/length^(5/2)].
+    a1 : array_like
+        Contact half-width a(P1) at load state 1 [length].
+    dP : array_like
+        Normal-load change P2 - P1 > 0 [force/length].
+    da_dP : array_like
+        Slope a'(P) of the contact law [length^2/force].
+
+    Returns
+    -------
+    ndarray or float64
+        Dimensionless measure.
+    """
+    return dP * da_dP * abs(L_I1 * mu - L_II1) / (L_I1 * a1 * mu)
 
 
 def slip_zone_width_first_order(

@@ -3,12 +3,12 @@
  * derivations/contact_law_flat_rounded.py, derivations/contact_law_hertz.py,
  * derivations/contact_law_power.py, derivations/contact_law_table.py,
  * derivations/edge_drive.py, derivations/generic_law_comparison.py,
- * derivations/second_order_slip_zone.py, derivations/section2_calibrations.py,
- * derivations/section2_consistency.py, derivations/section2_dislocation_density.py,
- * derivations/section2_validity.py, derivations/section3_corrective_stick.py,
- * derivations/section3_exact_solution.py, derivations/section3_method_agreement.py,
- * derivations/section3_slip_displacement.py, derivations/section3_tractions.py,
- * derivations/solver_influence.py.
+ * derivations/lab_transfer.py, derivations/second_order_slip_zone.py,
+ * derivations/section2_calibrations.py, derivations/section2_consistency.py,
+ * derivations/section2_dislocation_density.py, derivations/section2_validity.py,
+ * derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
+ * derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
+ * derivations/section3_tractions.py, derivations/solver_influence.py.
  * Do not edit: change the derivation and run `make generate`.
  */
 
@@ -460,6 +460,61 @@ double asymslip_hertz_half_width_growth(double P1, double dP, double R, double E
     return 4*R*dP/(asymslip_pi*E_star*(sqrt(P1)*tmp0 + tmp0*sqrt(P1 + dP)));
 }
 
+/* Largest |q2 - q1| over the slip zone: its value at the stick boundary. See asymslip_gen.h. */
+double asymslip_peak_shear_change(double mu, double L_I1, double L_I2, double w, double da)
+{
+    return mu*(L_I1*sqrt(w) + L_I2*sqrt(da + w));
+}
+
+/* Half-width a1 of the one cylinder whose edge has L_I1, L_I2 and a2 - a1 = da. See asymslip_gen.h. */
+double asymslip_hertz_matched_half_width(double L_I1, double L_I2, double da)
+{
+    return -pow(L_I1, 2)*da/((L_I1 - L_I2)*(L_I1 + L_I2));
+}
+
+/* Radius R of the cylinder whose L_I at half-width a1 is L_I1. See asymslip_gen.h. */
+double asymslip_hertz_matched_radius(double E_star, double L_I1, double a1)
+{
+    return (1.0/2.0)*sqrt(2)*E_star*sqrt(a1)/L_I1;
+}
+
+/* Slope eta = dsigma/dP of the rig's path that gives its edge L_II1 and L_II2. See asymslip_gen.h. */
+double asymslip_matched_tension_slope(
+    double da,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2)
+{
+    return 4*(L_I1*L_II2 - L_I2*L_II1)/(asymslip_pi*L_I1*L_I2*da);
+}
+
+/* Slope lambda = dQ/dP of the rig's path that gives its edge L_II1 and L_II2. See asymslip_gen.h. */
+double asymslip_matched_shear_slope(
+    double a1,
+    double da,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2)
+{
+    const double tmp0 = 1.0/L_I1;
+    return L_II1*tmp0 - a1*tmp0*(L_I1*L_II2 - L_I2*L_II1)/(L_I2*da);
+}
+
+/* Corner radius R of the rounded flat whose L_I at half-width a is L_I. See asymslip_gen.h. */
+double asymslip_flat_rounded_matched_radius(double a, double c, double E_star, double L_I)
+{
+    return sqrt(2)*E_star*sqrt(a)*atan2(sqrt(fmax(0, (a - c)*(a + c))), c)/(asymslip_pi*L_I);
+}
+
+/* L_I2/L_I1 of one rounded flat between half-widths a1 and a2 (> c). See asymslip_gen.h. */
+double asymslip_flat_rounded_multiplier_ratio(double a1, double a2, double c)
+{
+    const double tmp0 = -c;
+    return sqrt(a2)*atan2(sqrt(fmax(0, (a2 + c)*(a2 + tmp0))), c)/(sqrt(a1)*atan2(sqrt(fmax(0, (a1 + c)*(a1 + tmp0))), c));
+}
+
 /* First-order Hertz slip-zone width a1 - b, common to the three methods. See asymslip_gen.h. */
 double asymslip_hertz_slip_zone_width_first_order(
     double P1,
@@ -736,6 +791,31 @@ double asymslip_slip_zone_width_second_order_from_multiplier(
     return (1.0/512.0)*tmp4*(L_I1*tmp1*tmp2 + 64*L_I1*tmp16 + 4*pow(a1, 3)*tmp20*tmp6 + lam*tmp15*tmp19 + mu*tmp17*tmp9 + other_edge*tmp10 - 16*other_edge*tmp11 - other_edge*tmp18 + other_edge*tmp21 + tmp0*tmp12 - tmp1*tmp3 + tmp10 + 48*tmp11 + tmp12*tmp8 - tmp16*tmp19 - tmp18 - 64*tmp2*tmp5 - 128*tmp2*tmp7 - 3*tmp21)/(L_I1*a1*tmp0);
 }
 
+/* (a1 - b)/a1 to second order, in dimensionless groups that cannot overflow. See asymslip_gen.h. */
+double asymslip_slip_zone_width_second_order_dimensionless(
+    double lam_mu,
+    double eta_a1_mu,
+    double growth,
+    double multiplier,
+    double multiplier_slope,
+    double other_edge)
+{
+    const double tmp0 = 256*multiplier;
+    const double tmp1 = 64*multiplier_slope;
+    const double tmp2 = growth*multiplier;
+    const double tmp3 = lam_mu*multiplier_slope;
+    const double tmp4 = asymslip_pi*eta_a1_mu;
+    const double tmp5 = 32*tmp4;
+    const double tmp6 = lam_mu*tmp2;
+    const double tmp7 = 16*tmp2;
+    const double tmp8 = other_edge*tmp7;
+    const double tmp9 = pow(lam_mu, 2);
+    const double tmp10 = 8*tmp4*tmp6;
+    const double tmp11 = pow(asymslip_pi, 2)*pow(eta_a1_mu, 2);
+    const double tmp12 = tmp11*tmp2;
+    return (1.0/512.0)*growth*(lam_mu*tmp0 + 64*multiplier*tmp4 + 4*multiplier_slope*tmp11 - multiplier_slope*tmp5 - other_edge*tmp10 + other_edge*tmp12 - tmp0 + tmp1*tmp9 + tmp1 - tmp10 - 3*tmp12 + 48*tmp2 + tmp3*tmp5 - 128*tmp3 + tmp4*tmp7 - 64*tmp6 + tmp7*tmp9 + tmp8*tmp9 - tmp8)/multiplier;
+}
+
 /* E of b(22) - b = E dP^2 + O(dP^3), from L_I and L_I'(P1). See asymslip_gen.h. */
 double asymslip_paper_stick_boundary_error_from_multiplier(
     double mu,
@@ -919,6 +999,31 @@ double asymslip_stick_ratio_first_order(
     const double tmp1 = 1.0/mu;
     const double tmp2 = dP*da_dP;
     return (1.0/2.0)*dP*da_dP*tmp0 - 1.0/8.0*asymslip_pi*eta*tmp1*tmp2 - 1.0/2.0*lam*tmp0*tmp1*tmp2 + 1;
+}
+
+/* First-order b / a1 of (17) in an edge's own multipliers L_I1, L_II1. See asymslip_gen.h. */
+double asymslip_stick_ratio_first_order_from_multipliers(
+    double mu,
+    double L_I1,
+    double L_II1,
+    double a1,
+    double dP,
+    double da_dP)
+{
+    const double tmp0 = (1.0/2.0)*dP*da_dP/a1;
+    return tmp0 + 1 - L_II1*tmp0/(L_I1*mu);
+}
+
+/* Measure (27) in an edge's own multipliers: twice the first-order |b - a1| / a1. See asymslip_gen.h. */
+double asymslip_slip_zone_growth_measure_from_multipliers(
+    double mu,
+    double L_I1,
+    double L_II1,
+    double a1,
+    double dP,
+    double da_dP)
+{
+    return dP*da_dP*fabs(L_I1*mu - L_II1)/(L_I1*a1*mu);
 }
 
 /* First-order slip-zone width a1 - b, without forming 1 - b/a1. See asymslip_gen.h. */

@@ -3,12 +3,12 @@
  * derivations/contact_law_flat_rounded.py, derivations/contact_law_hertz.py,
  * derivations/contact_law_power.py, derivations/contact_law_table.py,
  * derivations/edge_drive.py, derivations/generic_law_comparison.py,
- * derivations/second_order_slip_zone.py, derivations/section2_calibrations.py,
- * derivations/section2_consistency.py, derivations/section2_dislocation_density.py,
- * derivations/section2_validity.py, derivations/section3_corrective_stick.py,
- * derivations/section3_exact_solution.py, derivations/section3_method_agreement.py,
- * derivations/section3_slip_displacement.py, derivations/section3_tractions.py,
- * derivations/solver_influence.py.
+ * derivations/lab_transfer.py, derivations/second_order_slip_zone.py,
+ * derivations/section2_calibrations.py, derivations/section2_consistency.py,
+ * derivations/section2_dislocation_density.py, derivations/section2_validity.py,
+ * derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
+ * derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
+ * derivations/section3_tractions.py, derivations/solver_influence.py.
  * Do not edit: change the derivation and run `make generate`.
  */
 
@@ -1130,6 +1130,162 @@ double asymslip_hertz_normal_edge_multiplier_slope(double P, double R, double E_
 double asymslip_hertz_half_width_growth(double P1, double dP, double R, double E_star);
 
 /* --------------------------------------------------------------------------------------------
+ * lab_transfer: Carrying a laboratory test over to a prototype (beyond the paper): the
+ * edge state that two contacts must share, the rig that reproduces it and the peak shear
+ * change.
+ */
+
+/**
+ * Largest |q2 - q1| over the slip zone: its value at the stick boundary.
+ *
+ * mu (L_I1 sqrt(w) + L_I2 sqrt(w + da)), w = a1 - b: the slip conditions (8) and (11) at x
+ * = b, equal to (49) there when b is (17)'s. For backward slip q2 - q1 is its negative.
+ *
+ * Implements Eqs. (8), (11), (49) of the paper; derived in derivations/lab_transfer.py.
+ *
+ * Arguments:
+ *   mu    Coefficient of friction, mu > 0.
+ *   L_I1  Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   L_I2  Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+ *   w     Slip-zone width a1 - b >= 0 of the edge [length].
+ *   da    Advance of the edge a2 - a1 > 0 over the cycle [length].
+ *
+ * Returns:
+ *   Peak shear change [force/length^2].
+ */
+double asymslip_peak_shear_change(double mu, double L_I1, double L_I2, double w, double da);
+
+/**
+ * Half-width a1 of the one cylinder whose edge has L_I1, L_I2 and a2 - a1 = da.
+ *
+ * da L_I1^2/(L_I2^2 - L_I1^2) (LT3 of derivations/lab_transfer.py); needs L_I2 > L_I1,
+ * since a cylinder's L_I rises with the load.
+ *
+ * Implements Eqs. (29), (31) of the paper; derived in derivations/lab_transfer.py.
+ *
+ * Arguments:
+ *   L_I1  Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   L_I2  Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+ *   da    Advance of the edge a2 - a1 > 0 over the cycle [length].
+ *
+ * Returns:
+ *   a1 [length].
+ */
+double asymslip_hertz_matched_half_width(double L_I1, double L_I2, double da);
+
+/**
+ * Radius R of the cylinder whose L_I at half-width a1 is L_I1.
+ *
+ * E* sqrt(a1/2)/L_I1, from (31) (LT3).
+ *
+ * Implements Eq. (31) of the paper; derived in derivations/lab_transfer.py.
+ *
+ * Arguments:
+ *   E_star  Plane-strain contact modulus E* of the rig > 0 [force/length^2].
+ *   L_I1    Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   a1      Contact half-width of the rig at load state 1 [length].
+ *
+ * Returns:
+ *   R [length].
+ */
+double asymslip_hertz_matched_radius(double E_star, double L_I1, double a1);
+
+/**
+ * Slope eta = dsigma/dP of the rig's path that gives its edge L_II1 and L_II2.
+ *
+ * 4 (L_II2/L_I2 - L_II1/L_I1)/(pi da) (LT4), with the rig's own L_I1, L_I2 and a2 - a1 =
+ * da.
+ *
+ * Implements Eqs. (18), (21) of the paper; derived in derivations/lab_transfer.py.
+ *
+ * Arguments:
+ *   da     Growth of the contact half-width a2 - a1 > 0, passed in directly so that
+ *          callers who know it accurately keep every digit [length].
+ *   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   L_I2   Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+ *   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+ *          [force/length^(5/2)].
+ *   L_II2  Shear edge multiplier L_II at load state 2 (5), either sign
+ *          [force/length^(5/2)].
+ *
+ * Returns:
+ *   eta [1/length].
+ */
+double asymslip_matched_tension_slope(
+    double da,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2);
+
+/**
+ * Slope lambda = dQ/dP of the rig's path that gives its edge L_II1 and L_II2.
+ *
+ * L_II1/L_I1 - pi eta a1/4 with eta from matched_tension_slope (LT4), with the rig's own
+ * a1, L_I1, L_I2 and a2 - a1 = da.
+ *
+ * Implements Eqs. (18), (21) of the paper; derived in derivations/lab_transfer.py.
+ *
+ * Arguments:
+ *   a1     Contact half-width a(P1) at load state 1 [length].
+ *   da     Growth of the contact half-width a2 - a1 > 0, passed in directly so that
+ *          callers who know it accurately keep every digit [length].
+ *   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   L_I2   Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+ *   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+ *          [force/length^(5/2)].
+ *   L_II2  Shear edge multiplier L_II at load state 2 (5), either sign
+ *          [force/length^(5/2)].
+ *
+ * Returns:
+ *   lambda, dimensionless.
+ */
+double asymslip_matched_shear_slope(
+    double a1,
+    double da,
+    double L_I1,
+    double L_I2,
+    double L_II1,
+    double L_II2);
+
+/**
+ * Corner radius R of the rounded flat whose L_I at half-width a is L_I.
+ *
+ * E* sqrt(2a) arccos(c/a)/(pi L_I) (LT5); c = 0 is the cylinder's radius.
+ *
+ * Implements Eq. (19) of the paper; derived in derivations/lab_transfer.py.
+ *
+ * Arguments:
+ *   a       Contact half-width a > c [length].
+ *   c       Half-width c >= 0 of the flat face of the rig's pad [length].
+ *   E_star  Plane-strain contact modulus E* of the rig > 0 [force/length^2].
+ *   L_I     Normal edge multiplier L_I to reproduce at half-width a (4)
+ *           [force/length^(5/2)].
+ *
+ * Returns:
+ *   R [length].
+ */
+double asymslip_flat_rounded_matched_radius(double a, double c, double E_star, double L_I);
+
+/**
+ * L_I2/L_I1 of one rounded flat between half-widths a1 and a2 (> c).
+ *
+ * sqrt(a2/a1) arccos(c/a2)/arccos(c/a1) (LT5): sqrt(a2/a1) at c = 0, rising with c without
+ * bound as c -> a1.
+ *
+ * Implements Eq. (19) of the paper; derived in derivations/lab_transfer.py.
+ *
+ * Arguments:
+ *   a1  Contact half-width of the rig at load state 1 [length].
+ *   a2  Contact half-width of the rig at load state 2, a2 > a1 [length].
+ *   c   Half-width c >= 0 of the flat face of the rig's pad [length].
+ *
+ * Returns:
+ *   L_I2/L_I1, dimensionless.
+ */
+double asymslip_flat_rounded_multiplier_ratio(double a1, double a2, double c);
+
+/* --------------------------------------------------------------------------------------------
  * method_agreement: Section 3.3 of the paper and beyond: the first-order Hertz slip zone
  * common to the three methods, and the higher-order discrepancies of the corrective-slip
  * (22) and corrective-stick (41) predictions from the exact solution (eta = 0).
@@ -1645,6 +1801,42 @@ double asymslip_slip_zone_width_second_order_from_multiplier(
     double other_edge);
 
 /**
+ * (a1 - b)/a1 to second order, in dimensionless groups that cannot overflow.
+ *
+ * slip_zone_width_second_order_from_multiplier divided by a1, written in lam/mu, eta
+ * a1/mu, a'(P1) dP/a1, L_I1 a1^(3/2)/dP and L_I'(P1) a1^(3/2) (the width is homogeneous of
+ * degree one in length and zero in load, and depends on lam, eta only through lam/mu,
+ * eta/mu): the same digits at ordinary values, and no overflow of dimensional terms at
+ * loads of 1e300 or mu = 1e-300.
+ *
+ * Implements Eqs. (19), (22), (28) of the paper; derived in
+ * derivations/second_order_slip_zone.py.
+ *
+ * Arguments:
+ *   lam_mu            lambda/mu, the shear slope over friction.
+ *   eta_a1_mu         eta a1/mu, the tension slope over friction.
+ *   growth            a'(P1) dP/a1, the contact growth of (24).
+ *   multiplier        L_I1 a1^(3/2)/dP, the normal edge multiplier in units of a1 and dP.
+ *   multiplier_slope  L_I'(P1) a1^(3/2), the multiplier's slope in units of a1.
+ *   other_edge        +1 when the other edge of the contact slips in the same direction as
+ *                     this one (the same sign of q2 - q1 there), -1 when it slips the
+ *                     opposite way. For an other edge that does not slip use +1: that
+ *                     branch joins the -1 branch continuously where the other edge starts
+ *                     to slip the opposite way, but in between it is not derived (see the
+ *                     module notes).
+ *
+ * Returns:
+ *   (a1 - b)/a1, dimensionless.
+ */
+double asymslip_slip_zone_width_second_order_dimensionless(
+    double lam_mu,
+    double eta_a1_mu,
+    double growth,
+    double multiplier,
+    double multiplier_slope,
+    double other_edge);
+
+/**
  * E of b(22) - b = E dP^2 + O(dP^3), from L_I and L_I'(P1).
  *
  * paper_stick_boundary_error with a'' traded for L_I'(P1) through (19).
@@ -2069,6 +2261,63 @@ double asymslip_stick_ratio_first_order(
     double mu,
     double lam,
     double eta,
+    double a1,
+    double dP,
+    double da_dP);
+
+/**
+ * First-order b / a1 of (17) in an edge's own multipliers L_I1, L_II1.
+ *
+ * The series of (17) in dP along the edge's a(P), L_I(P) and L_II(P); their slopes other
+ * than a'(P1) drop out. Equals (28) where L_II follows (21); for an edge of an asymmetric
+ * contact, whose L_II does not (derivations/asymmetric_edge_multipliers.py).
+ *
+ * Implements Eqs. (17), (28) of the paper; derived in derivations/section2_validity.py.
+ *
+ * Arguments:
+ *   mu     Coefficient of friction, mu > 0.
+ *   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+ *          [force/length^(5/2)].
+ *   a1     Contact half-width a(P1) at load state 1 [length].
+ *   dP     Normal-load change P2 - P1 > 0 [force/length].
+ *   da_dP  Slope a'(P) of the contact law [length^2/force].
+ *
+ * Returns:
+ *   b / a1, dimensionless.
+ */
+double asymslip_stick_ratio_first_order_from_multipliers(
+    double mu,
+    double L_I1,
+    double L_II1,
+    double a1,
+    double dP,
+    double da_dP);
+
+/**
+ * Measure (27) in an edge's own multipliers: twice the first-order |b - a1| / a1.
+ *
+ * dP a'(P) / a1 |1 - L_II1/(mu L_I1)|, from the first-order (17) in the edge's own
+ * multipliers; equals slip_zone_growth_measure where L_II follows (21).
+ *
+ * Implements Eqs. (17), (27) of the paper; derived in derivations/section2_validity.py.
+ *
+ * Arguments:
+ *   mu     Coefficient of friction, mu > 0.
+ *   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+ *   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+ *          [force/length^(5/2)].
+ *   a1     Contact half-width a(P1) at load state 1 [length].
+ *   dP     Normal-load change P2 - P1 > 0 [force/length].
+ *   da_dP  Slope a'(P) of the contact law [length^2/force].
+ *
+ * Returns:
+ *   Dimensionless measure.
+ */
+double asymslip_slip_zone_growth_measure_from_multipliers(
+    double mu,
+    double L_I1,
+    double L_II1,
     double a1,
     double dP,
     double da_dP);

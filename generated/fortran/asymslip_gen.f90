@@ -2,12 +2,12 @@
 ! derivations/contact_law_flat_rounded.py, derivations/contact_law_hertz.py,
 ! derivations/contact_law_power.py, derivations/contact_law_table.py,
 ! derivations/edge_drive.py, derivations/generic_law_comparison.py,
-! derivations/second_order_slip_zone.py, derivations/section2_calibrations.py,
-! derivations/section2_consistency.py, derivations/section2_dislocation_density.py,
-! derivations/section2_validity.py, derivations/section3_corrective_stick.py,
-! derivations/section3_exact_solution.py, derivations/section3_method_agreement.py,
-! derivations/section3_slip_displacement.py, derivations/section3_tractions.py,
-! derivations/solver_influence.py.
+! derivations/lab_transfer.py, derivations/second_order_slip_zone.py,
+! derivations/section2_calibrations.py, derivations/section2_consistency.py,
+! derivations/section2_dislocation_density.py, derivations/section2_validity.py,
+! derivations/section3_corrective_stick.py, derivations/section3_exact_solution.py,
+! derivations/section3_method_agreement.py, derivations/section3_slip_displacement.py,
+! derivations/section3_tractions.py, derivations/solver_influence.py.
 ! Do not edit: change the derivation and run `make generate`.
 
 ! The formulas of the paper (Moore, Hills et al., Theoretical and Applied Fracture
@@ -67,6 +67,13 @@ module asymslip_gen
     public :: asymslip_hertz_normal_edge_multiplier
     public :: asymslip_hertz_normal_edge_multiplier_slope
     public :: asymslip_hertz_half_width_growth
+    public :: asymslip_peak_shear_change
+    public :: asymslip_hertz_matched_half_width
+    public :: asymslip_hertz_matched_radius
+    public :: asymslip_matched_tension_slope
+    public :: asymslip_matched_shear_slope
+    public :: asymslip_flat_rounded_matched_radius
+    public :: asymslip_flat_rounded_multiplier_ratio
     public :: asymslip_hertz_slip_zone_width_first_order
     public :: asymslip_corrective_slip_discrepancy_third_order
     public :: asymslip_corrective_stick_discrepancy_second_order
@@ -86,6 +93,7 @@ module asymslip_gen
     public :: asymslip_slip_zone_width_second_coefficient
     public :: asymslip_paper_stick_boundary_error
     public :: asymslip_slip_zone_width_second_order_from_multiplier
+    public :: asymslip_slip_zone_width_second_order_dimensionless
     public :: asymslip_paper_stick_boundary_error_from_multiplier
     public :: asymslip_slip_on_loading
     public :: asymslip_gap_opening_influence
@@ -101,6 +109,8 @@ module asymslip_gen
     public :: asymslip_multiplier_growth_measure
     public :: asymslip_slip_zone_growth_measure
     public :: asymslip_stick_ratio_first_order
+    public :: asymslip_stick_ratio_first_order_from_multipliers
+    public :: asymslip_slip_zone_growth_measure_from_multipliers
     public :: asymslip_slip_zone_width_first_order
     public :: asymslip_shear_edge_multiplier_asymmetric_c
     public :: asymslip_normal_edge_multiplier_asymmetric_c
@@ -146,6 +156,13 @@ module asymslip_gen
     public :: asymslip_hertz_normal_edge_multiplier_c
     public :: asymslip_hertz_normal_edge_multiplier_slope_c
     public :: asymslip_hertz_half_width_growth_c
+    public :: asymslip_peak_shear_change_c
+    public :: asymslip_hertz_matched_half_width_c
+    public :: asymslip_hertz_matched_radius_c
+    public :: asymslip_matched_tension_slope_c
+    public :: asymslip_matched_shear_slope_c
+    public :: asymslip_flat_rounded_matched_radius_c
+    public :: asymslip_flat_rounded_multiplier_ratio_c
     public :: asymslip_hertz_slip_zone_width_first_order_c
     public :: asymslip_corrective_slip_discrepancy_third_order_c
     public :: asymslip_corrective_stick_discrepancy_second_order_c
@@ -165,6 +182,7 @@ module asymslip_gen
     public :: asymslip_slip_zone_width_second_coefficient_c
     public :: asymslip_paper_stick_boundary_error_c
     public :: asymslip_slip_zone_width_second_order_from_multiplier_c
+    public :: asymslip_slip_zone_width_second_order_dimensionless_c
     public :: asymslip_paper_stick_boundary_error_from_multiplier_c
     public :: asymslip_slip_on_loading_c
     public :: asymslip_gap_opening_influence_c
@@ -180,6 +198,8 @@ module asymslip_gen
     public :: asymslip_multiplier_growth_measure_c
     public :: asymslip_slip_zone_growth_measure_c
     public :: asymslip_stick_ratio_first_order_c
+    public :: asymslip_stick_ratio_first_order_from_multipliers_c
+    public :: asymslip_slip_zone_growth_measure_from_multipliers_c
     public :: asymslip_slip_zone_width_first_order_c
 
     real(c_double), parameter :: asymslip_pi = 3.14159265358979323846_c_double
@@ -1756,6 +1776,232 @@ contains
     end function asymslip_hertz_half_width_growth_c
 
     ! --------------------------------------------------------------------------------------------
+    ! lab_transfer: Carrying a laboratory test over to a prototype (beyond the paper): the
+    ! edge state that two contacts must share, the rig that reproduces it and the peak shear
+    ! change.
+    ! --------------------------------------------------------------------------------------------
+    !> Largest |q2 - q1| over the slip zone: its value at the stick boundary.
+    !!
+    !! mu (L_I1 sqrt(w) + L_I2 sqrt(w + da)), w = a1 - b: the slip conditions (8) and (11) at x
+    !! = b, equal to (49) there when b is (17)'s. For backward slip q2 - q1 is its negative.
+    !!
+    !! Implements Eqs. (8), (11), (49) of the paper; derived in derivations/lab_transfer.py.
+    !!
+    !! Arguments:
+    !!   mu    Coefficient of friction, mu > 0.
+    !!   L_I1  Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    !!   L_I2  Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    !!   w     Slip-zone width a1 - b >= 0 of the edge [length].
+    !!   da    Advance of the edge a2 - a1 > 0 over the cycle [length].
+    !!
+    !! Returns:
+    !!   Peak shear change [force/length^2].
+    elemental function asymslip_peak_shear_change(mu, L_I1, L_I2, w, da) result(asymslip_result)
+        real(c_double), intent(in) :: mu, L_I1, L_I2, w, da
+        real(c_double) :: asymslip_result
+        asymslip_result = mu*(L_I1*sqrt(w) + L_I2*sqrt(da + w))
+    end function asymslip_peak_shear_change
+
+    !> C binding of asymslip_peak_shear_change (scalar arguments by value).
+    function asymslip_peak_shear_change_c(mu, L_I1, L_I2, w, da) result(asymslip_result) &
+            bind(C, name="asymslip_peak_shear_change")
+        real(c_double), value, intent(in) :: mu, L_I1, L_I2, w, da
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_peak_shear_change(mu, L_I1, L_I2, w, da)
+    end function asymslip_peak_shear_change_c
+
+    !> Half-width a1 of the one cylinder whose edge has L_I1, L_I2 and a2 - a1 = da.
+    !!
+    !! da L_I1^2/(L_I2^2 - L_I1^2) (LT3 of derivations/lab_transfer.py); needs L_I2 > L_I1,
+    !! since a cylinder's L_I rises with the load.
+    !!
+    !! Implements Eqs. (29), (31) of the paper; derived in derivations/lab_transfer.py.
+    !!
+    !! Arguments:
+    !!   L_I1  Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    !!   L_I2  Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    !!   da    Advance of the edge a2 - a1 > 0 over the cycle [length].
+    !!
+    !! Returns:
+    !!   a1 [length].
+    elemental function asymslip_hertz_matched_half_width(L_I1, L_I2, da) result(asymslip_result)
+        real(c_double), intent(in) :: L_I1, L_I2, da
+        real(c_double) :: asymslip_result
+        asymslip_result = -L_I1**2*da/((L_I1 - L_I2)*(L_I1 + L_I2))
+    end function asymslip_hertz_matched_half_width
+
+    !> C binding of asymslip_hertz_matched_half_width (scalar arguments by value).
+    function asymslip_hertz_matched_half_width_c(L_I1, L_I2, da) result(asymslip_result) &
+            bind(C, name="asymslip_hertz_matched_half_width")
+        real(c_double), value, intent(in) :: L_I1, L_I2, da
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_hertz_matched_half_width(L_I1, L_I2, da)
+    end function asymslip_hertz_matched_half_width_c
+
+    !> Radius R of the cylinder whose L_I at half-width a1 is L_I1.
+    !!
+    !! E* sqrt(a1/2)/L_I1, from (31) (LT3).
+    !!
+    !! Implements Eq. (31) of the paper; derived in derivations/lab_transfer.py.
+    !!
+    !! Arguments:
+    !!   E_star  Plane-strain contact modulus E* of the rig > 0 [force/length^2].
+    !!   L_I1    Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    !!   a1      Contact half-width of the rig at load state 1 [length].
+    !!
+    !! Returns:
+    !!   R [length].
+    elemental function asymslip_hertz_matched_radius(E_star, L_I1, a1) result(asymslip_result)
+        real(c_double), intent(in) :: E_star, L_I1, a1
+        real(c_double) :: asymslip_result
+        asymslip_result = (1.0d0/2.0d0)*sqrt(2.0d0)*E_star*sqrt(a1)/L_I1
+    end function asymslip_hertz_matched_radius
+
+    !> C binding of asymslip_hertz_matched_radius (scalar arguments by value).
+    function asymslip_hertz_matched_radius_c(E_star, L_I1, a1) result(asymslip_result) &
+            bind(C, name="asymslip_hertz_matched_radius")
+        real(c_double), value, intent(in) :: E_star, L_I1, a1
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_hertz_matched_radius(E_star, L_I1, a1)
+    end function asymslip_hertz_matched_radius_c
+
+    !> Slope eta = dsigma/dP of the rig's path that gives its edge L_II1 and L_II2.
+    !!
+    !! 4 (L_II2/L_I2 - L_II1/L_I1)/(pi da) (LT4), with the rig's own L_I1, L_I2 and a2 - a1 =
+    !! da.
+    !!
+    !! Implements Eqs. (18), (21) of the paper; derived in derivations/lab_transfer.py.
+    !!
+    !! Arguments:
+    !!   da     Growth of the contact half-width a2 - a1 > 0, passed in directly so that
+    !!          callers who know it accurately keep every digit [length].
+    !!   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    !!   L_I2   Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    !!   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+    !!          [force/length^(5/2)].
+    !!   L_II2  Shear edge multiplier L_II at load state 2 (5), either sign
+    !!          [force/length^(5/2)].
+    !!
+    !! Returns:
+    !!   eta [1/length].
+    elemental function asymslip_matched_tension_slope(da, L_I1, L_I2, L_II1, L_II2) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: da, L_I1, L_I2, L_II1, L_II2
+        real(c_double) :: asymslip_result
+        asymslip_result = 4*(L_I1*L_II2 - L_I2*L_II1)/(asymslip_pi*L_I1*L_I2*da)
+    end function asymslip_matched_tension_slope
+
+    !> C binding of asymslip_matched_tension_slope (scalar arguments by value).
+    function asymslip_matched_tension_slope_c(da, L_I1, L_I2, L_II1, L_II2) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_matched_tension_slope")
+        real(c_double), value, intent(in) :: da, L_I1, L_I2, L_II1, L_II2
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_matched_tension_slope(da, L_I1, L_I2, L_II1, L_II2)
+    end function asymslip_matched_tension_slope_c
+
+    !> Slope lambda = dQ/dP of the rig's path that gives its edge L_II1 and L_II2.
+    !!
+    !! L_II1/L_I1 - pi eta a1/4 with eta from matched_tension_slope (LT4), with the rig's own
+    !! a1, L_I1, L_I2 and a2 - a1 = da.
+    !!
+    !! Implements Eqs. (18), (21) of the paper; derived in derivations/lab_transfer.py.
+    !!
+    !! Arguments:
+    !!   a1     Contact half-width a(P1) at load state 1 [length].
+    !!   da     Growth of the contact half-width a2 - a1 > 0, passed in directly so that
+    !!          callers who know it accurately keep every digit [length].
+    !!   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    !!   L_I2   Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    !!   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+    !!          [force/length^(5/2)].
+    !!   L_II2  Shear edge multiplier L_II at load state 2 (5), either sign
+    !!          [force/length^(5/2)].
+    !!
+    !! Returns:
+    !!   lambda, dimensionless.
+    elemental function asymslip_matched_shear_slope(a1, da, L_I1, L_I2, L_II1, L_II2) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: a1, da, L_I1, L_I2, L_II1, L_II2
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0
+        tmp0 = 1d0/L_I1
+        asymslip_result = L_II1*tmp0 - a1*tmp0*(L_I1*L_II2 - L_I2*L_II1)/(L_I2* &
+              da)
+    end function asymslip_matched_shear_slope
+
+    !> C binding of asymslip_matched_shear_slope (scalar arguments by value).
+    function asymslip_matched_shear_slope_c(a1, da, L_I1, L_I2, L_II1, L_II2) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_matched_shear_slope")
+        real(c_double), value, intent(in) :: a1, da, L_I1, L_I2, L_II1, L_II2
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_matched_shear_slope(a1, da, L_I1, L_I2, L_II1, L_II2)
+    end function asymslip_matched_shear_slope_c
+
+    !> Corner radius R of the rounded flat whose L_I at half-width a is L_I.
+    !!
+    !! E* sqrt(2a) arccos(c/a)/(pi L_I) (LT5); c = 0 is the cylinder's radius.
+    !!
+    !! Implements Eq. (19) of the paper; derived in derivations/lab_transfer.py.
+    !!
+    !! Arguments:
+    !!   a       Contact half-width a > c [length].
+    !!   c       Half-width c >= 0 of the flat face of the rig's pad [length].
+    !!   E_star  Plane-strain contact modulus E* of the rig > 0 [force/length^2].
+    !!   L_I     Normal edge multiplier L_I to reproduce at half-width a (4)
+    !!           [force/length^(5/2)].
+    !!
+    !! Returns:
+    !!   R [length].
+    elemental function asymslip_flat_rounded_matched_radius(a, c, E_star, L_I) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: a, c, E_star, L_I
+        real(c_double) :: asymslip_result
+        asymslip_result = sqrt(2.0d0)*E_star*sqrt(a)*atan2(sqrt(max(0.0d0, (a - &
+              c)*(a + c))), c)/(asymslip_pi*L_I)
+    end function asymslip_flat_rounded_matched_radius
+
+    !> C binding of asymslip_flat_rounded_matched_radius (scalar arguments by value).
+    function asymslip_flat_rounded_matched_radius_c(a, c, E_star, L_I) result(asymslip_result) &
+            bind(C, name="asymslip_flat_rounded_matched_radius")
+        real(c_double), value, intent(in) :: a, c, E_star, L_I
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_flat_rounded_matched_radius(a, c, E_star, L_I)
+    end function asymslip_flat_rounded_matched_radius_c
+
+    !> L_I2/L_I1 of one rounded flat between half-widths a1 and a2 (> c).
+    !!
+    !! sqrt(a2/a1) arccos(c/a2)/arccos(c/a1) (LT5): sqrt(a2/a1) at c = 0, rising with c without
+    !! bound as c -> a1.
+    !!
+    !! Implements Eq. (19) of the paper; derived in derivations/lab_transfer.py.
+    !!
+    !! Arguments:
+    !!   a1  Contact half-width of the rig at load state 1 [length].
+    !!   a2  Contact half-width of the rig at load state 2, a2 > a1 [length].
+    !!   c   Half-width c >= 0 of the flat face of the rig's pad [length].
+    !!
+    !! Returns:
+    !!   L_I2/L_I1, dimensionless.
+    elemental function asymslip_flat_rounded_multiplier_ratio(a1, a2, c) result(asymslip_result)
+        real(c_double), intent(in) :: a1, a2, c
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0
+        tmp0 = -c
+        asymslip_result = sqrt(a2)*atan2(sqrt(max(0.0d0, (a2 + c)*(a2 + tmp0))), &
+              c)/(sqrt(a1)*atan2(sqrt(max(0.0d0, (a1 + c)*(a1 + tmp0))), c))
+    end function asymslip_flat_rounded_multiplier_ratio
+
+    !> C binding of asymslip_flat_rounded_multiplier_ratio (scalar arguments by value).
+    function asymslip_flat_rounded_multiplier_ratio_c(a1, a2, c) result(asymslip_result) &
+            bind(C, name="asymslip_flat_rounded_multiplier_ratio")
+        real(c_double), value, intent(in) :: a1, a2, c
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_flat_rounded_multiplier_ratio(a1, a2, c)
+    end function asymslip_flat_rounded_multiplier_ratio_c
+
+    ! --------------------------------------------------------------------------------------------
     ! method_agreement: Section 3.3 of the paper and beyond: the first-order Hertz slip zone
     ! common to the three methods, and the higher-order discrepancies of the corrective-slip
     ! (22) and corrective-stick (41) predictions from the exact solution (eta = 0).
@@ -2568,6 +2814,69 @@ contains
                 a1, da_dP, L_I1, dL_I_dP, dP, other_edge)
     end function asymslip_slip_zone_width_second_order_from_multiplier_c
 
+    !> (a1 - b)/a1 to second order, in dimensionless groups that cannot overflow.
+    !!
+    !! slip_zone_width_second_order_from_multiplier divided by a1, written in lam/mu, eta
+    !! a1/mu, a'(P1) dP/a1, L_I1 a1^(3/2)/dP and L_I'(P1) a1^(3/2) (the width is homogeneous of
+    !! degree one in length and zero in load, and depends on lam, eta only through lam/mu,
+    !! eta/mu): the same digits at ordinary values, and no overflow of dimensional terms at
+    !! loads of 1e300 or mu = 1e-300.
+    !!
+    !! Implements Eqs. (19), (22), (28) of the paper; derived in
+    !! derivations/second_order_slip_zone.py.
+    !!
+    !! Arguments:
+    !!   lam_mu            lambda/mu, the shear slope over friction.
+    !!   eta_a1_mu         eta a1/mu, the tension slope over friction.
+    !!   growth            a'(P1) dP/a1, the contact growth of (24).
+    !!   multiplier        L_I1 a1^(3/2)/dP, the normal edge multiplier in units of a1 and dP.
+    !!   multiplier_slope  L_I'(P1) a1^(3/2), the multiplier's slope in units of a1.
+    !!   other_edge        +1 when the other edge of the contact slips in the same direction as
+    !!                     this one (the same sign of q2 - q1 there), -1 when it slips the
+    !!                     opposite way. For an other edge that does not slip use +1: that
+    !!                     branch joins the -1 branch continuously where the other edge starts
+    !!                     to slip the opposite way, but in between it is not derived (see the
+    !!                     module notes).
+    !!
+    !! Returns:
+    !!   (a1 - b)/a1, dimensionless.
+    elemental function asymslip_slip_zone_width_second_order_dimensionless(lam_mu, eta_a1_mu, &
+            growth, multiplier, multiplier_slope, other_edge) result(asymslip_result)
+        real(c_double), intent(in) :: lam_mu, eta_a1_mu, growth, multiplier, multiplier_slope, other_edge
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0, tmp1, tmp2, tmp3, tmp4, tmp5, tmp6, tmp7
+        real(c_double) :: tmp8, tmp9, tmp10, tmp11, tmp12
+        tmp0 = 256*multiplier
+        tmp1 = 64*multiplier_slope
+        tmp2 = growth*multiplier
+        tmp3 = lam_mu*multiplier_slope
+        tmp4 = asymslip_pi*eta_a1_mu
+        tmp5 = 32*tmp4
+        tmp6 = lam_mu*tmp2
+        tmp7 = 16*tmp2
+        tmp8 = other_edge*tmp7
+        tmp9 = lam_mu**2
+        tmp10 = 8*tmp4*tmp6
+        tmp11 = asymslip_pi**2*eta_a1_mu**2
+        tmp12 = tmp11*tmp2
+        asymslip_result = (1.0d0/512.0d0)*growth*(lam_mu*tmp0 + 64*multiplier* &
+              tmp4 + 4*multiplier_slope*tmp11 - multiplier_slope*tmp5 - &
+              other_edge*tmp10 + other_edge*tmp12 - tmp0 + tmp1*tmp9 + tmp1 - &
+              tmp10 - 3*tmp12 + 48*tmp2 + tmp3*tmp5 - 128*tmp3 + tmp4*tmp7 - 64 &
+              *tmp6 + tmp7*tmp9 + tmp8*tmp9 - tmp8)/multiplier
+    end function asymslip_slip_zone_width_second_order_dimensionless
+
+    !> C binding of asymslip_slip_zone_width_second_order_dimensionless (scalar arguments by
+    !! value).
+    function asymslip_slip_zone_width_second_order_dimensionless_c(lam_mu, eta_a1_mu, growth, &
+            multiplier, multiplier_slope, other_edge) result(asymslip_result) &
+            bind(C, name="asymslip_slip_zone_width_second_order_dimensionless")
+        real(c_double), value, intent(in) :: lam_mu, eta_a1_mu, growth, multiplier, multiplier_slope, other_edge
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_slip_zone_width_second_order_dimensionless(lam_mu, &
+                eta_a1_mu, growth, multiplier, multiplier_slope, other_edge)
+    end function asymslip_slip_zone_width_second_order_dimensionless_c
+
     !> E of b(22) - b = E dP^2 + O(dP^3), from L_I and L_I'(P1).
     !!
     !! paper_stick_boundary_error with a'' traded for L_I'(P1) through (19).
@@ -3182,6 +3491,81 @@ contains
         real(c_double) :: asymslip_result
         asymslip_result = asymslip_stick_ratio_first_order(mu, lam, eta, a1, dP, da_dP)
     end function asymslip_stick_ratio_first_order_c
+
+    !> First-order b / a1 of (17) in an edge's own multipliers L_I1, L_II1.
+    !!
+    !! The series of (17) in dP along the edge's a(P), L_I(P) and L_II(P); their slopes other
+    !! than a'(P1) drop out. Equals (28) where L_II follows (21); for an edge of an asymmetric
+    !! contact, whose L_II does not (derivations/asymmetric_edge_multipliers.py).
+    !!
+    !! Implements Eqs. (17), (28) of the paper; derived in derivations/section2_validity.py.
+    !!
+    !! Arguments:
+    !!   mu     Coefficient of friction, mu > 0.
+    !!   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    !!   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+    !!          [force/length^(5/2)].
+    !!   a1     Contact half-width a(P1) at load state 1 [length].
+    !!   dP     Normal-load change P2 - P1 > 0 [force/length].
+    !!   da_dP  Slope a'(P) of the contact law [length^2/force].
+    !!
+    !! Returns:
+    !!   b / a1, dimensionless.
+    elemental function asymslip_stick_ratio_first_order_from_multipliers(mu, L_I1, L_II1, a1, &
+            dP, da_dP) result(asymslip_result)
+        real(c_double), intent(in) :: mu, L_I1, L_II1, a1, dP, da_dP
+        real(c_double) :: asymslip_result
+        real(c_double) :: tmp0
+        tmp0 = (1.0d0/2.0d0)*dP*da_dP/a1
+        asymslip_result = tmp0 + 1 - L_II1*tmp0/(L_I1*mu)
+    end function asymslip_stick_ratio_first_order_from_multipliers
+
+    !> C binding of asymslip_stick_ratio_first_order_from_multipliers (scalar arguments by
+    !! value).
+    function asymslip_stick_ratio_first_order_from_multipliers_c(mu, L_I1, L_II1, a1, dP, da_dP) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_stick_ratio_first_order_from_multipliers")
+        real(c_double), value, intent(in) :: mu, L_I1, L_II1, a1, dP, da_dP
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_stick_ratio_first_order_from_multipliers(mu, L_I1, L_II1, &
+                a1, dP, da_dP)
+    end function asymslip_stick_ratio_first_order_from_multipliers_c
+
+    !> Measure (27) in an edge's own multipliers: twice the first-order |b - a1| / a1.
+    !!
+    !! dP a'(P) / a1 |1 - L_II1/(mu L_I1)|, from the first-order (17) in the edge's own
+    !! multipliers; equals slip_zone_growth_measure where L_II follows (21).
+    !!
+    !! Implements Eqs. (17), (27) of the paper; derived in derivations/section2_validity.py.
+    !!
+    !! Arguments:
+    !!   mu     Coefficient of friction, mu > 0.
+    !!   L_I1   Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    !!   L_II1  Shear edge multiplier L_II at load state 1 (5), either sign
+    !!          [force/length^(5/2)].
+    !!   a1     Contact half-width a(P1) at load state 1 [length].
+    !!   dP     Normal-load change P2 - P1 > 0 [force/length].
+    !!   da_dP  Slope a'(P) of the contact law [length^2/force].
+    !!
+    !! Returns:
+    !!   Dimensionless measure.
+    elemental function asymslip_slip_zone_growth_measure_from_multipliers(mu, L_I1, L_II1, a1, &
+            dP, da_dP) result(asymslip_result)
+        real(c_double), intent(in) :: mu, L_I1, L_II1, a1, dP, da_dP
+        real(c_double) :: asymslip_result
+        asymslip_result = dP*da_dP*abs(L_I1*mu - L_II1)/(L_I1*a1*mu)
+    end function asymslip_slip_zone_growth_measure_from_multipliers
+
+    !> C binding of asymslip_slip_zone_growth_measure_from_multipliers (scalar arguments by
+    !! value).
+    function asymslip_slip_zone_growth_measure_from_multipliers_c(mu, L_I1, L_II1, a1, dP, da_dP) &
+            result(asymslip_result) &
+            bind(C, name="asymslip_slip_zone_growth_measure_from_multipliers")
+        real(c_double), value, intent(in) :: mu, L_I1, L_II1, a1, dP, da_dP
+        real(c_double) :: asymslip_result
+        asymslip_result = asymslip_slip_zone_growth_measure_from_multipliers(mu, L_I1, L_II1, &
+                a1, dP, da_dP)
+    end function asymslip_slip_zone_growth_measure_from_multipliers_c
 
     !> First-order slip-zone width a1 - b, without forming 1 - b/a1.
     !!

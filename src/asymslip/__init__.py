@@ -11,13 +11,13 @@ Examples
 11.1419
 """
 
-import importlib
-from typing import Any
+from .lazy import lazy_exports
 
 # Exports load on first use (PEP 562): `python -m asymslip.codegen` must run without importing
 # the API, which imports the generated package that the code generator is about to rewrite.
 _EXPORTS = {
     "ContactLaw": ".laws",
+    "Edge": ".edge",
     "FlatRoundedLaw": ".laws",
     "HertzLaw": ".laws",
     "InputError": ".errors",
@@ -33,13 +33,4 @@ __all__ = sorted(_EXPORTS)
 __version__ = "0.1.0"
 
 
-def __getattr__(name: str) -> Any:
-    if name not in _EXPORTS:
-        raise AttributeError(f"module 'asymslip' has no attribute {name!r}")
-    value = getattr(importlib.import_module(_EXPORTS[name], __name__), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted([*globals(), *_EXPORTS])
+__getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)

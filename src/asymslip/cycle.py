@@ -2,24 +2,49 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .errors import as_numbers
+from .errors import InputError, as_numbers
+from .laws.base import Number
 from .rules import Verdict, check_changes, check_cycle_inputs
 
 FloatArray = NDArray[np.float64]
 FIELDS = ("P1", "Q1", "P2", "Q2", "sigma1", "sigma2")
 
 
-@dataclass(frozen=True, init=False)
+@dataclass(frozen=True)
+class _Loads:
+    """A cycle's six loads as float arrays, their broadcast shape, and one cycle's floats."""
+
+    P1: FloatArray
+    Q1: FloatArray
+    P2: FloatArray
+    Q2: FloatArray
+    sigma1: FloatArray
+    sigma2: FloatArray
+    #: True when the cycle's constructor checked its rules (so every element passed them).
+    checked: bool
+    shape: tuple[int, ...]
+    numbers: tuple[float, ...] | None
+
+
+def _loads(loads: tuple[ArrayLike, ...], checked: bool) -> _Loads:
+    arrays = [as_numbers(name, value) for name, value in zip(FIELDS, loads, strict=True)]
+    shape = _broadcast_shape(arrays)
+    numbers = tuple(float(value) for value in arrays) if shape == () else None
+    P1, Q1, P2, Q2, sigma1, sigma2 = arrays
+    return _Loads(P1, Q1, P2, Q2, sigma1, sigma2, checked, shape, numbers)
+
+
 class LoadCycle:
     """Load states (P1, Q1, sigma1) and (P2, Q2, sigma2) joined by a straight line (2)-(3).
 
     Loads are per unit length of the contact (plane strain); any consistent units.  Attributes
-    may be arrays (broadcast together) to describe many cycles at once.
+    may be arrays (broadcast together) to describe many cycles at once.  A cycle is immutable:
+    its loads are read-only attributes.
 
     Parameters
     ----------
@@ -36,7 +61,8 @@ class LoadCycle:
     ------
     InputError
         Naming the first element that breaks a rule of :mod:`asymslip.rules` (non-finite,
-        P1 <= 0, P2 <= P1, a change that overflows).
+        P1 <= 0, P2 <= P1, a change that overflows), a value that is not a number (None is
+        missing), or two loads whose shapes do not broadcast.
 
     Examples
     --------
@@ -45,18 +71,8 @@ class LoadCycle:
     (0.2, 0.0)
     """
 
-    P1: FloatArray
-    Q1: FloatArray
-    P2: FloatArray
-    Q2: FloatArray
-    sigma1: FloatArray
-    sigma2: FloatArray
-    #: True when the constructor checked the cycle's rules (and so every element passed them).
-    checked: bool
-    #: The broadcast shape of the six fields (() for one cycle).
-    shape: tuple[int, ...]
-    #: One cycle's six loads as Python floats, in the order of :data:`FIELDS` (None for many).
-    numbers: tuple[float, ...] | None = field(default=None, repr=False, compare=False)
+    __slots__ = ("_loads",)
+    _loads: _Loads
 
     def __init__(
         self,
@@ -67,19 +83,9 @@ class LoadCycle:
         sigma1: ArrayLike = 0.0,
         sigma2: ArrayLike = 0.0,
     ) -> None:
-        self._set(P1, Q1, P2, Q2, sigma1, sigma2)
+        self._loads = _loads((P1, Q1, P2, Q2, sigma1, sigma2), checked=False)
         self.verdict().raise_first()
-        object.__setattr__(self, "checked", True)
-
-    def _set(self, *loads: ArrayLike) -> None:
-        arrays = [as_numbers(name, value) for name, value in zip(FIELDS, loads, strict=True)]
-        for name, value in zip(FIELDS, arrays, strict=True):
-            object.__setattr__(self, name, value)
-        shapes = [value.shape for value in arrays]
-        shape = () if not any(shapes) else np.broadcast_shapes(*shapes)
-        object.__setattr__(self, "shape", shape)
-        numbers = tuple(float(value) for value in arrays) if shape == () else None
-        object.__setattr__(self, "numbers", numbers)
+        self._loads = replace(self._loads, checked=True)
 
     @classmethod
     def unchecked(
@@ -96,12 +102,61 @@ class LoadCycle:
         For many cycles at once (the sweep), where one bad row must not stop the others; see
         :meth:`verdict`.
         """
-        cycle = object.__new__(cls)
-        cycle._set(P1, Q1, P2, Q2, sigma1, sigma2)
-        object.__setattr__(cycle, "checked", False)
+        cycle = cls.__new__(cls)
+        cycle._loads = _loads((P1, Q1, P2, Q2, sigma1, sigma2), checked=False)
         return cycle
 
-    def values(self) -> dict[str, FloatArray | float]:
+    def __repr__(self) -> str:
+        loads = ", ".join(f"{name}={getattr(self._loads, name)!r}" for name in FIELDS)
+        return f"LoadCycle({loads})"
+
+    @property
+    def P1(self) -> FloatArray:
+        """Normal load at state 1."""
+        return self._loads.P1
+
+    @property
+    def Q1(self) -> FloatArray:
+        """Shear force at state 1."""
+        return self._loads.Q1
+
+    @property
+    def P2(self) -> FloatArray:
+        """Normal load at state 2 (> P1)."""
+        return self._loads.P2
+
+    @property
+    def Q2(self) -> FloatArray:
+        """Shear force at state 2."""
+        return self._loads.Q2
+
+    @property
+    def sigma1(self) -> FloatArray:
+        """Differential bulk tension at state 1."""
+        return self._loads.sigma1
+
+    @property
+    def sigma2(self) -> FloatArray:
+        """Differential bulk tension at state 2."""
+        return self._loads.sigma2
+
+    @property
+    def checked(self) -> bool:
+        """True when the constructor checked the cycle's rules (and so every element passed)."""
+        return self._loads.checked
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        """The broadcast shape of the six loads (() for one cycle)."""
+        return self._loads.shape
+
+    @property
+    def numbers(self) -> tuple[float, ...] | None:
+        """One cycle's six loads as Python floats, in the order of :data:`FIELDS` (None for
+        many)."""
+        return self._loads.numbers
+
+    def values(self) -> dict[str, Number]:
         """The six loads, broadcast to :attr:`shape` (Python floats for a single cycle)."""
         if self.shape == ():
             return {name: float(getattr(self, name)) for name in FIELDS}
@@ -148,3 +203,34 @@ class LoadCycle:
     def eta(self) -> FloatArray:
         """eta = dsigma/dP (18)."""
         return self.dsigma / self.dP
+
+
+def _broadcast_shape(arrays: list[FloatArray]) -> tuple[int, ...]:
+    """The shape the six loads broadcast to, or an error naming two that do not."""
+    shapes = [value.shape for value in arrays]
+    if not any(shapes):
+        return ()
+    shape: tuple[int, ...] = ()
+    for index, (name, value) in enumerate(zip(FIELDS, shapes, strict=True)):
+        try:
+            shape = np.broadcast_shapes(shape, value)
+        except ValueError:
+            other = (
+                next(FIELDS[j] for j in range(index) if not _broadcastable(shapes[j], value))
+                if any(not _broadcastable(shapes[j], value) for j in range(index))
+                else "the others"
+            )
+            raise InputError(
+                name,
+                f"has shape {value}, which does not broadcast with {other}'s shape "
+                f"{shapes[FIELDS.index(other)] if other in FIELDS else shape}",
+            ) from None
+    return shape
+
+
+def _broadcastable(first: tuple[int, ...], second: tuple[int, ...]) -> bool:
+    try:
+        np.broadcast_shapes(first, second)
+    except ValueError:
+        return False
+    return True

@@ -1,112 +1,42 @@
-"""The warnings of one edge's result: bit flags per element, turned into words when asked.
+"""The warning flags and result keys of an edge: kept under their old name for importers.
 
-10^6 cycles carry 10^6 small integers, not 10^6 lists of strings; :func:`warning_texts`
-gives one element's words.  The keys of a result (:data:`NUMBER_KEYS`, :data:`MEASURE_KEYS`)
-live here too: the sweep's columns and the API's fields are the same list.
-
-Examples
---------
->>> from asymslip.edge_flags import NO_SLIP, MEASURE_FLAGS, warning_texts
->>> from asymslip.laws.hertz import HertzLaw
->>> [text[:24] for text in warning_texts(NO_SLIP | MEASURE_FLAGS["eq24"], HertzLaw(1, 1))]
-['no slip at this edge: |L', 'eq24 > 0.1: contact grow']
+They live in :mod:`asymslip.core.flags`.
 """
 
-from __future__ import annotations
-
-from .laws.base import ContactLaw
-
-#: A validity measure above this is reported in ``warnings`` ("<< 1" made concrete).
-VALIDITY_THRESHOLD = 0.1
-
-VALIDITY_MEANING = {
-    "eq24": "contact growth dP a'(P)/a1",
-    "eq25": "slip-zone size |b - a1|/a1",
-    "eq26": "edge-multiplier growth dP |L_I'(P)|/L_I1",
-    "eq27": "necessary condition dP a'(P)/a1 |1 - lam/mu - pi eta a1/(4 mu)| (0 where the edge "
-    "does not slip)",
-}
-
-#: The numeric fields of one edge's result, in JSON order (validity measures flattened).
-NUMBER_KEYS = (
-    "a1",
-    "a2",
-    "lam",
-    "eta",
-    "L_I1",
-    "L_I2",
-    "L_II1",
-    "L_II2",
-    "b",
-    "slip_zone_width",
-    "b_accuracy",
-    "b_paper",
-    "b_first_order",
-    "b_exact",
-    "b_corrective_stick",
-    "slip_direction",
-)
-MEASURE_KEYS = tuple(VALIDITY_MEANING)
-
-# --- warnings as flags --------------------------------------------------------------------------
-NO_SLIP = 1 << 0
-MEASURE_FLAGS = {key: 1 << (1 + i) for i, key in enumerate(MEASURE_KEYS)}
-EXTRAPOLATED_P1 = 1 << 5
-EXTRAPOLATED_P2 = 1 << 6
-DISAGREE_PAPER = 1 << 7
-DISAGREE_FIRST_ORDER = 1 << 8
-DISAGREE_CORRECTIVE_STICK = 1 << 9
-DISAGREE_EXACT = 1 << 10
-OTHER_EDGE_STICKS = 1 << 11
-#: The other estimates of b, left out (null) where they fall outside the contact (0, a2]: a
-#: stick boundary there is no answer, and printing it would pass it off as one.  Each with its
-#: equation and the disagreement flag it then replaces.
-ESTIMATES_CHECKED = {
-    "b_paper": ("(22)", DISAGREE_PAPER),
-    "b_first_order": ("(28)", DISAGREE_FIRST_ORDER),
-    "b_corrective_stick": ("(40)", DISAGREE_CORRECTIVE_STICK),
-}
-OUTSIDE_FLAGS = {key: 1 << (12 + i) for i, key in enumerate(ESTIMATES_CHECKED)}
-_DISAGREEMENT_TEXT = {
-    DISAGREE_PAPER: "(22) (b_paper) differs from b by more than their stated accuracies (with "
-    "bulk tension (22) carries a spurious dP^2 term, erratum 22-T); take b",
-    DISAGREE_FIRST_ORDER: "the first-order (28) (b_first_order) differs from b by more than "
-    "their stated accuracies: the load change is too large for a first-order estimate",
-    DISAGREE_CORRECTIVE_STICK: "the corrective-stick (40) (b_corrective_stick) differs from b "
-    "by more than their stated accuracies",
-    DISAGREE_EXACT: "b differs from the exact a(P_K) by more than its stated accuracy: the load "
-    "change is too large for the second-order estimate; take b_exact",
-    OTHER_EDGE_STICKS: "the other edge does not slip: b uses the second-order branch that joins "
-    "continuously where the other edge starts to slip (checked against the reference solver, "
-    "not derived)",
-}
-
-_NO_SLIP_TEXT = (
-    "no slip at this edge: |L_II2| <= mu L_I2 (|lam + pi eta a2/4| <= mu), so the edge sticks "
-    "wherever it is in contact; b = a1 and the slip-zone width is 0"
+from .core.flags import (
+    DISAGREE_CORRECTIVE_STICK,
+    DISAGREE_EXACT,
+    DISAGREE_FIRST_ORDER,
+    DISAGREE_PAPER,
+    ESTIMATES_CHECKED,
+    EXTRAPOLATED_P1,
+    EXTRAPOLATED_P2,
+    MEASURE_FLAGS,
+    MEASURE_KEYS,
+    NO_SLIP,
+    NUMBER_KEYS,
+    OTHER_EDGE_STICKS,
+    OUTSIDE_FLAGS,
+    VALIDITY_MEANING,
+    VALIDITY_THRESHOLD,
+    warning_texts,
 )
 
-
-def warning_texts(flags: int, law: ContactLaw) -> list[str]:
-    """The warnings of one element, in words, from its flags."""
-    texts = []
-    if flags & NO_SLIP:
-        texts.append(_NO_SLIP_TEXT)
-    for key, bit in MEASURE_FLAGS.items():
-        if flags & bit:
-            texts.append(
-                f"{key} > {VALIDITY_THRESHOLD}: {VALIDITY_MEANING[key]} is not small, so "
-                "the asymptotic solution is doubtful"
-            )
-    for bit, label in ((EXTRAPOLATED_P1, "P1"), (EXTRAPOLATED_P2, "P2")):
-        if flags & bit:
-            texts.append(law.extrapolation_note(label))
-    texts.extend(text for bit, text in _DISAGREEMENT_TEXT.items() if flags & bit)
-    for key, bit in OUTSIDE_FLAGS.items():
-        if flags & bit:
-            texts.append(
-                f"{key}: the estimate {ESTIMATES_CHECKED[key][0]} puts the stick "
-                "boundary outside the contact (0, a2], so it is no answer for this "
-                "cycle and is left out (null)"
-            )
-    return texts
+__all__ = [
+    "DISAGREE_CORRECTIVE_STICK",
+    "DISAGREE_EXACT",
+    "DISAGREE_FIRST_ORDER",
+    "DISAGREE_PAPER",
+    "ESTIMATES_CHECKED",
+    "EXTRAPOLATED_P1",
+    "EXTRAPOLATED_P2",
+    "MEASURE_FLAGS",
+    "MEASURE_KEYS",
+    "NO_SLIP",
+    "NUMBER_KEYS",
+    "OTHER_EDGE_STICKS",
+    "OUTSIDE_FLAGS",
+    "VALIDITY_MEANING",
+    "VALIDITY_THRESHOLD",
+    "warning_texts",
+]

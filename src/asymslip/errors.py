@@ -13,6 +13,8 @@ True
 
 from __future__ import annotations
 
+from typing import cast
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
@@ -44,20 +46,52 @@ def _first_offender(values: NDArray[np.float64], bad: NDArray[np.bool_]) -> tupl
     return (value if np.isfinite(value) else None), where
 
 
-def as_numbers(parameter: str, value: ArrayLike) -> NDArray[np.float64]:
+def as_numbers(parameter: str, value: object) -> NDArray[np.float64]:
     """Convert to a float64 array, refusing what is not a real number (not yet non-finite ones:
-    :mod:`asymslip.rules` checks those per element)."""
-    if type(value) is float or type(value) is int:  # the common case, without NumPy's checks
-        return np.asarray(float(value))
-    if isinstance(value, (str, bytes)) or np.iscomplexobj(value):
+    :mod:`asymslip.rules` checks those per element).
+
+    None is missing, not a number; a masked array's masked elements are refused (they have no
+    value to compute with); an integer beyond double precision is refused as such.
+    """
+    if type(value) is float:  # the common case, without NumPy's checks
+        return np.asarray(value)
+    if value is None:
+        raise InputError(parameter, "is missing (None): give a number or an array of them")
+    if type(value) is int:
+        return np.asarray(_integer(parameter, value))
+    if isinstance(value, (str, bytes)) or np.iscomplexobj(cast(ArrayLike, value)):
         raise InputError(parameter, "must be a real number or an array of them", value)
+    if isinstance(value, np.ma.MaskedArray):
+        masked = np.ma.getmaskarray(value)
+        if masked.any():
+            index = int(np.flatnonzero(masked.ravel())[0])
+            raise InputError(
+                parameter,
+                "has masked elements, which have no value: fill them (numpy.ma.filled) or "
+                "leave them out",
+                where=f"at element {index}" if masked.ndim else "",
+            )
+        value = np.ma.getdata(value)
     try:
         return np.asarray(value, dtype=np.float64)
+    except OverflowError:
+        raise InputError(parameter, _BEYOND_DOUBLE) from None
     except (TypeError, ValueError):
         raise InputError(parameter, "must be a real number or an array of them", value) from None
 
 
-def as_float_array(parameter: str, value: ArrayLike) -> NDArray[np.float64]:
+_BEYOND_DOUBLE = "must be finite: it is beyond double precision (about 1.8e308)"
+
+
+def _integer(parameter: str, value: int) -> float:
+    """A Python integer as a float, refused where it is beyond double precision."""
+    try:
+        return float(value)
+    except OverflowError:
+        raise InputError(parameter, _BEYOND_DOUBLE) from None
+
+
+def as_float_array(parameter: str, value: object) -> NDArray[np.float64]:
     """Convert to a float64 array, refusing non-numbers and non-finite values."""
     array = as_numbers(parameter, value)
     finite = np.isfinite(array)

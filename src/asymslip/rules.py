@@ -1,6 +1,6 @@
 """The one table of rules an input must satisfy, checked per element.
 
-Every entry point -- :class:`~asymslip.cycle.LoadCycle`, :func:`~asymslip.slip_zone.slip_zone`,
+Every entry point -- :class:`~asymslip.cycle.LoadCycle`, :func:`~asymslip.slip_zones.slip_zone`,
 the tractions, the sweep -- checks its inputs against the rules below and nothing else.  A rule
 is checked on whole arrays: a :class:`Verdict` records, for each element, the first rule it
 breaks (in the order of :data:`RULES`) and the value to show.  The Python API then raises an
@@ -148,13 +148,23 @@ def _rule_table() -> dict[str, Rule]:
             "the cycle; dP/da = {slope} at one of its loads",
         ),
         # What the asymptotic solution can answer, per edge.
+        # The denominator of (17) is named by the load change that makes it non-positive (the
+        # tension change where the cycle without it would have a state), not by mu.
         (
-            "denominator",
-            "mu",
-            "at the {side} edge the denominator of (17), mu (L_I1 + L_I2) + "
-            "L_II1 - L_II2, is not positive ({denominator}) for this friction coefficient and load "
-            "path: no steady partial-slip state exists (the stick boundary would lie beyond a2)"
-            "{note}",
+            "denominator_tension",
+            "sigma2",
+            "the bulk-tension change sigma2 - sigma1 is too large for mu = {mu}: at the {side} "
+            "edge the denominator of (17), mu (L_I1 + L_I2) + L_II1 - L_II2, is not positive "
+            "({denominator}), so no steady partial-slip state exists (the stick boundary would "
+            "lie beyond a2){note}",
+        ),
+        (
+            "denominator_shear",
+            "Q2",
+            "the shear-force change Q2 - Q1 is too large for mu = {mu}: at the {side} edge the "
+            "denominator of (17), mu (L_I1 + L_I2) + L_II1 - L_II2, is not positive "
+            "({denominator}), so no steady partial-slip state exists (the stick boundary would "
+            "lie beyond a2){note}",
         ),
         (
             "result_finite",
@@ -355,9 +365,62 @@ def check_partial_slip(verdict: Verdict, mu: FloatArray, values: Mapping[str, Fl
     for state in ("1", "2"):
         capacity = mu * values[f"P{state}"]
         shear = abs(values[f"Q{state}"])
+        below = shear < capacity
+        if not (below.all() if isinstance(below, np.ndarray) else below):
+            below = below | _below_subnormal_capacity(shear, mu, values[f"P{state}"], capacity)
         verdict.require(
             f"sliding_{state}",
-            shear < capacity,
+            below,
             None,
             **{f"abs_Q{state}": shear, f"mu_P{state}": capacity},
         )
+
+
+_SMALLEST_NORMAL = float(np.finfo(np.float64).smallest_normal)
+
+
+def _below_subnormal_capacity(
+    shear: FloatArray, mu: FloatArray, P: FloatArray, capacity: FloatArray
+) -> BoolArray:
+    """|Q| < mu P where mu P falls below the normal doubles and is rounded (to 0 for a subnormal
+    P1 times mu = 0.1, which made |Q1| = 0 "gross sliding").
+
+    mu and P are scaled by powers of two into the normal range (exactly), their product
+    compared with |Q| scaled by the same power (exact, or beyond the doubles and so not
+    below): the comparison is as precise as for ordinary loads.
+    """
+    mu, P = np.asarray(mu, dtype=np.float64), np.asarray(P, dtype=np.float64)
+    shear = np.asarray(shear, dtype=np.float64)
+    with np.errstate(all="ignore"):
+        tiny = (capacity < _SMALLEST_NORMAL) & (mu > 0) & (P > 0)
+        _, mu_exponent = np.frexp(mu)
+        _, P_exponent = np.frexp(P)
+        mu_scale = np.where(tiny, np.maximum(0, -mu_exponent), 0)
+        P_scale = np.where(tiny, np.maximum(0, -P_exponent), 0)
+        scaled = np.ldexp(mu, mu_scale) * np.ldexp(P, P_scale)
+        return tiny & (np.ldexp(shear, mu_scale + P_scale) < scaled)
+
+
+def denominator_checks(
+    admits: ArrayLike,
+    mu: ArrayLike,
+    lam: ArrayLike,
+    eta: ArrayLike,
+    L_I1: ArrayLike,
+    L_I2: ArrayLike,
+) -> tuple[tuple[str, ArrayLike], tuple[str, ArrayLike]]:
+    """The rules of (17)'s denominator, each with where it holds, in the order to require them.
+
+    (17) has a steady partial-slip state only where its denominator is positive (``admits``).
+    Where it is not, the message names the load change to blame: the bulk tension's where the
+    same cycle without it (eta = 0; the shear term lambda (L_I2 - L_I1) of (21) alone) would
+    have a positive denominator, else the shear force's.  Works on one cycle's floats (the
+    conditions are then NumPy booleans: ``~True`` on a Python bool is -2) and on arrays.
+    """
+    with np.errstate(all="ignore"):
+        without_tension = mu * (L_I1 + L_I2) - abs(lam) * abs(L_I2 - L_I1)
+        tension = np.logical_and(eta != 0, without_tension > 0)
+    return (
+        ("denominator_tension", np.logical_or(admits, np.logical_not(tension))),
+        ("denominator_shear", admits),
+    )

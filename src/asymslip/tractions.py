@@ -19,19 +19,27 @@ from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
-from numpy.typing import ArrayLike
+from numpy.typing import ArrayLike, NDArray
 
 from asymslip_gen.slip_displacement import slip_on_loading
 from asymslip_gen.tractions import jaeger_ciavarella_traction_difference, shear_traction_difference
 
+from .core.edge_state import EdgeState
+from .core.evaluation import Evaluation, evaluate
+from .core.flags import warning_texts
 from .cycle import LoadCycle
-from .edge_flags import warning_texts
+from .edge import Edge
 from .errors import InputError, as_float_array, positive, require
-from .laws.base import ContactLaw
-from .slip_zones import Evaluation, evaluate
+from .laws.base import ContactLaw, modulus_of
 
-StickBoundaryChoice = Literal["consistent", "exact"]
+StickBoundaryChoice = Literal["headline", "consistent", "exact"]
 Side = Literal["right", "left"]
+
+#: The slip sign convention, stated once (help texts and the README quote it).
+SLIP_CONVENTION = (
+    "delta = the change from state 1 to state 2 of u_x(indenter) - u_x(lower body) at x, "
+    "along +x; in a slip zone it has the sign of q2 - q1"
+)
 
 #: Points within this fraction of a2 from the state-2 edge are "near the edge" (see above).
 NEAR_EDGE_FRACTION = 0.1
@@ -83,11 +91,9 @@ def _one_cycle(law: ContactLaw, cycle: LoadCycle, mu: float) -> Evaluation:
     return evaluation
 
 
-def _edge_values(evaluation: Evaluation, edge: str) -> dict[str, float]:
-    if edge not in ("right", "left"):
-        raise InputError("edge", "must be 'right' or 'left'", edge)
-    values = {key: float(value) for key, value in evaluation.edges[edge].values.items()}
-    if values["slip_direction"] == 0:
+def _edge_values(evaluation: Evaluation, edge: Edge) -> EdgeState:
+    values = evaluation.edges[edge]
+    if values.slip_direction == 0:
         raise InputError(
             "cycle",
             f"the {edge} edge does not slip (|lam + pi eta a2/4| <= mu): "
@@ -112,13 +118,28 @@ def _positions(x: ArrayLike, edge: str, a2: float) -> tuple[np.ndarray, np.ndarr
     return points, outward
 
 
+def _other_half(points: NDArray[np.float64], outward: NDArray[np.float64], edge: Edge) -> list[str]:
+    """A warning for points on the other edge's half of the contact (outward coordinate < 0):
+    an edge asymptote says nothing there, and a 0 or a value must not pass for an answer."""
+    other = outward < 0
+    if not other.any():
+        return []
+    shown = ", ".join(f"{value:.6g}" for value in points[other][:3].tolist())
+    more = "" if int(other.sum()) <= 3 else f" and {int(other.sum()) - 3} more"
+    return [
+        f"x = {shown}{more} lie(s) on the {edge.other} half of the contact: they belong to the "
+        f"{edge.other} edge, which this {edge} edge's asymptote does not describe (ask for "
+        f"edge={edge.other.value!r}); the values given there are no answer"
+    ]
+
+
 def traction_difference(
     law: ContactLaw,
     cycle: LoadCycle,
     mu: float,
     x: ArrayLike,
     *,
-    stick_boundary: StickBoundaryChoice = "consistent",
+    stick_boundary: StickBoundaryChoice = "headline",
     edge: Side = "right",
 ) -> TractionResult:
     """q2 - q1 near one edge: asymptotic (49) and, where it exists, exact (47).
@@ -130,9 +151,11 @@ def traction_difference(
     x
         Positions measured from the contact centre, inside the contact.
     stick_boundary
-        ``"consistent"``: b from (17)/(22), for which the density (15) solves (12);
-        ``"exact"``: b = a(P_K), the paper's choice for Fig. 5 (needs eta = 0), which adds the
-        edge-singular term K (b - b17) / (2 sqrt(a2 - x)) to (49).
+        ``"headline"`` (default): the headline b of :func:`asymslip.slip_zone` (b2, second
+        order with both edges and bulk tension); ``"consistent"``: b from (17)/(22), for which
+        the density (15) solves (12); ``"exact"``: b = a(P_K), the paper's choice for Fig. 5
+        (needs eta = 0).  A b other than (17)'s adds the edge-singular term
+        K (b - b17) / (2 sqrt(a2 - x)) to (49).
     edge
         ``"right"`` (the paper's) or ``"left"``.
 
@@ -149,50 +172,55 @@ def traction_difference(
     >>> round(result.q_diff_exact[0], 4)
     0.0281
     """
+    side = Edge.named(edge)
     evaluation = _one_cycle(law, cycle, mu)
-    q = _edge_values(evaluation, edge)
-    points, outward = _positions(x, edge, q["a2"])
-    if stick_boundary == "consistent":
-        b = q["b_consistent"]  # (17)/(22): the b for which the density (15) solves (12)
+    q = _edge_values(evaluation, side)
+    points, outward = _positions(x, edge, float(q.a2))
+    if stick_boundary == "headline":
+        b = float(q.b)
+    elif stick_boundary == "consistent":
+        b = float(q.b_consistent)  # (17)/(22): the b for which the density (15) solves (12)
     elif stick_boundary == "exact":
-        if np.isnan(q["b_exact"]):
+        if np.isnan(float(q.b_exact)):
             raise InputError(
                 "b",
                 "the exact stick boundary a(P_K) does not exist for this "
                 "cycle (it needs a symmetric law and eta = 0)",
             )
-        b = q["b_exact"]
+        b = float(q.b_exact)
     else:
-        raise InputError("b", "must be 'consistent' or 'exact'", stick_boundary)
+        raise InputError("b", "must be 'headline', 'consistent' or 'exact'", stick_boundary)
     # Backward slip is forward slip of the reversed loads, with q_diff negated (edge_symmetry).
-    direction = q["slip_direction"]
+    direction = float(q.slip_direction)
     asymptotic = direction * shear_traction_difference(
         outward,
         b,
-        q["a1"],
-        q["a2"],
+        float(q.a1),
+        float(q.a2),
         mu,
-        q["L_I1"],
-        q["L_I2"],
-        direction * q["L_II1"],
-        direction * q["L_II2"],
+        float(q.L_I1),
+        float(q.L_I2),
+        direction * float(q.L_II1),
+        direction * float(q.L_II2),
     )
     exact = None
-    if not np.isnan(q["b_exact"]):
+    if not np.isnan(float(q.b_exact)):
         # The wedge's pressure is infinite at its apex, so (47) is inf - inf there; a pressure
         # can also overflow (a huge contact).  Such points are left out below, not warned.
         with np.errstate(all="ignore"):
             try:
                 pressures = [
-                    law.pressure(points, P) for P in (float(cycle.P2), float(cycle.P1), q["P_K"])
+                    law.pressure(points, P)
+                    for P in (float(cycle.P2), float(cycle.P1), float(q.P_K))
                 ]
             except NotImplementedError:
                 pressures = None
             if pressures is not None:
-                exact = direction * jaeger_ciavarella_traction_difference(*pressures, mu)
-    near_from = q["a2"] * (1 - NEAR_EDGE_FRACTION)
-    flags = int(evaluation.edges[edge].flags)
-    warnings = warning_texts(flags, law.for_edge(edge))
+                at_P2, at_P1, at_P_K = pressures
+                exact = direction * jaeger_ciavarella_traction_difference(at_P2, at_P1, at_P_K, mu)
+    near_from = float(q.a2) * (1 - NEAR_EDGE_FRACTION)
+    flags = int(q.flags)
+    warnings = warning_texts(flags, law.for_edge(side)) + _other_half(points, outward, side)
     exact_values = None
     if exact is not None:
         exact = np.asarray(exact, dtype=float) * np.ones(points.shape)
@@ -209,9 +237,9 @@ def traction_difference(
             )
     # The left edge is the right edge of the mirrored cycle: back in the global frame a
     # traction along x changes sign.
-    global_sign = 1.0 if edge == "right" else -1.0
+    global_sign = side.sign
     return TractionResult(
-        edge=edge,
+        edge=side.value,
         x=points.tolist(),
         q_diff=(global_sign * np.asarray(asymptotic, dtype=float)).tolist(),
         q_diff_exact=None
@@ -236,12 +264,12 @@ def slip_displacement(
 ) -> SlipResult:
     """Slip displacement accumulated on loading 1 -> 2 near one edge, from the density (15).
 
-    Sign convention: h(x) is the change, from state 1 to state 2, of the tangential
-    displacement of the body the shear tractions q act on, relative to the other body, in the
-    direction of x increasing.  Coulomb friction makes the traction resist the slip, so in a
-    slip zone h has the sign opposite to q2 - q1: forward slip at the right edge (q2 - q1 =
-    mu (p2 + p1) > 0) gives h < 0.  h = 0 in the stick zone; unloading takes the same slip
-    back, so |h| is the slip amplitude of the steady cycle (peak to peak).
+    Sign convention (:data:`SLIP_CONVENTION`, the one every command, file and docstring uses):
+    delta(x) is the change from state 1 to state 2 of u_x(indenter) - u_x(lower body) at x,
+    along +x in the global frame.  In a slip zone it has the sign of q2 - q1 (Coulomb: the
+    sliding indenter drags the lower body along its own slip), as the reference solver's
+    ``slip.csv`` has it.  delta = 0 in the stick zone; unloading takes the same slip back, so
+    |delta| is the slip amplitude of the steady cycle (peak to peak).
 
     Parameters
     ----------
@@ -250,12 +278,25 @@ def slip_displacement(
     x
         Positions measured from the contact centre, inside the contact.
     E_star
-        Plane-strain modulus E* (the slip scales as 1/E*); taken from the law when it has one.
+        Plane-strain modulus E* (the slip scales as 1/E*), for a law that does not define it
+        (a table or module law); a law with its own E* is refused another.
+
+    The stick boundary is (17)'s (``b_paper``): the density (15) is derived for that b alone,
+    so ``b`` in the result is (17)'s, and a warning says so where the headline b differs.
     """
+    side = Edge.named(edge)
     evaluation = _one_cycle(law, cycle, mu)
-    q = _edge_values(evaluation, edge)
+    q = _edge_values(evaluation, side)
+    own = modulus_of(law.for_edge(side))
+    if E_star is not None and own is not None and float(E_star) != own:
+        raise InputError(
+            "E_star",
+            f"the {law.name} law already has its modulus E* = {own:.6g}: give E_star only for a "
+            "law that does not define one (a table or module law)",
+            E_star,
+        )
     if E_star is None:
-        E_star = getattr(law, "E_star", None)
+        E_star = own
         if E_star is None:
             raise InputError(
                 "E_star",
@@ -263,24 +304,26 @@ def slip_displacement(
                 "law does not define the modulus E*",
             )
     E_star = float(positive("E_star", E_star))
-    points, outward = _positions(x, edge, q["a2"])
-    direction = q["slip_direction"]
+    points, outward = _positions(x, edge, float(q.a2))
+    direction = float(q.slip_direction)
     # Along the edge's outward direction, then back to the global x (the left edge's outward
     # direction is -x, which flips the sign of a displacement measured along x).
     with np.errstate(all="ignore"):  # an overflow is refused below, not warned
         along = direction * slip_on_loading(
             outward,
-            q["b_consistent"],
-            q["a1"],
+            float(q.b_consistent),
+            float(q.a1),
             mu,
-            q["L_I1"],
-            q["L_I2"],
-            direction * q["L_II1"],
-            direction * q["L_II2"],
+            float(q.L_I1),
+            float(q.L_I2),
+            direction * float(q.L_II1),
+            direction * float(q.L_II2),
             E_star,
         )
-        global_sign = 1.0 if edge == "right" else -1.0
-        slip = global_sign * np.asarray(along, dtype=float)
+        # slip_on_loading gives the lower body's displacement relative to the indenter's
+        # (derivations/section3_slip_displacement.py); delta is the indenter's relative to
+        # the lower body's, hence the minus.
+        slip = -side.sign * np.asarray(along, dtype=float) + 0.0  # + 0.0: no -0 printed
         inverse_modulus = np.float64(1.0) / np.float64(E_star)
     if not np.isfinite(slip).all():
         if not np.isfinite(inverse_modulus):
@@ -293,10 +336,16 @@ def slip_displacement(
         raise InputError(
             "cycle", "the slip displacement overflows double precision at these positions"
         )
+    warnings = warning_texts(int(q.flags), law.for_edge(side)) + _other_half(points, outward, side)
+    if float(q.b) != float(q.b_consistent):
+        warnings.append(
+            f"the slip is integrated from (15), which holds only for the stick boundary of (17): "
+            f"b = {float(q.b_consistent):.12g} here, not the headline b = {float(q.b):.12g}"
+        )
     return SlipResult(
-        edge=edge,
+        edge=side.value,
         x=points.tolist(),
         slip=slip.tolist(),
-        b=q["b_consistent"],
-        warnings=warning_texts(int(evaluation.edges[edge].flags), law.for_edge(edge)),
+        b=float(q.b_consistent),
+        warnings=warnings,
     )

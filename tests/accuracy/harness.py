@@ -126,6 +126,7 @@ def draw_problem(
         "L_II1": L_II1,
         "L_II2": L_II2,
         "b": b,
+        "width": a1 - b,
         "dP_da1": dP_da1,
         "da_dP": 1 / dP_da1,
         "dL_I_dP": dL_I_dP,
@@ -134,6 +135,12 @@ def draw_problem(
         "dsigma_da": eta_ * dP_da1,
         "x_slip": x_slip,
         "x_contact": x_contact,
+        # the dimensionless groups of second_order.slip_zone_width_second_order_dimensionless
+        "lam_mu": lam_ / mu_,
+        "eta_a1_mu": eta_ * a1 / mu_,
+        "growth": dP_ / (dP_da1 * a1),
+        "multiplier": L_I1 * a1 ** mpmath.mpf(1.5) / dP_,
+        "multiplier_slope": dL_I_dP * a1 ** mpmath.mpf(1.5),
         "P_K": P1_ + dP_ * (mu_ - lam_) / (2 * mu_),
         # s = log a against u = log P: s' = P a'/a, s'' = s' + P^2 a''/a - s'^2.
         "log_slope1": P1_ / (dP_da1 * a1),

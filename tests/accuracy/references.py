@@ -526,6 +526,24 @@ register_quantity(
 )
 register_quantity(
     Quantity(
+        "validity.stick_ratio_first_order_from_multipliers",
+        ("mu", "L_I1", "L_II1", "a1", "dP", "da_dP"),
+        # The first-order term of (17): (28) with lam + pi eta a1/4 -> L_II1/L_I1.
+        lambda mu, L_I1, L_II1, a1, dP, da_dP: 1
+        - dP * da_dP / (2 * a1) * (L_II1 / (mu * L_I1) - 1),
+        ("17", "28"),
+    )
+)
+register_quantity(
+    Quantity(
+        "validity.slip_zone_growth_measure_from_multipliers",
+        ("mu", "L_I1", "L_II1", "a1", "dP", "da_dP"),
+        lambda mu, L_I1, L_II1, a1, dP, da_dP: dP * da_dP / a1 * abs(1 - L_II1 / (mu * L_I1)),
+        ("17", "27"),
+    )
+)
+register_quantity(
+    Quantity(
         "validity.slip_zone_width_first_order",
         ("mu", "lam", "eta", "a1", "dP", "da_dP"),
         # a1 (1 - b/a1) with b/a1 from (28).
@@ -1422,6 +1440,27 @@ register_quantity(
 )
 register_quantity(
     Quantity(
+        "second_order.slip_zone_width_second_order_dimensionless",
+        ("lam_mu", "eta_a1_mu", "growth", "multiplier", "multiplier_slope", "other_edge"),
+        # The width in units of a1 with mu = 1 and dP = 1: its groups stand for lam, eta, a',
+        # L_I1 and L_I' (the generated doc).
+        lambda lam_mu, eta_a1_mu, growth, multiplier, multiplier_slope, other_edge: (
+            _width_second_order(
+                mu=1,
+                lam=lam_mu,
+                eta=eta_a1_mu,
+                a1=1,
+                da_dP=growth,
+                d2a_dP2=_curvature_19(1, growth, multiplier, multiplier_slope),
+                dP=1,
+                other_edge=other_edge,
+            )
+        ),
+        ("19", "22", "28"),
+    )
+)
+register_quantity(
+    Quantity(
         "second_order.paper_stick_boundary_error_from_multiplier",
         ("mu", "lam", "eta", "a1", "da_dP", "L_I1", "dL_I_dP", "other_edge"),
         lambda L_I1, dL_I_dP, a1, da_dP, **k: _paper_error(
@@ -1760,6 +1799,91 @@ register_quantity(
         ("F-4",),
     )
 )
+
+
+# ---------------------------------------------------------------------------------------------
+# The laboratory match (derivations/lab_transfer.py): from (8), (11), (21), (29), (31), (19)
+
+
+def _hertz_matched_half_width(L_I1, L_I2, da):
+    """(31): L_I2/L_I1 = sqrt(a2/a1) with a2 = a1 + da, solved for a1."""
+    return da / ((L_I2 / L_I1) ** 2 - 1)
+
+
+def _matched_tension_slope(da, L_I1, L_I2, L_II1, L_II2):
+    """(21) at both states: L_II/L_I = lam + pi eta a/4, so eta = 4 (r2 - r1)/(pi da)."""
+    return 4 * (L_II2 / L_I2 - L_II1 / L_I1) / (mpmath.pi * da)
+
+
+def _flat_multiplier_unit_radius(a, c, E_star):
+    """(19) with the published rounded-flat law at R = 1 (L_I scales as 1/R)."""
+    return normal_multiplier_19(a, flat_load_slope_mp(a, c, 1, E_star))
+
+
+register_quantity(
+    Quantity(
+        "lab_transfer.peak_shear_change",
+        ("mu", "L_I1", "L_I2", "w=width", "da"),
+        lambda mu, L_I1, L_I2, w, da: mu * (L_I1 * mpmath.sqrt(w) + L_I2 * mpmath.sqrt(w + da)),
+        ("8", "11"),
+        where=lambda values: values["b"] < values["a1"],
+    )
+)
+register_quantity(
+    Quantity(
+        "lab_transfer.hertz_matched_half_width",
+        ("L_I1", "L_I2", "da"),
+        _hertz_matched_half_width,
+        ("31",),
+        laws=("hertz",),
+    )
+)
+register_quantity(
+    Quantity(
+        "lab_transfer.hertz_matched_radius",
+        ("E_star", "L_I1", "a1"),
+        lambda E_star, L_I1, a1: E_star * mpmath.sqrt(a1 / 2) / L_I1,  # (31) for R
+        ("31",),
+        laws=("hertz",),
+    )
+)
+register_quantity(
+    Quantity(
+        "lab_transfer.matched_tension_slope",
+        ("da", "L_I1", "L_I2", "L_II1", "L_II2"),
+        _matched_tension_slope,
+        ("21",),
+    )
+)
+register_quantity(
+    Quantity(
+        "lab_transfer.matched_shear_slope",
+        ("a1", "da", "L_I1", "L_I2", "L_II1", "L_II2"),
+        lambda a1, da, L_I1, L_I2, L_II1, L_II2: L_II1 / L_I1
+        - mpmath.pi * _matched_tension_slope(da, L_I1, L_I2, L_II1, L_II2) * a1 / 4,
+        ("21",),
+    )
+)
+register_quantity(
+    Quantity(
+        "lab_transfer.flat_rounded_matched_radius",
+        ("a=a1", "c", "E_star", "L_I=L_I1"),
+        lambda a, c, E_star, L_I: _flat_multiplier_unit_radius(a, c, E_star) / L_I,
+        ("19",),
+        laws=("flat-rounded",),
+    )
+)
+register_quantity(
+    Quantity(
+        "lab_transfer.flat_rounded_multiplier_ratio",
+        ("a1", "a2", "c"),
+        lambda a1, a2, c: _flat_multiplier_unit_radius(a2, c, 1)
+        / _flat_multiplier_unit_radius(a1, c, 1),
+        ("19",),
+        laws=("flat-rounded",),
+    )
+)
+
 
 # ---------------------------------------------------------------------------------------------
 # The error map's axes (derivations/edge_drive.py): (21) at state 1, L_II1/(mu L_I1) =

@@ -127,9 +127,8 @@ def bench_scalar(rounds: int, calls: int) -> list[Row]:
             measured.how("tension", "slip_zone", calls),
         ),
         Row(
-            "the array path (`asymslip.slip_zones.evaluate`, no result objects) on the Fig. 5 "
-            "cycle: what a cycle the one-cycle path leaves to it costs (a broken rule, an "
-            "asymmetric law)",
+            "the core alone (`asymslip.core.evaluation.evaluate`, no result objects) on the "
+            "Fig. 5 cycle: the one edge pipeline on Python floats, both edges",
             duration(t["evaluate"]),
             duration(t["slip_zone"]),
             times(measured.ratio("evaluate", "slip_zone")),

@@ -52,6 +52,8 @@ TARGET_EXPONENT = 1.1
 MEMORY_COUNT, TARGET_BYTES = 1_000_000, 2 * 10**9
 TARGET_ELEMENTS = 0.1
 THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+#: A run not finished in this time is reported as such (and the benchmark goes on).
+TIMEOUT_SECONDS = 3600
 
 CHILD = """
 import json, resource, sys, time
@@ -125,21 +127,28 @@ def busy_core(loaded: bool) -> Iterator[None]:
         loop.wait()
 
 
-def run_once(tree: Path | None, elements: int, threads: str, loaded: bool) -> Run:
-    """Solve the Fig. 5 cycle in a fresh process: the new solver, or today's from ``tree``."""
+def run_once(tree: Path | None, elements: int, threads: str, loaded: bool) -> Run | None:
+    """Solve the Fig. 5 cycle in a fresh process: the new solver, or today's from ``tree``.
+
+    None when it did not finish within ``TIMEOUT_SECONDS``.
+    """
     env = {key: value for key, value in os.environ.items() if key not in THREAD_VARIABLES}
     if threads == "1":
         env.update({variable: "1" for variable in THREAD_VARIABLES})
     if tree is not None:
         env["PYTHONPATH"] = os.pathsep.join([str(tree / "src"), str(tree / "generated")])
     with busy_core(loaded):
-        completed = subprocess.run(
-            [sys.executable, "-c", CHILD, str(elements)],
-            env=env,
-            capture_output=True,
-            text=True,
-            cwd=tempfile.gettempdir(),  # not the repository: the tree on PYTHONPATH decides
-        )
+        try:
+            completed = subprocess.run(
+                [sys.executable, "-c", CHILD, str(elements)],
+                env=env,
+                capture_output=True,
+                text=True,
+                cwd=tempfile.gettempdir(),  # not the repository: the tree on PYTHONPATH decides
+                timeout=TIMEOUT_SECONDS,
+            )
+        except subprocess.TimeoutExpired:
+            return None
     if completed.returncode:
         raise RuntimeError(f"N = {elements}: the solve failed: {completed.stderr.strip()}")
     data = json.loads(completed.stdout)
@@ -154,6 +163,7 @@ class Measurements:
     counts: tuple[int, ...]
     repeat: int
     with_today: bool
+    unfinished: tuple[tuple[str, int, str, bool], ...] = ()
 
     def best(self, solver: str, elements: int, threads: str, loaded: bool) -> Run | None:
         chosen = [
@@ -172,19 +182,28 @@ def measure(
 ) -> Measurements:
     """Interleaved rounds of today's solver and the new one, quiet and loaded."""
     runs: list[Run] = []
+    unfinished: list[tuple[str, int, str, bool]] = []
+
+    def keep(tree: Path | None, elements: int, threads: str, loaded: bool) -> None:
+        run = run_once(tree, elements, threads, loaded)
+        if run is None:
+            unfinished.append(("today" if tree else "new", elements, threads, loaded))
+        else:
+            runs.append(run)
+
     with todays_solver() if with_today else contextlib.nullcontext() as tree:
         for elements in counts:
             rounds = repeat if elements < 10**6 else 1  # a 10^6 round takes minutes
             for _ in range(rounds):
                 if tree is not None:
-                    runs.append(run_once(tree, elements, "1", False))
-                runs.append(run_once(None, elements, "default", False))
+                    keep(tree, elements, "1", False)
+                keep(None, elements, "default", False)
         for elements in loaded_counts:
-            runs.append(run_once(None, elements, "default", True))
+            keep(None, elements, "default", True)
             if tree is not None:
-                runs.append(run_once(tree, elements, "default", True))
-                runs.append(run_once(tree, elements, "1", True))
-        return Measurements(tuple(runs), tuple(counts), repeat, tree is not None)
+                keep(tree, elements, "default", True)
+                keep(tree, elements, "1", True)
+        return Measurements(tuple(runs), tuple(counts), repeat, tree is not None, tuple(unfinished))
 
 
 def growth_exponent(counts: Sequence[int], seconds: Sequence[float]) -> float:
@@ -205,28 +224,35 @@ def faster(today: float, new: float) -> str:
     return f"{today / new:.2f}x faster"
 
 
+UNFINISHED = f"did not finish within {TIMEOUT_SECONDS // 60} min"
+
+
 def rows(data: Measurements) -> list[Row]:
     """The table's rows: times, growth, memory, answers, loaded."""
     out: list[Row] = []
     for elements in data.counts:
         new = data.best("new", elements, "default", False)
         today = data.best("today", elements, "1", False)
-        assert new is not None
+        rounds = data.repeat if elements < 10**6 else 1
+        measure = f"reference solver, Fig. 5 cycle to its steady state, N = {count(elements)}"
+        if new is None:
+            out.append(Row(measure, f"skipped: {UNFINISHED}"))
+            continue
         target, met = "(information)", "-"
         if elements == TARGET_COUNT:
             target, met = f"<= {TARGET_SECONDS:g} s", verdict(new.wall <= TARGET_SECONDS)
-        rounds = data.repeat if elements < 10**6 else 1
         how = (
-            f"wall clock of `solve` in a fresh process, best of {rounds} "
-            + ("rounds alternating with today's (1 BLAS thread)" if today else "rounds")
+            f"wall clock of `solve` in a fresh process, best of {rounds} round(s)"
+            + (" alternating with today's (1 BLAS thread)" if data.with_today else "")
             + f"; CPU time {duration(new.cpu)}"
             + (f" (today's {duration(today.cpu)})" if today else "")
-            + f"; {new.steps} load steps, {new.periods} periods (today's "
-            + (f"{today.steps} and {today.periods})" if today else "not run)")
+            + f"; {new.steps} load steps, {new.periods} periods"
+            + (f" (today's {today.steps} and {today.periods})" if today else "")
+            + (f"; today's {UNFINISHED}" if today is None and data.with_today else "")
         )
         out.append(
             Row(
-                f"reference solver, Fig. 5 cycle to its steady state, N = {count(elements)}",
+                measure,
                 duration(new.wall),
                 duration(today.wall) if today else "",
                 faster(today.wall, new.wall) if today else "",
@@ -235,14 +261,16 @@ def rows(data: Measurements) -> list[Row]:
                 how,
             )
         )
-    walls = [data.best("new", n, "default", False).wall for n in data.counts]  # type: ignore[union-attr]
-    if len(walls) >= 2:
-        exponent = growth_exponent(data.counts, walls)
-        judged = data.counts[0] == COUNTS[0] and data.counts[-1] == COUNTS[-1]
+    finished = [n for n in data.counts if data.best("new", n, "default", False) is not None]
+    if len(finished) >= 2:
+        best = [data.best("new", n, "default", False) for n in finished]
+        walls = [run.wall for run in best if run is not None]
+        cpus = [run.cpu for run in best if run is not None]
+        judged = finished[0] == COUNTS[0] and finished[-1] == COUNTS[-1]
+        exponent = growth_exponent(finished, walls)
         out.append(
             Row(
-                f"same: growth of the time with N, {count(data.counts[0])} to "
-                f"{count(data.counts[-1])}",
+                f"same: growth of the time with N, {count(finished[0])} to {count(finished[-1])}",
                 f"N^{exponent:.2f}",
                 "",
                 "",
@@ -251,51 +279,50 @@ def rows(data: Measurements) -> list[Row]:
                 "least-squares slope of log wall clock on log N",
             )
         )
-        cpus = [data.best("new", n, "default", False).cpu for n in data.counts]  # type: ignore[union-attr]
         out.append(
             Row(
                 "same, by CPU time",
-                f"N^{growth_exponent(data.counts, cpus):.2f}",
+                f"N^{growth_exponent(finished, cpus):.2f}",
                 how="least-squares slope of log CPU time on log N (what a quiet machine sees)",
             )
         )
     largest = data.counts[-1]
     new = data.best("new", largest, "default", False)
     today = data.best("today", largest, "1", False)
-    assert new is not None
-    judged = largest == MEMORY_COUNT
-    out.append(
-        Row(
-            f"peak memory of a solve, N = {count(largest)}",
-            memory(new.peak),
-            memory(today.peak) if today else "",
-            f"{today.peak / new.peak:.2f}x" if today else "",
-            f"<= {TARGET_BYTES / 1e9:g} GB" if judged else "(information)",
-            verdict(new.peak <= TARGET_BYTES) if judged else "-",
-            "peak resident memory of the process (`VmHWM`), interpreter and NumPy included; "
-            "ratio = today's / new",
+    if new is not None:
+        judged = largest == MEMORY_COUNT
+        out.append(
+            Row(
+                f"peak memory of a solve, N = {count(largest)}",
+                memory(new.peak),
+                memory(today.peak) if today else "",
+                f"{today.peak / new.peak:.2f}x" if today else "",
+                f"<= {TARGET_BYTES / 1e9:g} GB" if judged else "(information)",
+                verdict(new.peak <= TARGET_BYTES) if judged else "-",
+                "peak resident memory of the process (`VmHWM`), interpreter and NumPy "
+                "included; ratio = today's / new",
+            )
         )
-    )
-    if data.with_today:
-        for elements in data.counts:
-            new = data.best("new", elements, "default", False)
-            today = data.best("today", elements, "1", False)
-            assert new is not None and today is not None
-            difference = (
-                max(abs(new.b_right - today.b_right), abs(new.b_left - today.b_left)) / new.element
+    for elements in data.counts:
+        new = data.best("new", elements, "default", False)
+        today = data.best("today", elements, "1", False)
+        if new is None or today is None:
+            continue
+        difference = max(abs(new.b_right - today.b_right), abs(new.b_left - today.b_left))
+        difference /= new.element
+        out.append(
+            Row(
+                f"stick boundary, new against today's, N = {count(elements)}",
+                f"{difference:.1e} elements".replace("e+00", "").replace("0.0 ", "0 "),
+                target=f"<= {TARGET_ELEMENTS:g} element",
+                met=verdict(difference <= TARGET_ELEMENTS),
+                how="largest |b_new - b_today| of the two edges, in elements",
             )
-            out.append(
-                Row(
-                    f"stick boundary, new against today's, N = {count(elements)}",
-                    f"{difference:.1e} elements".replace("e+00", "").replace("0.0 ", "0 "),
-                    target=f"<= {TARGET_ELEMENTS:g} element",
-                    met=verdict(difference <= TARGET_ELEMENTS),
-                    how="largest |b_new - b_today| of the two edges, in elements",
-                )
-            )
+        )
     for elements in sorted({r.elements for r in data.runs if r.loaded}):
         new = data.best("new", elements, "default", True)
-        assert new is not None
+        if new is None:
+            continue
         for threads in ("default", "1"):
             today = data.best("today", elements, threads, True)
             words = "default BLAS threads" if threads == "default" else "one BLAS thread"
@@ -306,9 +333,9 @@ def rows(data: Measurements) -> list[Row]:
                     duration(new.wall),
                     duration(today.wall) if today else "",
                     faster(today.wall, new.wall) if today else "",
-                    how=f"wall clock, one run each; the new solver with the default BLAS "
-                    f"threads (it calls no BLAS); CPU time {duration(new.cpu)}"
-                    + (f" (today's {duration(today.cpu)})" if today else ""),
+                    how="wall clock, one run each; the new solver with the default BLAS threads "
+                    f"(it calls no BLAS); CPU time {duration(new.cpu)}"
+                    + (f" (today's {duration(today.cpu)})" if today else f"; today's {UNFINISHED}"),
                 )
             )
     return out

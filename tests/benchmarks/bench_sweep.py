@@ -68,7 +68,7 @@ def floor(cases: Path, out: Path, law: HertzLaw) -> int:
     for side, prefix in (("right", ""), ("left", "left_")):
         edge = evaluation.edges[side]
         for key in (*NUMBER_KEYS, *MEASURE_KEYS):
-            columns[prefix + key] = pa.array(np.broadcast_to(edge.values[key], P1.shape))
+            columns[prefix + key] = pa.array(np.broadcast_to(getattr(edge, key), P1.shape))
         distinct, codes = np.unique(edge.flags, return_inverse=True)
         words = [
             WARNING_SEPARATOR.join(warning_texts(int(flags), law)) for flags in distinct.tolist()

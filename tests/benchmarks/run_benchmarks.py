@@ -24,6 +24,8 @@ imports    ``from asymslip import ...`` vs ``import numpy``                 (ben
 generate   ``make generate``, best of 3                                    (bench_startup)
 solver     the reference solver's cost against N, if ``bench_solver.py``
            exists                                                          (bench_solver_hook)
+dask       solve-batch (200 solves) and the sweep (10^7 rows) on 2 local
+           Dask workers vs one process; the overhead of a task             (bench_batch)
 
 Noise (the machine is shared): every ratio comes from candidates interleaved in the same
 rounds in one process, best of N, with the median of the per-round ratios beside it;
@@ -131,6 +133,11 @@ def sections(sizes: Sizes, quick: bool, seed: int) -> dict[str, tuple[str, Measu
 
         return bench_solver(quick, sizes.solver_repeat)
 
+    def dask() -> list[Row]:
+        from .bench_batch import bench_batch
+
+        return bench_batch(quick)
+
     return {
         "scalar": ("One scalar call", scalar),
         "laws": ("Cycles in bulk, law against law", laws),
@@ -140,6 +147,7 @@ def sections(sizes: Sizes, quick: bool, seed: int) -> dict[str, tuple[str, Measu
         "imports": ("Import time", imports),
         "generate": ("Code generation", generate),
         "solver": ("Reference solver", solver),
+        "dask": ("Parameter studies on Dask", dask),
     }
 
 

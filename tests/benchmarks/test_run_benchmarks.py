@@ -39,6 +39,13 @@ EXPECTED = {
     "Import time": ["`from asymslip import", "`from asymslip_gen import *`"],
     "Code generation": ["`make generate`"],
     "Reference solver": ["reference solver"],
+    "Parameter studies on Dask": [
+        "`LocalCluster`",
+        "`solve-batch`",
+        "sweep",
+        "overhead per task",
+        "overhead per task of a study",
+    ],
 }
 MET = {"yes", "**no**", "-"}
 MEASURED = re.compile(

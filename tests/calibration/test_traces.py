@@ -252,3 +252,60 @@ def test_an_fe_report_without_loads_is_refused_in_one_line(tmp_path):
         read_traces(path)
     with pytest.raises(InputError, match="3 pressure columns but 2 loads"):
         read_traces(path, loads=[1.0, 2.0])
+
+
+# --- issue 17: the right cause for a BOM, semicolons, a load given twice; the load balance ----
+def test_a_byte_order_mark_is_not_part_of_the_header(tmp_path):
+    path = _write(tmp_path, _rows(), comment="# exported as CSV UTF-8")
+    path.write_bytes(b"\xef\xbb\xbf" + path.read_bytes())
+    assert [t.P for t in read_traces(path).traces] == list(LOADS)
+
+
+def test_semicolons_between_fields_are_named_as_the_cause(tmp_path):
+    path = _write(tmp_path, [[";".join(row)] for row in _rows()], header="P;x;p")
+    with pytest.raises(InputError, match=r"the fields are separated by ';'"):
+        read_traces(path)
+
+
+def test_a_load_given_twice_in_two_places_is_named(tmp_path):
+    rows = _rows()
+    rows += rows[:41]  # P = 90 again after the other loads: lines 126-166
+    _refused(_write(tmp_path, rows), "P = 90 is given twice", "lines 3-43", "from line 126")
+
+
+def test_a_load_pasted_twice_in_a_row_is_named(tmp_path):
+    rows = _rows()
+    rows = rows[:41] + rows[:41] + rows[41:]  # P = 90 twice, one block after the other
+    _refused(_write(tmp_path, rows), "line 44", "P = 90 is given twice", "start again")
+
+
+def test_pressures_that_integrate_to_twice_the_load_are_refused(tmp_path):
+    """(48) doubled: the integral of p dx is 2 P; the slip zone would be 13 times too narrow."""
+    rows = [[P, x, repr(2 * float(p))] for P, x, p in _rows(121)]
+    _refused(_write(tmp_path, rows), "the pressures integrate to 1.99", "times the load")
+
+
+def test_a_load_balance_off_by_ten_percent_is_a_warning_in_the_calibration(tmp_path):
+    rows = [[P, x, repr(1.1 * float(p))] for P, x, p in _rows(121)]
+    calibration = calibrate(read_traces(_write(tmp_path, rows)))
+    assert [round(ratio, 2) for _, ratio in calibration.load_balance] == [1.1, 1.1, 1.1]
+    assert any("the pressures integrate to 1.1 times the load" in w for w in calibration.warnings)
+    # The two edges' balance (AS6) sees it too, far beyond its error.
+    assert any("the balance of the two edges (AS6) is 1.1" in w for w in calibration.warnings)
+    assert calibration.to_dict()["warnings"] == list(calibration.warnings)
+
+
+def test_consistent_traces_balance_to_one_within_a_thousandth(tmp_path):
+    calibration = calibrate(read_traces(_write(tmp_path, _rows(121))))
+    assert all(abs(ratio - 1) < 1e-3 for _, ratio in calibration.load_balance)
+    assert not any("integrate" in w for w in calibration.warnings)
+
+
+def test_a_smooth_trace_sampled_finely_keeps_every_point():
+    """20,000 exact points of (48): none is taken for a path report's interpolated point."""
+    from asymslip.calibration.edge_fit import nodal_points
+
+    a = float(HERTZ.half_width(REFERENCE_LOAD))
+    x = np.linspace(-1.5 * a, 1.5 * a, 20000)
+    p = HERTZ.pressure(x, REFERENCE_LOAD)
+    assert nodal_points(x, p)[p > 0].all()

@@ -168,6 +168,19 @@ def _second_order(draw: Draw) -> Points:
     return points
 
 
+def _second_order_groups(draw: Draw) -> Points:
+    """The second-order width's dimensionless groups (its generated doc), from such a cycle."""
+    points = _second_order(draw)
+    mu, a1, dP = points["mu"], points["a1"], points["dP"]
+    root = a1**1.5
+    points["lam_mu"] = points["lam"] / mu
+    points["eta_a1_mu"] = points["eta"] * a1 / mu
+    points["growth"] = points["da_dP"] * dP / a1
+    points["multiplier"] = points["L_I1"] * root / dP
+    points["multiplier_slope"] = points["dL_I_dP"] * root
+    return points
+
+
 def _in_slip_zone(draw: Draw) -> Points:
     """A cycle and x from below b (stick zone, where the result is 0) to just inside a2."""
     points = draw.cycle()
@@ -285,6 +298,26 @@ def _asymmetric_edges(draw: Draw) -> Points:
     return points
 
 
+def _lab_transfer(draw: Draw) -> Points:
+    """A forward-slipping cycle's edge (slip zone inside a1) and its width w = a1 - b > 0."""
+    points = draw.cycle()
+    # a1 - b of (17), written here from the paper: -A da/(A + C), A = mu L_I2 - L_II2 < 0,
+    # C = mu L_I1 + L_II1.
+    A = points["mu"] * points["L_I2"] - points["L_II2"]
+    C = points["mu"] * points["L_I1"] + points["L_II1"]
+    points["w"] = -A * points["da"] / (A + C)
+    return points
+
+
+def _flat_rounded_pair(draw: Draw) -> Points:
+    """A rounded flat at two half-widths a2 > a1 > c, and a multiplier L_I to reproduce."""
+    points = draw.flat_rounded()
+    points["a1"] = points["a"]
+    points["a2"] = points["a"] * (1 + draw.log_uniform(1e-9, 0.1))
+    points["L_I"] = draw.log_uniform(1e-2, 1e3)
+    return points
+
+
 #: Function name -> how to draw points inside its documented domain.
 DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     # corrective_slip, validity: one steady partial-slip cycle
@@ -301,6 +334,8 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "multiplier_growth_measure": _generic_slopes,
     "slip_zone_growth_measure": _cycle,
     "stick_ratio_first_order": _cycle,
+    "stick_ratio_first_order_from_multipliers": _cycle,
+    "slip_zone_growth_measure_from_multipliers": _cycle,
     "slip_zone_width_first_order": _cycle,
     # corrective_stick
     "shear_intensity_rate": _law,
@@ -330,6 +365,7 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "second_order_stick_boundary_gap_from_multiplier": _generic_slopes,
     # second_order
     "slip_zone_width_second_order_from_multiplier": _second_order,
+    "slip_zone_width_second_order_dimensionless": _second_order_groups,
     "slip_zone_width_second_order": _second_order,
     "stick_boundary_second_order": _second_order,
     "slip_zone_width_second_coefficient": _second_order,
@@ -378,6 +414,14 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "gap_opening_influence": _influence,
     "relative_slip_influence": _influence,
     "tension_relative_displacement": _tension,
+    # lab_transfer: the laboratory match
+    "peak_shear_change": _lab_transfer,
+    "hertz_matched_half_width": _lab_transfer,
+    "hertz_matched_radius": _lab_transfer,
+    "matched_tension_slope": _lab_transfer,
+    "matched_shear_slope": _lab_transfer,
+    "flat_rounded_matched_radius": _flat_rounded_pair,
+    "flat_rounded_multiplier_ratio": _flat_rounded_pair,
     # edge_drive (the error map's axes)
     "tension_share": _tension_share,
     "tension_slope_for_share": _tension_share,

@@ -192,3 +192,30 @@ def test_chunks_keep_lines_errors_and_text(tmp_path, engine):
     assert parts[1].line.tolist() == LINES[4:8]
     assert parts[1].errors == {1: ERRORS[5], 2: ERRORS[6], 3: ERRORS[7]}
     assert parts[1].text["case"].to_list() == ["two\nlines", "", "missing", "odd-nan"]
+
+
+WRONG_FIELD_COUNTS = {
+    "one short row": ("P1,Q1,P2,Q2\n100,0,105\n", {0: "line has 3 fields, the header has 4"}),
+    "one long row": ("P1,Q1,P2,Q2\n1,000,0,105,1\n", {0: "line has 5 fields, the header has 4"}),
+    "both, quoted": (
+        'P1,Q1,P2,Q2\n"100",0,105\n1,000,0,105,1\n',
+        {0: "line has 3 fields, the header has 4", 1: "line has 5 fields, the header has 4"},
+    ),
+    "both, after a comment": (
+        "# c\nP1,Q1,P2,Q2\n100,0,105\n\n1,000,0,105,1",
+        {0: "line has 3 fields, the header has 4", 1: "line has 5 fields, the header has 4"},
+    ),
+}
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+@pytest.mark.parametrize("name", list(WRONG_FIELD_COUNTS))
+def test_a_file_whose_every_row_has_the_wrong_field_count_gives_each_row_its_error(
+    tmp_path, engine, name
+):
+    """pyarrow refuses to parse an empty body ("Empty CSV file"): with no well-formed row
+    left, the reader must still mark every row, as the NumPy engine does (issue 17)."""
+    text, expected = WRONG_FIELD_COUNTS[name]
+    table = read(tmp_path, text, engine)
+    assert {row: message.split(":")[0] for row, message in table.errors.items()} == expected
+    assert all(np.isnan(table.values["P1"])) and table.text["P1"].to_list() == [""] * len(expected)

@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import json
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -72,7 +72,13 @@ class Calibration:
         True when only one edge was given, so the contact is taken as symmetric about the
         origin.
     warnings
-        What the data do not support, in words (e.g. an edge that does not advance with P).
+        What the data do not support, in words (e.g. an edge that does not advance with P, a
+        load balance far from 1).
+    notes
+        What the reader did to the data (an FE result: the steps used, pressures clipped).
+    load_balance
+        (P, the integral of p dx over P) of each trace that spans the whole contact: 1 for
+        consistent data (see :func:`load_balance`).
     """
 
     right: tuple[EdgeFit, ...]
@@ -81,6 +87,8 @@ class Calibration:
     source: str
     symmetric_about_origin: bool = False
     warnings: tuple[str, ...] = field(default=())
+    notes: tuple[str, ...] = field(default=())
+    load_balance: tuple[tuple[float, float], ...] = field(default=())
 
     def fits(self, side: Side) -> tuple[EdgeFit, ...]:
         """The fits of one edge."""
@@ -128,6 +136,8 @@ class Calibration:
             "right": [_fit_to_dict(fit, self.origin) for fit in self.right],
             "left": [_fit_to_dict(fit, self.origin) for fit in self.left],
             "warnings": list(self.warnings),
+            "notes": list(self.notes),
+            "load_balance": [{"P": P, "balance": ratio} for P, ratio in self.load_balance],
         }
 
     def save(self, path: str | Path) -> None:
@@ -177,6 +187,15 @@ class Calibration:
         warnings = data.get("warnings", [])
         if not isinstance(warnings, list) or not all(isinstance(w, str) for w in warnings):
             raise fail("'warnings' must be a list of strings")
+        notes = data.get("notes", [])
+        if not isinstance(notes, list) or not all(isinstance(n, str) for n in notes):
+            raise fail("'notes' must be a list of strings")
+        balance = data.get("load_balance", [])
+        if not isinstance(balance, list) or not all(isinstance(b, dict) for b in balance):
+            raise fail("'load_balance' must be a list of objects with P and balance")
+        balances = tuple(
+            (_number(b, "P", fail, positive=True), _number(b, "balance", fail)) for b in balance
+        )
         edges = {}
         for side in SIDES:
             entries = data.get(side, [])
@@ -199,6 +218,8 @@ class Calibration:
             str(data.get("source", source)),
             symmetric,
             tuple(warnings),
+            tuple(notes),
+            balances,
         )
 
 
@@ -319,7 +340,9 @@ def calibrate(
                 )
             seen[key] = trace.where()
             try:
-                fit = fit_edge(trace.x, trace.p, side, trace.P, noise)
+                fit = fit_edge(
+                    trace.x, trace.p, side, trace.P, noise, fe_nodes=trace.unit == "node"
+                )
             except EdgeFitError as error:
                 raise InputError(
                     "traces", f"{trace.where(error.node)}: {side} edge: {error.rule}"
@@ -365,8 +388,99 @@ def calibrate(
             f"only the {side} edge has data: the contact is taken as symmetric about "
             "x = 0 (the width in L_II is twice the edge's distance from 0)"
         )
-    return Calibration(
-        right, left, float(origin), traces.source, symmetric, tuple(w for w in warnings if w)
+    balances = load_balance(traces, fits)
+    warnings += _balance_warnings(balances)
+    calibration = Calibration(
+        right,
+        left,
+        float(origin),
+        traces.source,
+        symmetric,
+        tuple(w for w in warnings if w),
+        traces.notes,
+        tuple(balances),
+    )
+    return replace(calibration, warnings=calibration.warnings + _edge_balance_warning(calibration))
+
+
+#: A load balance (the integral of p dx over P) further from 1 than this is a warning ...
+BALANCE_WARNING = 0.05
+#: ... and further than this a refusal: the loads or the pressure units do not fit the data.
+BALANCE_LIMIT = 0.25
+
+
+def load_balance(traces: Traces, fits: dict[Side, list[EdgeFit]]) -> list[tuple[float, float]]:
+    """(P, integral of p dx / P) for each trace that holds the whole contact.
+
+    The integral is the trapezoidal rule over the nodes in contact, plus, at each edge, the
+    fitted expansion integrated from the last node in contact to the fitted edge (the
+    trapezoidal rule would miss the square-root cap there): (2/3) L_I d^(3/2) + (2/5) c
+    d^(5/2) with d that distance.  Refuses a balance further from 1 than BALANCE_LIMIT.
+    """
+    found: list[tuple[float, float]] = []
+    by_load = {side: {fit.P: fit for fit in fits[side]} for side in SIDES}
+    for trace in traces.traces:
+        if trace.side is not None:
+            continue
+        right, left = by_load["right"].get(trace.P), by_load["left"].get(trace.P)
+        if right is None or left is None:
+            continue
+        inside = (trace.x > left.x_edge) & (trace.x < right.x_edge) & (trace.p > 0)
+        if inside.sum() < 2:
+            continue
+        x, p = trace.x[inside], trace.p[inside]
+        total = float(np.sum(0.5 * (p[1:] + p[:-1]) * np.diff(x)))
+        for fit, d in ((right, right.x_edge - x[-1]), (left, x[0] - left.x_edge)):
+            d = max(d, 0.0)
+            total += 2 / 3 * fit.L_I * d**1.5 + 2 / 5 * fit.c * d**2.5
+        ratio = total / trace.P
+        if abs(ratio - 1) > BALANCE_LIMIT:
+            raise InputError(
+                "traces",
+                f"{trace.where()}: the pressures integrate to {ratio:.4g} times the load "
+                f"(the integral of p dx must be P, within {BALANCE_LIMIT:.0%}): the loads, or "
+                "the units of the pressures or of x, do not fit the data",
+            )
+        found.append((trace.P, ratio))
+    return found
+
+
+def _balance_warnings(balances: list[tuple[float, float]]) -> list[str]:
+    off = [(P, ratio) for P, ratio in balances if abs(ratio - 1) > BALANCE_WARNING]
+    if not off:
+        return []
+    listed = ", ".join(f"{ratio:.4g} times the load at P = {P:.6g}" for P, ratio in off)
+    return [
+        f"the pressures integrate to {listed} (1 for consistent data; more "
+        f"than {BALANCE_WARNING:.0%} off): check the loads and the units; a(P) and L_I(P), "
+        "and the slip zone with them, are only as right as the loads"
+    ]
+
+
+def _edge_balance_warning(calibration: Calibration) -> tuple[str, ...]:
+    """The two edges' balance (AS6) off 1 by more than 3 times its error and 5 %: a warning."""
+    if len(calibration.sides) != 2:
+        return ()
+    try:
+        law = calibration.law()
+    except InputError:
+        return ()  # the law's own refusal says why, where it is built
+    low, high = law.common_range
+    loads = calibration.loads[(calibration.loads >= low) & (calibration.loads <= high)]
+    if loads.size == 0:
+        return ()
+    balance = np.asarray(law.multiplier_balance(loads), dtype=np.float64)
+    error = np.asarray(law.error_of(lambda fitted: fitted.multiplier_balance(loads)))
+    off = (np.abs(balance - 1) > 3 * error) & (np.abs(balance - 1) > BALANCE_WARNING)
+    if not off.any():
+        return ()
+    listed = ", ".join(
+        f"{b:.4g} +- {e:.2g} at P = {P:.6g}"
+        for P, b, e in zip(loads[off], balance[off], error[off], strict=True)
+    )
+    return (
+        f"the balance of the two edges (AS6) is {listed}, not 1: the two edges' a(P) and "
+        "L_I(P) are not those of one contact carrying these loads (check the loads and units)",
     )
 
 

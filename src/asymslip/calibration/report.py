@@ -119,5 +119,11 @@ def format_calibration(calibration: Calibration) -> str:
                 for f, e in zip(found["balance"], found["balance_error"], strict=True)
             )
             lines.append(f"balance of the two edges (exactly 1 for consistent data): {pairs}")
+    if calibration.load_balance:
+        lines.append(
+            "load balance, the integral of p dx over P (1 for consistent data): "
+            + ", ".join(f"{ratio:.4g} at P = {P:.6g}" for P, ratio in calibration.load_balance)
+        )
+    lines += [f"read: {note}" for note in calibration.notes]
     lines += [f"warning: {warning}" for warning in calibration.warnings]
     return "\n".join(lines)

@@ -71,19 +71,23 @@ class Trace:
     side: Side | None
     rows: NDArray[np.intp]
     source: str
+    label: str = ""
+    unit: str = ""
 
     @property
     def from_file(self) -> bool:
         return self.source != ARRAYS
 
     def where(self, node: int | None = None) -> str:
-        """``traces.csv: line 17`` (or ``lines 2-41`` for the whole trace), or the array rows."""
-        word = "line" if self.from_file else "row"
+        """``traces.csv: line 17`` (or ``lines 2-41`` for the whole trace), the array rows, or
+        for an FE result its step and node (``run.frd: step 7: node 57``)."""
+        word = self.unit or ("line" if self.from_file else "row")
         if node is None:
             span = f"{word}s {self.rows.min()}-{self.rows.max()}"
         else:
             span = f"{word} {self.rows[node]}"
-        return f"{self.source}: {span} (P = {self.P:.6g}{self._side_text()})"
+        label = f"{self.label}: " if self.label else ""
+        return f"{self.source}: {label}{span} (P = {self.P:.6g}{self._side_text()})"
 
     def _side_text(self) -> str:
         return f", side {self.side}" if self.side else ""
@@ -102,6 +106,8 @@ class Traces:
 
     traces: tuple[Trace, ...]
     source: str
+    #: What the reader did to the data (FE results: the steps used, clipped pressures ...).
+    notes: tuple[str, ...] = ()
 
     @property
     def loads(self) -> FloatArray:
@@ -152,14 +158,42 @@ class Traces:
 
 
 # --- reading -------------------------------------------------------------------------------------
-def read_traces(path: str | Path, *, loads: Sequence[float] | None = None) -> Traces:
-    """Read pressure traces from a long-format CSV, or from an FE report.
+#: Suffixes read as CalculiX results; everything meshio reads is tried as a mesh file.
+CALCULIX_RESULTS = (".frd",)
+CALCULIX_PRINTOUT = (".dat",)
+MESH_SUFFIXES = (".vtu", ".vtk", ".xdmf", ".xmf", ".msh", ".med", ".h5m", ".mdpa", ".ply")
 
-    A file whose first data line has commas is read as CSV (columns ``P, x, p``, optional
-    ``side``); otherwise as a whitespace-separated FE report (:func:`read_fe_report`), which
-    needs ``loads`` unless its column headers name them.
+
+def read_traces(
+    path: str | Path, *, loads: Sequence[float] | None = None, field: str | None = None
+) -> Traces:
+    """Read pressure traces from a long-format CSV, an FE report, or FE results.
+
+    By suffix: ``.frd`` CalculiX results and ``.dat`` its printout (:mod:`.fe_traces`), a mesh
+    file meshio reads (``.vtu``, ``.vtk``, ``.xdmf``, ...; :mod:`.mesh_file`, the pressure
+    field named ``field``, CPRESS by default); otherwise text: a file whose first data line
+    has commas is read as CSV (columns ``P, x, p``, optional ``side``), one with spaces as a
+    whitespace-separated FE report (:func:`read_fe_report`), which needs ``loads`` unless its
+    column headers name them.
     """
     path = Path(path)
+    suffix = path.suffix.lower()
+    if field is not None and suffix not in MESH_SUFFIXES:
+        raise InputError(
+            "field", f"is for mesh files ({', '.join(MESH_SUFFIXES)}), not {path.name}"
+        )
+    if suffix in CALCULIX_RESULTS + CALCULIX_PRINTOUT + MESH_SUFFIXES:
+        from . import fe_traces, mesh_file  # the FE readers load only for FE files
+
+        if not path.is_file():
+            raise InputError("traces", f"cannot read {path}: no such file")
+        if suffix in CALCULIX_RESULTS:
+            found = fe_traces.frd_traces(path, loads)
+        elif suffix in CALCULIX_PRINTOUT:
+            found = fe_traces.dat_traces(path, loads)
+        else:
+            found = mesh_file.mesh_traces(path, loads, field)
+        return _from_fe(found)
     text = _read_text(path)
     first = next(
         (
@@ -169,6 +203,12 @@ def read_traces(path: str | Path, *, loads: Sequence[float] | None = None) -> Tr
         ),
         "",
     )
+    if ";" in first and "," not in first:
+        raise InputError(
+            "traces",
+            f"{path}: the fields are separated by ';' (a spreadsheet in a locale with decimal "
+            "commas writes that): write the CSV with ',' between fields and '.' in numbers",
+        )
     if "," in first:
         if loads is not None:  # given for nothing would let a wrong guess pass unnoticed
             raise InputError(
@@ -178,6 +218,20 @@ def read_traces(path: str | Path, *, loads: Sequence[float] | None = None) -> Tr
             )
         return _read_csv(path, text)
     return _read_report(path, text, loads)
+
+
+def _from_fe(found: object) -> Traces:
+    """Traces of an FE result (:class:`.fe_traces.FeTraces`): one per used step."""
+    from .fe_traces import FeTraces
+
+    assert isinstance(found, FeTraces)
+    count = found.x.size
+    P = np.repeat(found.loads, count)
+    x = np.tile(found.x, found.loads.size)
+    p = found.pressure.ravel()
+    rows = np.tile(found.nodes, found.loads.size)
+    traces = _assemble(P, x, p, None, rows, found.source, unit="node", labels=found.labels)
+    return Traces(traces.traces, traces.source, found.notes)
 
 
 def read_fe_report(path: str | Path, loads: Sequence[float] | None = None) -> Traces:
@@ -196,8 +250,13 @@ def read_fe_report(path: str | Path, loads: Sequence[float] | None = None) -> Tr
 
 def _read_text(path: Path) -> str:
     try:
-        return path.read_text()
-    except (OSError, UnicodeDecodeError) as error:
+        # A spreadsheet's "CSV UTF-8" starts with a byte-order mark: not part of the header.
+        return path.read_text(encoding="utf-8-sig")
+    except UnicodeDecodeError as error:
+        raise InputError(
+            "traces", f"{path}: not UTF-8 text (byte {error.start}): save it as UTF-8 CSV"
+        ) from None
+    except OSError as error:
         raise InputError("traces", f"cannot read {path}: {error}") from None
 
 
@@ -356,9 +415,15 @@ def _assemble(
     side: Sequence[str] | None,
     rows: NDArray[np.intp],
     source: str,
+    *,
+    unit: str = "",
+    labels: Sequence[str] = (),
 ) -> Traces:
-    """Group rows into traces by (P, side), checking every value where it stands."""
-    word = "line" if source != ARRAYS else "row"
+    """Group rows into traces by (P, side), checking every value where it stands.
+
+    ``unit`` and ``labels`` name the rows of an FE result (``node`` and each load's step).
+    """
+    word = unit or ("line" if source != ARRAYS else "row")
 
     def at(row: int) -> str:
         return f"{source}: {word} {rows[row]}"
@@ -381,11 +446,13 @@ def _assemble(
     groups: dict[tuple[float, str | None], list[int]] = {}
     for row in range(P.size):
         groups.setdefault((float(P[row]), side[row] if side is not None else None), []).append(row)
+    label_of = dict(zip(np.unique(P).tolist(), labels, strict=False)) if labels else {}
     traces = []
     for (load, which), members in sorted(
         groups.items(), key=lambda item: (item[0][0], str(item[0][1]))
     ):
         members_ = np.array(members)
+        _check_given_once(load, which, members_, x, rows, source, word)
         trace = Trace(
             P=load,
             x=x[members_],
@@ -393,6 +460,8 @@ def _assemble(
             side=which,  # type: ignore[arg-type]
             rows=rows[members_],
             source=source,
+            label=label_of.get(load, ""),
+            unit=unit,
         )
         _check_trace(trace)
         traces.append(trace)
@@ -404,6 +473,37 @@ def _assemble(
             "law a(P) needs traces at two or more loads",
         )
     return Traces(tuple(traces), source)
+
+
+def _check_given_once(
+    load: float,
+    side: str | None,
+    members: NDArray[np.intp],
+    x: FloatArray,
+    rows: NDArray[np.intp],
+    source: str,
+    word: str,
+) -> None:
+    """Refuse a load whose rows come twice: in two separate runs, or restarting in x."""
+    what = f"P = {load:.6g}" + (f", side {side}" if side else "")
+    # Arrays from Python may come in any order of rows; a file's rows are in file order.
+    gaps = np.flatnonzero(np.diff(members) > 1) if source != ARRAYS else np.array([], int)
+    if gaps.size:
+        first_end, second_start = members[gaps[0]], members[gaps[0] + 1]
+        raise InputError(
+            "traces",
+            f"{source}: {what} is given twice: {word}s {rows[members[0]]}-{rows[first_end]} and "
+            f"again from {word} {rows[second_start]}: give each load once",
+        )
+    xs = x[members]
+    restart = np.flatnonzero((np.diff(xs) <= 0) & (xs[1:] <= xs[0]))
+    if restart.size:
+        again = members[restart[0] + 1]
+        raise InputError(
+            "traces",
+            f"{source}: {word} {rows[again]}: {what} is given twice: its nodes start again "
+            f"at x = {x[again]:.6g} after {word} {rows[again - 1]}: give each load once",
+        )
 
 
 def _check_trace(trace: Trace) -> None:

@@ -15,11 +15,15 @@ def register(commands: argparse._SubParsersAction) -> None:
         "calibrate",
         help="calibrate each contact edge from pressure traces (e.g. from a finite-element run)",
         description="Read nodal contact pressures in long format (columns P, x, p; optional "
-        "side; one row per node per load, two or more loads) or an FE path report (x or arc "
-        "length and CPRESS, with --loads), fit each edge's position a and multiplier L_I of "
-        "(4) near the edge with the next term of the expansion, and build each edge's law "
-        "a(P), L_I(P) with error estimates.  Use the saved calibration with --law calibrated "
-        "--calibration FILE.json in slip-zone, traction and sweep.",
+        "side; one row per node per load, two or more loads), an FE path report (x or arc "
+        "length and CPRESS, with --loads), CalculiX results (.frd with CONTACT output, or the "
+        ".dat of *CONTACT PRINT beside its .frd or .inp: each step's load from the reaction "
+        "force of a node set where the file has one, else --loads) or a mesh file meshio "
+        "reads (.vtu, .vtk, .xdmf, ...; the pressure field named by --field), fit each "
+        "edge's position a and multiplier L_I of (4) near the edge with the next term of "
+        "the expansion, and build each edge's law a(P), L_I(P) with error estimates.  Use the "
+        "saved calibration with --law calibrated --calibration FILE.json in slip-zone, "
+        "traction and sweep.",
     )
     calibrate.add_argument("traces", type=Path, metavar="TRACES", help="the pressure traces")
     calibrate.add_argument(
@@ -27,7 +31,14 @@ def register(commands: argparse._SubParsersAction) -> None:
         type=number,
         nargs="+",
         metavar="P",
-        help="the load of each trace of an FE report (in file order)",
+        help="the load of each trace of an FE report, or of each step of an FE result that "
+        "does not give it (in file order)",
+    )
+    calibrate.add_argument(
+        "--field",
+        metavar="NAME",
+        help="a mesh file's nodal pressure field (default CPRESS; fields NAME_1, NAME-2, ... "
+        "are one load each)",
     )
     calibrate.add_argument(
         "--origin",
@@ -55,11 +66,21 @@ def register(commands: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     from ..calibration import calibrate, read_traces
     from ..calibration.report import checks, format_calibration
-    from ..files.atomic import refuse_same_file
+    from ..files.collisions import Input, Output, refuse_overwriting_inputs
 
     if args.out is not None:  # before anything is read: the traces must survive a typo
-        refuse_same_file(args.out, "out", args.traces)
-    traces = read_traces(args.traces, loads=args.loads)
+        # A CalculiX .dat takes its coordinates from the job's .frd or .inp beside it.
+        beside = (
+            [args.traces.with_suffix(".frd"), args.traces.with_suffix(".inp")]
+            if args.traces.suffix.lower() == ".dat"
+            else []
+        )
+        refuse_overwriting_inputs(
+            [Input(args.traces, "traces", "the traces")]
+            + [Input(path, "traces", "the job's coordinates") for path in beside],
+            [Output(args.out, "out")],
+        )
+    traces = read_traces(args.traces, loads=args.loads, field=args.field)
     calibration = calibrate(traces, noise=args.noise, origin=args.origin)
     if args.out is not None:
         calibration.save(args.out)

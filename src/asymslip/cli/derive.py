@@ -9,7 +9,7 @@ from .laws import parse_assignments
 from .parser import number
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     derive = commands.add_parser(
         "derive",
         help="derive a contact law P(a) given as a formula into a law module",

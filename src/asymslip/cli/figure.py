@@ -8,11 +8,12 @@ import sys
 from pathlib import Path
 
 from ..errors import InputError
+from ..files.collisions import Input, Output, refuse_overwriting_inputs
 
 FIGURES = ("fig5", "error-map")
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     figure = commands.add_parser(
         "figure",
         help="draw one of the paper's figures, or the error map",
@@ -102,7 +103,7 @@ def _fig5(args: argparse.Namespace) -> int:
 
 
 def _error_map(args: argparse.Namespace) -> int:
-    from ..figures import ERROR_MAP_CSV, stale_error_map_lines, write_error_map
+    from ..figures import ERROR_MAP_CSV, ERROR_MAP_PNG, stale_error_map_lines, write_error_map
     from ..files.progress import Progress
     from ..solver.error_map import map_cases
 
@@ -123,6 +124,11 @@ def _error_map(args: argparse.Namespace) -> int:
         print(f"{path}: fresh ({rows} recomputed)")
         return 0
     if args.redraw:
+        data = args.data if args.data is not None else args.out
+        refuse_overwriting_inputs(
+            [Input(data / ERROR_MAP_CSV, "data", "the error map's data")],
+            [Output(args.out, "out", (ERROR_MAP_PNG,))],
+        )
         paths = write_error_map(args.out, args.data, redraw=True)
     else:
         with Progress(len(map_cases()), label="error map (cycles)") as bar:

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import InputError
+from ..files.collisions import Input
 from ..laws import ContactLaw, FlatRoundedLaw, HertzLaw, PowerLaw
 from .parser import number
 
@@ -104,6 +105,10 @@ OPTION_OF = {
     "cases": "CASES",
     "chunk_rows": "--chunk-rows",
     "workers": "--workers",
+    "scheduler": "--scheduler",
+    "retries": "--retries",
+    "cases_per_task": "--cases-per-task",
+    "rows_per_task": "--rows-per-task",
     "cycle": "the load cycle (--P1 --Q1 --P2 --Q2 --sigma1 --sigma2 --mu)",
     "figure": "figure",
     "derive": "derive",
@@ -119,6 +124,10 @@ OPTION_OF = {
     "steps": "--steps",
     "profile_table": "--profile-table",
     "data": "--data",
+    "field": "--field",
+    "nu": "--nu",
+    "elements_per_half_width": "--elements-per-half-width",
+    "ccx": "ccx",
 }
 
 
@@ -179,6 +188,26 @@ def build_law(args: argparse.Namespace) -> ContactLaw:
         if getattr(args, name) is None:
             raise InputError(name, f"is required with --law {args.law}")
     return entry.build(args)
+
+
+#: The law options that name a file the law is read from, and what the file is.
+LAW_FILES = {
+    "table": "the table law",
+    "module": "the law module",
+    "calibration": "the calibration",
+}
+
+
+def law_inputs(args: argparse.Namespace) -> list[Input]:
+    """The files the chosen ``--law`` reads, for
+    :func:`~asymslip.files.collisions.refuse_overwriting_inputs`."""
+    entry = LAWS.get(args.law)
+    required = entry.required if entry is not None else ()
+    return [
+        Input(Path(getattr(args, option)), option, what)
+        for option, what in LAW_FILES.items()
+        if option in required and getattr(args, option, None) is not None
+    ]
 
 
 def parse_assignments(option: str, items: list[str] | None) -> dict[str, float]:

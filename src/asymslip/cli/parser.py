@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 import math
 import re
-from typing import NoReturn
+from typing import Any, NoReturn
 
 #: A negative number as people type it: -3, -3., -.5, -1e2, -1.5E-3, -inf, -nan.
 NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$|^-(inf|infinity|nan)$", re.I)
@@ -24,12 +24,12 @@ NOT_AN_OPTION = re.compile(r"^-(?!-)[\w-]*[^\w=-][^=]*$")
 class Parser(argparse.ArgumentParser):
     """argparse with one-line errors (no usage dump), exit status 2, negative numbers."""
 
-    def __init__(self, *args, **kwargs) -> None:
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
         # argparse's own pattern (private, stable since Python 3.2) knows no exponent.
         self._negative_number_matcher = NEGATIVE_NUMBER
 
-    def _parse_optional(self, arg_string: str):  # noqa: ANN202 - argparse's private hook
+    def _parse_optional(self, arg_string: str) -> Any:  # argparse's private hook
         # argparse takes anything that starts with "-" for an option unless it has a space.
         if NOT_AN_OPTION.match(arg_string):
             return None

@@ -11,13 +11,15 @@ from .cycle_options import add_cycle_options, build_cycle
 from .laws import add_law_options, build_law
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = commands.add_parser(
         "slip-zone",
         help="slip-zone size at the contact edges for one load cycle",
-        description="Stick boundary b from (22), slip-zone width a1 - b, first-order b (28), "
-        "corrective-stick b (40), exact b = a(P_K) when eta = 0, the slip direction and the "
-        "validity measures (24)-(27).  A cycle that is not a steady partial-slip state (gross "
+        description="The headline stick boundary b (second order in dP with both edges and "
+        "bulk tension, b2; README 'How far to trust b') and its stated accuracy, the slip-zone "
+        "width a1 - b, the paper's (22) as b_paper, first-order b (28), corrective-stick b "
+        "(40), exact b = a(P_K) when eta = 0, the slip direction and the validity measures "
+        "(24)-(27).  A cycle that is not a steady partial-slip state (gross "
         "sliding, no stick boundary, slip zones covering the contact) is refused.",
     )
     add_law_options(parser)

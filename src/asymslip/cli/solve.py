@@ -17,8 +17,9 @@ from typing import Any
 
 from ..cycle import LoadCycle
 from ..errors import InputError
+from ..files.collisions import Input, Output, refuse_overwriting_inputs
 from ..rules import Verdict, check_friction, check_partial_slip
-from .laws import add_law_options, build_law, parse_assignments
+from .laws import add_law_options, build_law, law_inputs, parse_assignments
 from .parser import number, whole_number
 
 
@@ -155,7 +156,13 @@ def _loading(args: argparse.Namespace) -> tuple[object, LoadCycle | None]:
 def run(args: argparse.Namespace) -> int:
     from ..solver import RefinementResult, SolverError, refine, solve, write_outputs
     from ..solver.compare import with_asymptotes
+    from ..solver.outputs import FILES
 
+    reads = [Input(args.path, "path", "the load path")] if args.path is not None else []
+    if args.profile_table is not None:
+        reads.append(Input(args.profile_table, "profile_table", "the profile table"))
+    written = Output(args.out, "out", FILES) if args.out is not None else None
+    refuse_overwriting_inputs([*reads, *law_inputs(args)], [written])
     contact, law = _contact(args)
     loading, cycle = _loading(args)
     E_star = args.E_star if law is None else None

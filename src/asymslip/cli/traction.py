@@ -5,7 +5,12 @@ from __future__ import annotations
 import argparse
 import json
 
-from ..tractions import NEAR_EDGE_FRACTION, slip_displacement, traction_difference
+from ..tractions import (
+    NEAR_EDGE_FRACTION,
+    SLIP_CONVENTION,
+    slip_displacement,
+    traction_difference,
+)
 from .cycle_options import add_cycle_options, build_cycle
 from .laws import add_law_options, build_law
 from .parser import number
@@ -31,7 +36,7 @@ def _common(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object")
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     traction = commands.add_parser(
         "traction",
         help="shear-traction difference q2 - q1 near a contact edge",
@@ -44,20 +49,18 @@ def register(commands: argparse._SubParsersAction) -> None:
     _common(traction)
     traction.add_argument(
         "--b",
-        choices=["consistent", "exact"],
-        default="consistent",
-        help="stick boundary in (15): consistent = (17)/(22) (default), "
-        "exact = a(P_K), the paper's choice for Fig. 5",
+        choices=["headline", "consistent", "exact"],
+        default="headline",
+        help="stick boundary in (49): headline = slip-zone's b (b2, default), consistent = "
+        "(17)/(22), for which (15) solves (12), exact = a(P_K), the paper's choice for Fig. 5",
     )
     traction.set_defaults(run=run_traction)
     slip = commands.add_parser(
         "slip",
         help="slip displacement on loading near a contact edge",
-        description="Slip displacement h(x) accumulated on loading from state 1 to state 2, "
-        "the integral of the dislocation density (15): the change of the tangential "
-        "displacement of the body the tractions act on relative to the other body, along +x.  "
-        "Friction resists slip, so h has the sign opposite to q2 - q1 in a slip zone; h = 0 in "
-        "the stick zone; |h| is the slip amplitude (peak to peak) of the steady cycle.  The slip "
+        description="Slip displacement accumulated on loading from state 1 to state 2, the "
+        f"integral of the dislocation density (15): {SLIP_CONVENTION}.  It is 0 in the stick "
+        "zone; |delta| is the slip amplitude (peak to peak) of the steady cycle.  The slip "
         "scales as 1/E*: a table or module law needs --E-star.",
     )
     _common(slip)
@@ -113,6 +116,6 @@ def run_slip(args: argparse.Namespace) -> int:
         return 0
     print(f"slip displacement on loading near the {args.edge}-hand edge (b = {result.b:.12g})")
     rows = [[f"{x:.12g}", f"{h:.12g}"] for x, h in zip(result.x, result.slip, strict=True)]
-    print(_rows(["x", "slip h"], rows))
+    print(_rows(["x", "slip delta"], rows))
     print(_warnings(result.warnings))
     return 0

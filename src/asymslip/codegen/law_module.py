@@ -22,9 +22,11 @@ its absence is one line naming the extra.
 from __future__ import annotations
 
 import functools
+import importlib.machinery
 import keyword
 import math
 import pprint
+import sys
 import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -279,6 +281,75 @@ def render_law_module(
     return format_source(body)
 
 
+#: asymslip's own top-level packages (an editable install finds them by its own finder).
+OWN_PACKAGES = ("asymslip", "asymslip_gen")
+
+
+def _same_folder(first: str | Path, second: Path) -> bool:
+    try:
+        return Path(first).resolve() == second.resolve()
+    except OSError:
+        return False
+
+
+def _in_folder(origin: str | None, folder: Path) -> bool:
+    """Whether a module's file (``origin``) lies in ``folder`` (a package: its folder does)."""
+    if not origin:
+        return False
+    parent = Path(origin).parent
+    return _same_folder(parent, folder) or (
+        Path(origin).name == "__init__.py" and _same_folder(parent.parent, folder)
+    )
+
+
+def shadowed_module(name: str, folder: Path) -> str | None:
+    """What importing ``name`` gives elsewhere, if anything: the module a file ``name.py`` in
+    ``folder`` would shadow for Python run there (``numpy.py`` hides NumPy).  None if nothing.
+
+    The standard library, built-in modules, asymslip's own packages, and every module the
+    running interpreter can import from a folder other than ``folder`` (its path entries,
+    including installed and editable packages); a module found only in ``folder`` itself --
+    an earlier version of the same law module -- shadows nothing.
+    """
+    if name in sys.stdlib_module_names or name in sys.builtin_module_names:
+        return "a module of Python's standard library"
+    if name in OWN_PACKAGES:
+        return "asymslip's own package"
+    elsewhere = [entry for entry in sys.path if not _same_folder(entry or ".", folder)]
+    spec = importlib.machinery.PathFinder.find_spec(name, elsewhere)
+    if spec is None:
+        for finder in sys.meta_path:  # editable installs and other import hooks
+            if finder in (
+                importlib.machinery.PathFinder,
+                importlib.machinery.BuiltinImporter,
+                importlib.machinery.FrozenImporter,
+            ):
+                continue
+            try:
+                found = finder.find_spec(name, None)
+            except Exception:  # noqa: BLE001 - a third-party hook: it only fails to find
+                continue
+            if found is not None and not _in_folder(found.origin, folder):
+                spec = found
+                break
+    if spec is None:
+        return None
+    origin = spec.origin if spec.origin not in (None, "built-in", "frozen") else name
+    return f"an installed module ({origin})"
+
+
+def refuse_shadowing(out: Path) -> None:
+    """Refuse a law module file whose name is that of an importable module (see
+    :func:`shadowed_module`): Python run in its folder would import the law instead."""
+    shadowed = shadowed_module(out.stem, out.parent if str(out.parent) else Path("."))
+    if shadowed is not None:
+        raise InputError(
+            "out",
+            f"{out.name} would shadow {shadowed}: Python run in {out.parent or '.'} would import "
+            f"this law module for every `import {out.stem}`; choose another file name",
+        )
+
+
 @dataclass(frozen=True)
 class WrittenLaw:
     """A law module written by :func:`write_law_module`, and what was established about it."""
@@ -326,7 +397,8 @@ def write_law_module(
     InputError
         Unknown names (listed, with the allowed ones), anything but arithmetic in the formula,
         a law that does not depend on a, a law that provably decreases or is nowhere positive
-        where it increases, dP/da <= 0 at a checked point, an unwritable ``out``.
+        where it increases, dP/da <= 0 at a checked point, an unwritable ``out``, or an ``out``
+        whose name would shadow an importable module (``numpy.py``: :func:`refuse_shadowing`).
     """
     from .law_range import analyse_law
 
@@ -335,6 +407,7 @@ def write_law_module(
     out = Path(out)
     if out.suffix != ".py":
         raise InputError("out", "must be a .py file", str(out))
+    refuse_shadowing(out)
     if check_half_widths:  # before the derivation: a typo in a value costs no SymPy time
         _check_values(check_params(params, HALF_WIDTH), dict(check or {}), check_half_widths)
     derived = derive_law(P_of_a, params)
@@ -345,18 +418,3 @@ def write_law_module(
     with atomic_write(out, "out", mode="w") as handle:
         handle.write(source)
     return WrittenLaw(out, law_range.summary)
-
-
-def derive_law_module(
-    P_of_a: str,
-    params: Sequence[str],
-    name: str,
-    out: str | Path,
-    *,
-    check: Mapping[str, float] | None = None,
-    check_half_widths: Sequence[float] = (),
-) -> Path:
-    """:func:`write_law_module`, returning the path written."""
-    return write_law_module(
-        P_of_a, params, name, out, check=check, check_half_widths=check_half_widths
-    ).path

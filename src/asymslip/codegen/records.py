@@ -72,9 +72,9 @@ def _build(node: ast.AST) -> Any:
         cls = _CLASSES.get(node.func.id)
         if cls is None:
             raise RecordError(f"{node.func.id} is not a SymPy expression class")
-        keywords = {}
+        keywords: dict[str, object] = {}
         for keyword in node.keywords:
-            if keyword.arg not in _KEYWORDS:
+            if keyword.arg is None or keyword.arg not in _KEYWORDS:
                 raise RecordError(f"keyword {keyword.arg!r} is not an assumption")
             keywords[keyword.arg] = _build(keyword.value)
         return cls(*(_build(arg) for arg in node.args), **keywords)

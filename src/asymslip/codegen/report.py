@@ -72,7 +72,7 @@ def latex(expr: sympy.Basic) -> str:
         for symbol in expr.free_symbols
         if isinstance(symbol, sympy.Symbol) and symbol.name in SYMBOL_LATEX
     }
-    return sympy.latex(expr, symbol_names=names)
+    return str(sympy.latex(expr, symbol_names=names))
 
 
 def markdown_text(text: str) -> str:
@@ -295,19 +295,19 @@ def error_map_section(text: str) -> list[str]:
         "| --- | " + " | ".join("---:" for _ in groups) + " |",
     ]
     for name, label in ERROR_MAP_ESTIMATES.items():
-        cells = []
+        largest: list[str] = []
         for group in groups.values():
             value = _largest(group, f"{name}_elements", "b_error_elements")
-            cells.append("-" if value != value else f"{value:.2f}")
-        lines.append(f"| {label} | " + " | ".join(cells) + " |")
-    no_tension, tension = (
+            largest.append("-" if value != value else f"{value:.2f}")
+        lines.append(f"| {label} | " + " | ".join(largest) + " |")
+    no_tension, with_tension = (
         groups["no tension, no validity warning"],
         groups["tension, no validity warning"],
     )
     exact = _largest(
         [r for r in slipping if float(r["tau"]) == 0], "b_exact_elements", "b_error_elements"
     )
-    paper = max(tension, key=lambda r: abs(float(r["b_paper_elements"])), default=None)
+    paper = max(with_tension, key=lambda r: abs(float(r["b_paper_elements"])), default=None)
     uncovered = [row for row in slipping if not _covered(row)]
     uncovered_warned = sum(row["validity_warning"] != "0" for row in uncovered)
     sentence = (
@@ -315,13 +315,13 @@ def error_map_section(text: str) -> list[str]:
         "slipping edge, which confirms the solver, and the headline b lies "
         f"{_bounds(_largest(no_tension, 'b_elements', 'b_error_elements'))} wherever "
         "`slip_zone` gives no validity warning; with tension, where no warning is given, b "
-        f"stays {_bounds(_largest(tension, 'b_elements', 'b_error_elements'))} while the "
+        f"stays {_bounds(_largest(with_tension, 'b_elements', 'b_error_elements'))} while the "
         "paper's (22) misses by "
     )
     if paper is not None:
         sentence += (
             f"{_bounds(abs(float(paper['b_paper_elements'])) / float(paper['b_error_elements']))}"
-            f" (up to {100 * _largest(tension, 'b_paper_fraction'):.0f} % of the slip-zone "
+            f" (up to {100 * _largest(with_tension, 'b_paper_fraction'):.0f} % of the slip-zone "
             "width); "
         )
     which = "all" if uncovered_warned == len(uncovered) else str(uncovered_warned)

@@ -18,16 +18,16 @@ import textwrap
 from collections.abc import Mapping, Sequence
 
 import sympy
-from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.pycode import PythonCodePrinter
 
 from .cse import Reduced
 from .documentation import PAPER
+from .printer import BranchFree, ReciprocalAsDivision
 
 MODULE = "scalar"
 
 
-class ScalarCodePrinter(PythonCodePrinter):
+class ScalarCodePrinter(BranchFree, ReciprocalAsDivision, PythonCodePrinter):
     """Python printer on ``math``: strict, element-free ``Max``/``Min``, ``1/x`` for ``x**-1``."""
 
     def __init__(self) -> None:
@@ -40,14 +40,6 @@ class ScalarCodePrinter(PythonCodePrinter):
 
     def _print_Min(self, expr: sympy.Min) -> str:
         return f"min({', '.join(self._print(arg) for arg in expr.args)})"
-
-    def _print_Pow(self, expr: sympy.Pow, rational: bool = False) -> str:
-        if expr.exp == -1:
-            return f"1/{self.parenthesize(expr.base, PRECEDENCE['Pow'])}"
-        return super()._print_Pow(expr, rational=rational)
-
-    def _print_Piecewise(self, expr: sympy.Piecewise) -> str:
-        raise TypeError("Piecewise is not allowed in generated code; use a branch-free form")
 
     def _print_sign(self, expr: sympy.Expr) -> str:
         # NumPy's sign (0 at 0, as the array kernels), without a branch on the argument.

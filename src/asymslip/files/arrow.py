@@ -33,4 +33,5 @@ def require(option: str, why: str) -> ModuleType:
         raise InputError(option, f"{why} needs pyarrow: {INSTALL}")
     import pyarrow
 
-    return pyarrow
+    module: ModuleType = pyarrow  # no type information of its own
+    return module

@@ -39,6 +39,8 @@ from functools import cache
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+FloatArray = NDArray[np.float64]
+
 #: Decimal exponents written in fixed notation (Arrow's decimal_in_shortest_low/high).
 FIXED_LOW, FIXED_HIGH = -6, 10
 #: A decision closer than this (in units of the last of 17+ digits) is left to ``repr``.  The
@@ -80,13 +82,13 @@ def _scales() -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int6
     return np.array(hi), np.array(lo), np.array(scale, dtype=np.int64)
 
 
-def _two_sum(a: NDArray, b: NDArray) -> tuple[NDArray, NDArray]:
+def _two_sum(a: FloatArray, b: FloatArray) -> tuple[FloatArray, FloatArray]:
     s = a + b
     bb = s - a
     return s, (a - (s - bb)) + (b - bb)
 
 
-def _two_product(a: NDArray, b: NDArray) -> tuple[NDArray, NDArray]:
+def _two_product(a: FloatArray, b: FloatArray) -> tuple[FloatArray, FloatArray]:
     p = a * b
     ca, cb = _SPLIT * a, _SPLIT * b
     ah = ca - (ca - a)
@@ -95,7 +97,7 @@ def _two_product(a: NDArray, b: NDArray) -> tuple[NDArray, NDArray]:
     return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
 
 
-def _floor_split(hi: NDArray, lo: NDArray) -> tuple[NDArray[np.int64], NDArray]:
+def _floor_split(hi: FloatArray, lo: FloatArray) -> tuple[NDArray[np.int64], FloatArray]:
     """floor(hi + lo) as int64 and the fraction, for hi an integer-valued double >= 2^53."""
     whole = np.floor(lo)
     return hi.astype(np.int64) + whole.astype(np.int64), lo - whole

@@ -42,7 +42,7 @@ from collections.abc import Iterator, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import NDArray
@@ -53,6 +53,15 @@ from .text import TextColumn
 
 FloatArray = NDArray[np.float64]
 Engine = Literal["pyarrow", "numpy"]
+#: What a parser gives: each column's text, the wanted columns' numbers, their empty and bad
+#: fields, and each record's field count (None where every record had the header's).
+Parsed = tuple[
+    dict[str, TextColumn],
+    dict[str, FloatArray],
+    dict[str, NDArray[np.bool_]],
+    dict[str, NDArray[np.bool_]],
+    NDArray[np.int64] | None,
+]
 
 #: What a number looks like (after stripping WHITESPACE); both engines accept exactly this.
 NUMBER = r"[+-]?(?:(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?|[iI][nN][fF](?:[iI][nN][iI][tT][yY])?|[nN][aA][nN])"  # noqa: E501
@@ -398,7 +407,7 @@ def _record_bytes(layout: _Layout, records: NDArray[np.intp]) -> memoryview | by
 
 
 # --- pyarrow ------------------------------------------------------------------------------------
-def _text_from_arrow(column) -> TextColumn:  # noqa: ANN001 - a pyarrow (Chunked)Array
+def _text_from_arrow(column: Any) -> TextColumn:  # a pyarrow (Chunked)Array
     import pyarrow as pa
 
     array = column.combine_chunks() if isinstance(column, pa.ChunkedArray) else column
@@ -409,7 +418,7 @@ def _text_from_arrow(column) -> TextColumn:  # noqa: ANN001 - a pyarrow (Chunked
     return TextColumn(data, offsets.astype(np.int64))
 
 
-def _parse_arrow(layout: _Layout, wanted: list[str]):
+def _parse_arrow(layout: _Layout, wanted: list[str]) -> Parsed | None:
     """Parse with ``pyarrow.csv`` (every column as text), then the numbers with Arrow's cast;
     ``None`` when the simple layout turns out to hold a bad row (the caller scans the file)."""
     import pyarrow as pa
@@ -446,7 +455,13 @@ def _parse_arrow(layout: _Layout, wanted: list[str]):
         if table is None or table.num_rows != rows:
             counts = _field_counts(layout)
             good = np.flatnonzero(counts == len(header))
-            table = pcsv.read_csv(pa.py_buffer(_record_bytes(layout, good)), read, parse, convert)
+            # No well-formed row at all: pyarrow refuses an empty buffer ("Empty CSV file"), so
+            # the table of no rows is built here; every row then carries its field-count error.
+            table = (
+                pcsv.read_csv(pa.py_buffer(_record_bytes(layout, good)), read, parse, convert)
+                if len(good)
+                else pa.table({name: pa.array([], pa.string()) for name in header})
+            )
         if table.num_rows != len(good):  # the scan and pyarrow disagree on the records
             raise RuntimeError(
                 f"pyarrow read {table.num_rows} rows where "
@@ -471,7 +486,7 @@ def _parse_arrow(layout: _Layout, wanted: list[str]):
     return text, values, empty, bad, counts
 
 
-def _arrow_numbers(column) -> tuple[FloatArray, NDArray[np.bool_], NDArray[np.bool_]]:  # noqa: ANN001
+def _arrow_numbers(column: Any) -> tuple[FloatArray, NDArray[np.bool_], NDArray[np.bool_]]:
     """(values, empty, not a number) of one Arrow text column."""
     import pyarrow as pa
     import pyarrow.compute as pc
@@ -500,7 +515,7 @@ def _arrow_numbers(column) -> tuple[FloatArray, NDArray[np.bool_], NDArray[np.bo
     return number, blank, wrong
 
 
-def _spread(array: NDArray, good: NDArray[np.intp], rows: int, fill: object) -> NDArray:
+def _spread(array: NDArray[Any], good: NDArray[np.intp], rows: int, fill: object) -> NDArray[Any]:
     if len(good) == rows:
         return array
     full = np.full(rows, fill, dtype=array.dtype)
@@ -520,7 +535,7 @@ def _spread_text(column: TextColumn, good: NDArray[np.intp], rows: int) -> TextC
 
 
 # --- NumPy --------------------------------------------------------------------------------------
-def _parse_numpy(layout: _Layout, wanted: list[str]):
+def _parse_numpy(layout: _Layout, wanted: list[str]) -> Parsed:
     header = layout.header
     rows = len(layout.starts)
     counts = _field_counts(layout)
@@ -554,9 +569,9 @@ def _split_plain(layout: _Layout, good: NDArray[np.intp]) -> dict[str, TextColum
     commas, record = commas[inside], record[inside]
     keep = np.zeros(len(layout.starts), bool)
     keep[good] = True
-    commas = commas[keep[record]].reshape(len(good), width - 1)
-    field_starts = np.column_stack([starts, commas + 1])
-    field_ends = np.column_stack([commas, ends])
+    pairs = commas[keep[record]].reshape(len(good), width - 1)
+    field_starts = np.column_stack([starts, pairs + 1])
+    field_ends = np.column_stack([pairs, ends])
     columns = {}
     for position, name in enumerate(layout.header):
         lengths = field_ends[:, position] - field_starts[:, position]

@@ -38,14 +38,15 @@ from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import IO, Literal
+from typing import IO, Any, Literal
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import InputError
 from . import arrow
-from .atomic import atomic_write, refuse_same_file
+from .atomic import atomic_write
+from .collisions import Input, Output, refuse_overwriting_inputs
 from .numbers import WIDTH, format_doubles
 from .text import Categorical, TextColumn, quote, quote_always
 
@@ -176,6 +177,8 @@ class TableWriter:
                 if column.ndim != 1:
                     raise ValueError(f"column {name}: a float column is one-dimensional")
             elif kind == "text" and not isinstance(column, TextColumn):
+                if isinstance(column, np.ndarray | Categorical):
+                    raise ValueError(f"column {name}: a text column takes strings")
                 column = TextColumn.from_strings(column)
             elif kind == "category" and not isinstance(column, Categorical):
                 raise ValueError(f"column {name}: a category column takes a Categorical")
@@ -212,7 +215,7 @@ def open_table(
     schema: Sequence[tuple[str, Kind]],
     *,
     option: str = "out",
-    inputs: Sequence[str | Path | None] = (),
+    inputs: Sequence[Input | None] = (),
     engine: str | None = None,
 ) -> Iterator[TableWriter]:
     """Open a result table for writing: a context manager yielding a :class:`TableWriter`.
@@ -230,7 +233,8 @@ def open_table(
     option
         The option named in errors (bad extension, unwritable folder, missing pyarrow).
     inputs
-        Files being read: writing over one of them is refused.
+        Files being read: writing over one of them is refused
+        (:func:`~asymslip.files.collisions.refuse_overwriting_inputs`).
     engine
         For CSV: ``"pyarrow"``, ``"numpy"`` or ``None`` (pyarrow when installed).  Parquet
         always needs pyarrow.
@@ -243,7 +247,7 @@ def open_table(
     """
     path = Path(path)
     fmt = table_format(path, option)
-    refuse_same_file(path, option, *inputs)
+    refuse_overwriting_inputs(inputs, [Output(path, option)])
     if fmt == "parquet":
         arrow.require(option, "Parquet output")
         engine = "pyarrow"
@@ -273,7 +277,7 @@ def open_table(
 
 
 # --- columns as Arrow arrays ---------------------------------------------------------------------
-def _arrow_type(kind: Kind):  # noqa: ANN202
+def _arrow_type(kind: Kind) -> Any:  # a pyarrow DataType (no type information)
     import pyarrow as pa
 
     return {
@@ -283,7 +287,7 @@ def _arrow_type(kind: Kind):  # noqa: ANN202
     }[kind]
 
 
-def _arrow_array(column: Column, kind: Kind):  # noqa: ANN202
+def _arrow_array(column: Column, kind: Kind) -> Any:  # a pyarrow Array
     import pyarrow as pa
 
     if kind == "float":
@@ -309,7 +313,7 @@ def _arrow_array(column: Column, kind: Kind):  # noqa: ANN202
 def _slice(column: Column, start: int, stop: int) -> Column:
     if isinstance(column, TextColumn | Categorical):
         return column.slice(start, min(stop, len(column)))
-    return column[start:stop]  # type: ignore[index]
+    return column[start:stop]
 
 
 # --- the NumPy CSV formatter ---------------------------------------------------------------------

@@ -32,13 +32,14 @@ from __future__ import annotations
 
 import abc
 from dataclasses import dataclass
-from typing import Literal
+from typing import Any, ClassVar, Literal, Protocol, TypeAlias, runtime_checkable
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from asymslip_gen.edge_multipliers import normal_edge_multiplier
 
+from ..edge import Edge
 from ..errors import InputError
 from .roots import (
     growth_from,
@@ -50,6 +51,10 @@ from .roots import (
 FloatArray = NDArray[np.float64]
 BoolArray = NDArray[np.bool_]
 Side = Literal["right", "left"]
+#: A number of a cycle: a Python float for one cycle, a float64 array for many.  NumPy's type
+#: stubs cannot type arithmetic that mixes the two (every ``float * ndarray`` is an overload
+#: error), so numbers are not checked; the records, their fields and the laws' methods are.
+Number: TypeAlias = Any
 
 
 @dataclass(slots=True)
@@ -61,19 +66,19 @@ class LawState:
     fields are NaN there.
     """
 
-    P1: FloatArray
-    P2: FloatArray
-    a1: FloatArray
-    a2: FloatArray
-    da: FloatArray
-    L_I1: FloatArray
-    L_I2: FloatArray
-    load_slope1: FloatArray
-    load_slope2: FloatArray
-    L_I_slope1: FloatArray
-    L_I_slope2: FloatArray
-    found1: BoolArray | bool
-    found2: BoolArray | bool
+    P1: Number
+    P2: Number
+    a1: Number
+    a2: Number
+    da: Number
+    L_I1: Number
+    L_I2: Number
+    load_slope1: Number
+    load_slope2: Number
+    L_I_slope1: Number
+    L_I_slope2: Number
+    found1: Number
+    found2: Number
 
     def as_floats(self, number: type[float] = float) -> LawState:
         """One cycle's state with every number as ``number`` (Python floats by default) and
@@ -95,21 +100,40 @@ class LawState:
         )
 
     @property
-    def a_slope1(self) -> FloatArray:
+    def a_slope1(self) -> Number:
         """a'(P1) = 1/(dP/da)."""
         return 1.0 / self.load_slope1
 
     @property
-    def a_slope2(self) -> FloatArray:
+    def a_slope2(self) -> Number:
         """a'(P2) = 1/(dP/da)."""
         return 1.0 / self.load_slope2
 
 
 class ContactLaw(abc.ABC):
-    """A symmetric incomplete contact: its law P(a) and what follows from it."""
+    """A symmetric incomplete contact: its law P(a) and what follows from it.
+
+    Optional capabilities are declared here with their defaults, so that the core asks for
+    them by name: :meth:`load_and_slope` (P and dP/da sharing their costly parts),
+    :meth:`shear_multiplier` (an edge's own L_II, for an asymmetric contact; a subclass that
+    defines it has :attr:`own_shear_multipliers` set) and :attr:`E_star` (the modulus, for
+    the slip displacement).
+    """
 
     #: Short name used by the command line (``--law NAME``) and in results.
     name: str = "contact law"
+
+    #: The plane-strain modulus E* when the law knows it (None for a law known only as a(P),
+    #: such as a table).
+    E_star: float | None = None
+
+    #: True when the law gives each edge's shear multiplier itself (:meth:`shear_multiplier`),
+    #: instead of (21) from L_I.  Set for every subclass that defines it.
+    own_shear_multipliers: ClassVar[bool] = False
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        cls.own_shear_multipliers = cls.shear_multiplier is not ContactLaw.shear_multiplier
 
     # --- what every law defines ------------------------------------------------------------
     @abc.abstractmethod
@@ -120,12 +144,24 @@ class ContactLaw(abc.ABC):
     def load_slope(self, a: ArrayLike) -> FloatArray:
         """dP/da of the law at half-width a; > 0 for an incomplete contact."""
 
+    def load_and_slope(self, a: FloatArray) -> tuple[FloatArray, FloatArray]:
+        """P(a) and dP/da together; laws whose two share costly parts override it."""
+        return self.load(a), self.load_slope(a)
+
+    def shear_multiplier(self, P: ArrayLike, lam: ArrayLike, eta: ArrayLike) -> FloatArray:
+        """The edge's own shear multiplier L_II at load P on a path of slopes lam, eta (18).
+
+        Only an edge that cannot use (21) defines it (an asymmetric contact's, AS3 of
+        ``derivations/asymmetric_edge_multipliers.py``); see :attr:`own_shear_multipliers`.
+        """
+        raise NotImplementedError(f"the {self.name} law takes L_II from (21)")
+
     # --- in terms of the half-width (no root solve) -----------------------------------------
-    def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+    def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> Number:
         """L_I of (19) at half-width a, given dP/da there."""
         return normal_edge_multiplier(a, load_slope)
 
-    def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+    def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> Number:
         """dL_I/dP at half-width a: (dL_I/da)/(dP/da), by central differences in a.
 
         Laws with a closed form override it; it only enters the validity measure (26).
@@ -172,9 +208,7 @@ class ContactLaw(abc.ABC):
         a_ref = np.asarray(a_ref, dtype=np.float64)
         with np.errstate(all="ignore"):
             guess = a_ref + (P - P_ref) / self.load_slope(a_ref)
-        a, converged = newton_from(
-            self.load, self.load_slope, P, guess, both=getattr(self, "load_and_slope", None)
-        )
+        a, converged = newton_from(self.load, self.load_slope, P, guess, both=self.load_and_slope)
         if not np.all(converged):
             a = np.array(a, dtype=float)
             retry = ~np.asarray(converged)
@@ -182,7 +216,7 @@ class ContactLaw(abc.ABC):
             a = a[()] if a.ndim == 0 else a
         return a
 
-    def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:
+    def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> Number:
         """a(P1 + dP) - a(P1), with full relative precision however small dP/P1 is."""
         return self.cycle_state(P1, dP).da
 
@@ -190,12 +224,12 @@ class ContactLaw(abc.ABC):
         """a'(P) = 1 / (dP/da)."""
         return 1.0 / self.load_slope(self.half_width(P))
 
-    def normal_multiplier(self, P: ArrayLike) -> FloatArray:
+    def normal_multiplier(self, P: ArrayLike) -> Number:
         """Edge multiplier L_I of the contact pressure at load P, from (19)."""
         a = self.half_width(P)
         return self.normal_multiplier_at(a, self.load_slope(a))
 
-    def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
+    def normal_multiplier_slope(self, P: ArrayLike) -> Number:
         """dL_I/dP at load P."""
         a = self.half_width(P)
         return self.normal_multiplier_slope_at(a, self.load_slope(a))
@@ -221,7 +255,7 @@ class ContactLaw(abc.ABC):
                 start,
                 P2,
                 dP,
-                both=getattr(self, "load_and_slope", None),
+                both=self.load_and_slope,
             )
             found2 = found2 & found1
             a2 = a1 + da
@@ -296,7 +330,7 @@ class ContactLaw(abc.ABC):
         """
         return ""
 
-    def for_edge(self, side: Side) -> ContactLaw:
+    def for_edge(self, side: Edge | Side) -> ContactLaw:
         """The law of one edge: a symmetric contact has the same law at both."""
         return self
 
@@ -324,3 +358,67 @@ class ContactLaw(abc.ABC):
             for label, P in (("P1", P1), ("P2", P2))
             if bool(self.extrapolated(P))
         ]
+
+
+@runtime_checkable
+class EdgeLawLike(Protocol):
+    """A law known per edge outside the :class:`ContactLaw` family (a calibrated contact's
+    :class:`~asymslip.laws.calibrated.CalibratedLaw`): what the slip-zone core asks of it."""
+
+    name: str
+
+    @property
+    def symmetric(self) -> bool: ...
+
+    def for_edge(self, side: Side) -> Any: ...
+
+
+@runtime_checkable
+class _GivesShearMultiplier(Protocol):
+    def shear_multiplier(self, P: ArrayLike, lam: ArrayLike, eta: ArrayLike) -> FloatArray: ...
+
+
+def is_law(law: object) -> bool:
+    """True for a contact law the core can evaluate: a :class:`ContactLaw`, or a law known per
+    edge (:class:`EdgeLawLike`)."""
+    kind = type(law)
+    known = _LAWS.get(kind)
+    if known is None:  # once per class, as above
+        known = _LAWS[kind] = isinstance(law, ContactLaw) or isinstance(law, EdgeLawLike)
+    return known
+
+
+_LAWS: dict[type, bool] = {}
+
+
+def gives_own_shear_multipliers(law: object) -> bool:
+    """True when an edge's law gives its own L_II (:meth:`ContactLaw.shear_multiplier`)."""
+    kind = type(law)
+    own = _OWN_SHEAR_MULTIPLIERS.get(kind)
+    if own is None:  # once per class: an ABC's and a protocol's isinstance cost microseconds
+        if issubclass(kind, ContactLaw):
+            own = kind.own_shear_multipliers
+        else:
+            own = isinstance(law, _GivesShearMultiplier)
+        _OWN_SHEAR_MULTIPLIERS[kind] = own
+    return own
+
+
+_OWN_SHEAR_MULTIPLIERS: dict[type, bool] = {}
+
+
+def modulus_of(law: object) -> float | None:
+    """The law's own modulus E* (:attr:`ContactLaw.E_star`), None where it has none."""
+    return law.E_star if isinstance(law, ContactLaw) else None
+
+
+def computes_on_floats(law: object) -> bool:
+    """True when a law computes one cycle on Python floats alone (``ContactLaw.floats_only``)."""
+    kind = type(law)
+    floats = _FLOATS_ONLY.get(kind)
+    if floats is None:  # once per class, as above
+        floats = _FLOATS_ONLY[kind] = issubclass(kind, ContactLaw) and kind.floats_only
+    return floats
+
+
+_FLOATS_ONLY: dict[type, bool] = {}

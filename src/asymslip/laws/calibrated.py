@@ -201,7 +201,7 @@ class CalibratedEdge:
             P1=P1[()],
             P2=P2[()],
             a1=mark(a1, found1),
-            a2=mark(a1 + da, found2),
+            a2=mark(self.half_width(safe2), found2),  # the fit's own a(P2), as a1 is a(P1)
             da=mark(da, found2),
             L_I1=mark(self.normal_multiplier(safe1), found1),
             L_I2=mark(self.normal_multiplier(safe2), found2),
@@ -341,7 +341,8 @@ class CalibratedLaw:
     ----------
     calibration
         From :func:`~asymslip.calibration.calibrate` or
-        :meth:`~asymslip.calibration.Calibration.load` (whose :meth:`law` builds this).  Each
+        :meth:`~asymslip.calibration.Calibration.load` (whose
+        :meth:`~asymslip.calibration.Calibration.law` builds this).  Each
         edge with data needs at least 2 loads, and must advance (a increasing) with the load.
 
     Examples

@@ -27,6 +27,7 @@ from asymslip_gen.hertz import hertz_half_width
 
 from ..errors import as_float_array, positive, require
 from .base import BoolArray, ContactLaw, FloatArray
+from .parameters import law_parameter, positive_parameter
 from .roots import (
     QUADRATURE_LIMIT,
     gauss_integral,
@@ -54,6 +55,12 @@ class FlatRoundedLaw(ContactLaw):
     E_star
         Plane-strain contact modulus E* > 0 [force/length^2].
 
+    Raises
+    ------
+    InputError
+        A parameter that is missing (None), not one finite number (an array, text, a boolean)
+        or out of its range, naming it (:mod:`asymslip.laws.parameters`).
+
     Examples
     --------
     >>> law = FlatRoundedLaw(c=1.0, R=10.0, E_star=1.0)
@@ -68,11 +75,11 @@ class FlatRoundedLaw(ContactLaw):
     name = "flat-rounded"
 
     def __post_init__(self) -> None:
-        flat = as_float_array("c", self.c)
+        flat = law_parameter("c", self.c)
         require(flat >= 0, "c", "must be >= 0 (the half-width of the flat face)", flat)
-        object.__setattr__(self, "c", float(flat))
-        object.__setattr__(self, "R", float(positive("R", self.R)))
-        object.__setattr__(self, "E_star", float(positive("E_star", self.E_star)))
+        object.__setattr__(self, "c", flat)
+        object.__setattr__(self, "R", positive_parameter("R", self.R))
+        object.__setattr__(self, "E_star", positive_parameter("E_star", self.E_star))
 
     def load(self, a: ArrayLike) -> FloatArray:
         """P(a); zero for a <= c."""
@@ -148,21 +155,23 @@ class FlatRoundedLaw(ContactLaw):
 
         P'(a) = E* a arccos(c/a)/R has a branch point at a = c, which may lie much closer to
         a than d; in u = sqrt(a - c) the integrand 2u P'(c + u^2) is analytic there (its
-        nearest singularities are at u^2 = -c and u^2 = -2c), so Gauss-Legendre in u is exact
-        to rounding for d <= a/4 with the rule chosen by du/sqrt(a).  u2 - u1 = d/(u1 + u2),
-        without cancellation.
+        nearest singularities are at u^2 = -c and u^2 = -2c, at least sqrt(a) from [u1, u2]),
+        so Gauss-Legendre in u is exact to rounding for du <= sqrt(a)/4 with the rule chosen
+        by du/sqrt(a); u2 - u1 = d/(u1 + u2), without cancellation.  Beyond that (a large
+        growth from a contact barely wider than the flat: du/sqrt(a) can reach sqrt(d/a)) d is
+        no longer small against a - c and the plain difference is accurate.
         """
         a, d = np.broadcast_arrays(np.asarray(a, dtype=np.float64), np.asarray(d, dtype=np.float64))
-        near = d <= QUADRATURE_LIMIT * a
+        with np.errstate(invalid="ignore"):  # a <= c or d < 0: not near, the plain difference
+            u1 = np.sqrt(a - self.c)
+            u2 = np.sqrt(a + d - self.c)
+            du = d / (u1 + u2)
+            ratio = du / np.sqrt(a)
+            near = ratio <= QUADRATURE_LIMIT
         out = np.empty(a.shape)
         if near.any():
-            a_near, d_near = a[near], d[near]
-            u1 = np.sqrt(a_near - self.c)
-            u2 = np.sqrt(a_near + d_near - self.c)
-            du = d_near / (u1 + u2)
-            # The singularities at u^2 = -c, -2c lie at least sqrt(a) from [u1, u2].
             out[near] = gauss_integral(
-                lambda u: 2 * u * self.load_slope(self.c + u * u), u1, du, du / np.sqrt(a_near)
+                lambda u: 2 * u * self.load_slope(self.c + u * u), u1[near], du[near], ratio[near]
             )
         if (~near).any():
             out[~near] = self.load(a[~near] + d[~near]) - self.load(a[~near])

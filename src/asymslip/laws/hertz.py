@@ -20,13 +20,27 @@ from asymslip_gen.hertz import (
 )
 from asymslip_gen.tractions import hertz_pressure
 
-from ..errors import as_float_array, positive
+from ..errors import as_float_array
 from .base import BoolArray, ContactLaw, FloatArray, LawState
+from .parameters import positive_parameter
 
 
 @dataclass(frozen=True)
 class HertzLaw(ContactLaw):
     """Cylinder of radius R on a half-plane, plane-strain modulus E*: a^2 = 4 P R / (pi E*).
+
+    Parameters
+    ----------
+    R
+        Radius of the cylinder, R > 0 [length].
+    E_star
+        Plane-strain contact modulus E* > 0 [force/length^2].
+
+    Raises
+    ------
+    InputError
+        A parameter that is missing (None), not one finite number (an array, text, a boolean)
+        or not > 0, naming it (:mod:`asymslip.laws.parameters`).
 
     Examples
     --------
@@ -41,8 +55,8 @@ class HertzLaw(ContactLaw):
     floats_only = True  # one cycle: the math kernels throughout
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "R", float(positive("R", self.R)))
-        object.__setattr__(self, "E_star", float(positive("E_star", self.E_star)))
+        object.__setattr__(self, "R", positive_parameter("R", self.R))
+        object.__setattr__(self, "E_star", positive_parameter("E_star", self.E_star))
 
     def load(self, a: ArrayLike) -> FloatArray:
         return hertz_load(a, self.R, self.E_star)

@@ -14,22 +14,37 @@ from collections.abc import Callable, Mapping
 from dataclasses import replace
 from pathlib import Path
 from types import ModuleType
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ..errors import InputError, as_float_array
+from ..errors import InputError
 from .base import BoolArray, ContactLaw, FloatArray, LawState
+from .module_check import REQUIRED_FUNCTIONS, check_law_source
+from .parameters import law_parameter
 from .roots import invert_increasing_where_possible
-
-REQUIRED_FUNCTIONS = ("load", "load_slope", "normal_edge_multiplier")
 
 
 def import_law_module(path: str | Path) -> ModuleType:
-    """Import a law module by file path, refusing files that are not one."""
+    """Import a law module by file path, refusing files that are not one.
+
+    The file is read and checked first (:func:`~asymslip.laws.module_check.check_law_source`):
+    a file whose import would run code of its own, or that is no law module, is refused
+    before anything of it runs.
+    """
     path = Path(path)
+    if path.is_dir():
+        raise InputError("module", "is a folder, not a law module file (FILE.py)", str(path))
     if not path.is_file():
         raise InputError("module", "no such file", str(path))
+    try:
+        source = path.read_bytes()  # decoded as the importer would (a BOM, a coding line)
+    except OSError as error:
+        raise InputError("module", f"cannot be read ({error.strerror})", str(path)) from None
+    if path.suffix != ".py":
+        raise InputError("module", "is not a Python module (expected a .py file)", str(path))
+    check_law_source(source, str(path))
     digest = hashlib.sha1(str(path.resolve()).encode()).hexdigest()[:12]
     spec = importlib.util.spec_from_file_location(f"asymslip_user_law_{digest}", path)
     if spec is None or spec.loader is None:
@@ -104,9 +119,7 @@ class ModuleLaw(ContactLaw):
                 f"{', '.join(unknown)} is not a parameter of the law "
                 f"{self.name} in {source} (its parameters: {listed})",
             )
-        self.params = {
-            name: float(as_float_array(name, param_values[name])) for name in self.param_names
-        }
+        self.params = {name: law_parameter(name, param_values[name]) for name in self.param_names}
         if description.get("parameters_are") == "positive real numbers":
             for name, value in self.params.items():
                 if not value > 0:
@@ -124,6 +137,7 @@ class ModuleLaw(ContactLaw):
         self.range_established = bool(description.get("range", {}).get("established", True))
         if not self.range_established:
             self.valid_half_widths, self.valid_loads = self._first_branch()
+        self.range_note = self._describe_range()
 
     @classmethod
     def from_file(cls, path: str | Path, **param_values: float) -> ModuleLaw:
@@ -139,53 +153,73 @@ class ModuleLaw(ContactLaw):
         increasing), from its range functions; all of (0, inf) for a module without them."""
         names = ("half_width_minimum", "half_width_maximum", "load_minimum", "load_maximum")
         functions = [getattr(self.module, name, None) for name in names]
-        if not all(callable(function) for function in functions):
+        called: list[Callable[..., Any]] = [f for f in functions if callable(f)]
+        if len(called) < len(names):
             return (0.0, np.inf), (0.0, np.inf)
         with np.errstate(all="ignore"):
-            a_min, a_max, P_min, P_max = (float(function(*self._values)) for function in functions)
+            a_min, a_max, P_min, P_max = (float(function(*self._values)) for function in called)
         return (a_min, a_max), (P_min, P_max)
 
     #: The scan of :meth:`_first_branch`: half-widths from 1e-12 to 1e12, log-spaced.
     BRANCH_SCAN = np.geomspace(1e-12, 1e12, 20_001)
 
     def _first_branch(self) -> tuple[tuple[float, float], tuple[float, float]]:
-        """Where P(a) rises from a = 0, for a law whose range SymPy could not establish.
+        """Where P(a) first rises, for a law whose range SymPy could not establish.
 
-        A contact grows from a = 0 as the load rises, so its half-width is on the first branch
-        of P(a) that rises from there: P = sin(a) at P = 0.98 has the root 7.65 as well as
-        asin(0.98) = 1.37, with dP/da > 0 at both, and only 1.37 is a contact.  dP/da is
+        A contact grows as the load rises, so its half-width is on the first branch of P(a)
+        that rises: P = sin(a) at P = 0.98 has the root 7.65 as well as asin(0.98) = 1.37,
+        with dP/da > 0 at both, and only 1.37 is a contact; P = a**a first falls (to 0.69 at
+        a = 1/e) and rises beyond, so only loads above 0.69 have a half-width.  dP/da is
         sampled on 20001 log-spaced half-widths (ratio 1.0028) from 1e-12 to 1e12; the first
-        sample where it is <= 0 (NaN samples do not count) is refined by bisection to the end
-        of the branch, a_end, and the law carries the loads below P(a_end) only.  A sampling
-        check: a dip narrower than 0.28 % of a can pass it.
+        sample where it is > 0 starts the branch and the first one after it where it is <= 0
+        (NaN samples do not count) ends it, each refined by bisection, and the law carries the
+        loads between P at the two ends only.  No rising sample: no load at all.  A sampling
+        check: a dip (or rise) narrower than 0.28 % of a can pass it.
         """
         (a_min, a_max), (P_min, P_max) = self.valid_half_widths, self.valid_loads
+        scan = self.BRANCH_SCAN
         with np.errstate(all="ignore"):
-            falling = np.flatnonzero(
-                (self.load_slope(self.BRANCH_SCAN) <= 0) & (self.BRANCH_SCAN > a_min)
-            )
+            slope = self.load_slope(scan)
+        usable = scan > a_min
+        rising = np.flatnonzero((slope > 0) & usable)
+        if rising.size == 0:  # P(a) increases nowhere on the scan: no load has a half-width
+            return (a_min, a_min), (P_min, P_min)
+        first = int(rising[0])
+        if first > 0 and usable[first - 1]:  # the branch starts after a fall: find where
+            a_start = self._turn(float(scan[first - 1]), float(scan[first]), rises=True)
+            with np.errstate(all="ignore"):
+                P_start = float(self.load(a_start))
+            a_min, P_min = max(a_min, a_start), max(P_min, P_start)
+        falling = np.flatnonzero((slope <= 0) & usable & (np.arange(scan.size) > first))
         if falling.size == 0:
             return (a_min, a_max), (P_min, P_max)
-        first = int(falling[0])
-        high = float(self.BRANCH_SCAN[first])
-        low = float(self.BRANCH_SCAN[first - 1]) if first > 0 else 0.0
+        end = int(falling[0])
+        low = self._turn(float(scan[end - 1]), float(scan[end]), rises=False)
         with np.errstate(all="ignore"):
-            for _ in range(60):  # to the double next to the turn (60 halvings of < 0.3 %)
-                middle = 0.5 * (low + high)
-                if middle in (low, high):
-                    break
-                if self.load_slope(middle) > 0:
-                    low = middle
-                else:
-                    high = middle
             P_end = float(self.load(low))
         return (a_min, min(a_max, low)), (P_min, min(P_max, P_end))
 
-    @property
-    def range_note(self) -> str:
+    def _turn(self, low: float, high: float, *, rises: bool) -> float:
+        """The half-width in [low, high] where dP/da changes sign, by bisection to the double
+        next to it (60 halvings of < 0.3 %); on the rising side of the turn."""
+        with np.errstate(all="ignore"):
+            for _ in range(60):
+                middle = 0.5 * (low + high)
+                if middle in (low, high):
+                    break
+                if (self.load_slope(middle) > 0) == rises:
+                    high = middle
+                else:
+                    low = middle
+        return high if rises else low
+
+    def _describe_range(self) -> str:
+        """:attr:`range_note`: the loads the law carries, where that is not every load."""
         low, high = self.valid_loads
         if low <= 0 and high == np.inf:
             return ""
+        if high == np.inf:  # never print inf as though it were a number
+            return f"; it carries loads above {low:.6g} only"
         return f"; it carries loads from {low:.6g} to {high:.6g} only"
 
     def half_width_where_possible(self, P: ArrayLike) -> tuple[FloatArray, BoolArray]:
@@ -193,6 +227,8 @@ class ModuleLaw(ContactLaw):
         P = np.asarray(P, dtype=np.float64)
         (a_min, a_max), (P_min, P_max) = self.valid_half_widths, self.valid_loads
         inside = (P > P_min) & (P < P_max)
+        if not (a_max > a_min and a_max > 0 and np.any(inside)):  # no load has a half-width
+            return np.full(P.shape, np.nan)[()], np.zeros(P.shape, dtype=bool)[()]
         lower = np.full(P.shape, 1.0 if a_min <= 0 else a_min)
         if np.isfinite(a_max):  # a root lies inside the valid half-widths
             lower = np.where(a_min > 0, a_min, np.minimum(1.0, 0.5 * a_max))
@@ -220,9 +256,10 @@ class ModuleLaw(ContactLaw):
         return replace(state, found2=np.asarray(state.found2) & inside)
 
     def _call(self, function: Callable[..., FloatArray], a: ArrayLike) -> FloatArray:
-        return np.asarray(
+        values: FloatArray = np.asarray(
             function(np.asarray(a, dtype=np.float64), *self._values), dtype=np.float64
         )
+        return values
 
     def load(self, a: ArrayLike) -> FloatArray:
         return self._call(self.module.load, a)
@@ -238,5 +275,6 @@ class ModuleLaw(ContactLaw):
         """dL_I/dP from the module when it has it, else central differences."""
         function = getattr(self.module, "normal_edge_multiplier_slope", None)
         if function is None:
-            return super().normal_multiplier_slope_at(a, load_slope)
+            differences: FloatArray = super().normal_multiplier_slope_at(a, load_slope)
+            return differences
         return self._call(function, a)

@@ -28,6 +28,7 @@ from asymslip_gen.power_law import (
 
 from ..errors import InputError, as_float_array, positive, require
 from .base import BoolArray, ContactLaw, FloatArray, LawState
+from .parameters import law_parameter, positive_parameter
 
 #: Above this n, Gamma((n + 1)/2) overflows a double; use log-Gamma instead.
 _GAMMA_LIMIT = 300.0
@@ -75,6 +76,12 @@ class PowerLaw(ContactLaw):
     E_star
         Plane-strain contact modulus E* > 0 [force/length^2].
 
+    Raises
+    ------
+    InputError
+        A parameter that is missing (None), not one finite number (an array, text, a boolean)
+        or out of its range, naming it (:mod:`asymslip.laws.parameters`).
+
     Examples
     --------
     >>> law = PowerLaw(A=0.5, n=2.0, E_star=1.0)   # the cylinder of radius 1
@@ -88,19 +95,19 @@ class PowerLaw(ContactLaw):
     name = "power"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "A", float(positive("A", self.A)))
-        exponent = as_float_array("n", self.n)
+        object.__setattr__(self, "A", positive_parameter("A", self.A))
+        exponent = law_parameter("n", self.n)
         require(exponent >= 1, "n", "must be >= 1 (n < 1 is not an incomplete contact)", exponent)
         try:
-            shape_factor(float(exponent))
+            shape_factor(exponent)
         except OverflowError:  # log Gamma(n/2) beyond the double range: n above about 5e305
             raise InputError(
                 "n",
                 "is too large: the factor K(n) of P = K E* A a^n overflows double precision",
                 float(exponent),
             ) from None
-        object.__setattr__(self, "n", float(exponent))
-        object.__setattr__(self, "E_star", float(positive("E_star", self.E_star)))
+        object.__setattr__(self, "n", exponent)
+        object.__setattr__(self, "E_star", positive_parameter("E_star", self.E_star))
 
     @property
     def shape_factor(self) -> float:
@@ -143,7 +150,8 @@ class PowerLaw(ContactLaw):
         return power_law_half_width(P, *self._parameters)
 
     def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
-        """Closed forms: a = (P/(K E* A))^(1/n); a2 - a1 = a1 expm1(log1p(dP/P1)/n)."""
+        """Closed forms: a = (P/(K E* A))^(1/n) at both states; a2 - a1 = a1 expm1(log1p(dP/P1)/n)
+        (no cancellation)."""
         P1, dP = np.broadcast_arrays(
             np.asarray(P1, dtype=np.float64), np.asarray(dP, dtype=np.float64)
         )
@@ -152,7 +160,9 @@ class PowerLaw(ContactLaw):
             P2 = P1 + dP
             a1 = power_law_half_width(P1, *parameters)
             da = power_law_half_width_growth(P1, dP, *parameters)
-            a2 = a1 + da
+            # a2 is the law's own a(P2), not a1 + da: the sum adds the rounding of both (up to
+            # 9 units in the last place measured) where the closed form has at most 5.
+            a2 = power_law_half_width(P2, *parameters)
             L_I1 = power_law_normal_edge_multiplier(P1, *parameters)
             L_I2 = power_law_normal_edge_multiplier(P2, *parameters)
             # Every load P > 0 has a half-width; overflow is caught by the finiteness rule.

@@ -164,7 +164,8 @@ def newton_from(
             value, gradient = both(current)
             step = (value - (goal if index is None else goal[index])) / gradient
             new = current - step
-            ok = np.isfinite(new) & (new > 0)
+            # An overflowing slope gives a zero step far from the root: not a converged one.
+            ok = np.isfinite(new) & (new > 0) & np.isfinite(gradient)
             size = np.abs(step)
             ulp = np.spacing(new)
             last = previous if index is None else previous[index]
@@ -184,10 +185,10 @@ def newton_from(
                 previous[index] = previous_kept
             if index is None and not moving.any():
                 break
-    x, converged = x.reshape(shape), converged.reshape(shape)
-    if x.ndim == 0:
-        return x[()], converged[()]
-    return x, converged
+    result, flags = x.reshape(shape), converged.reshape(shape)
+    if result.ndim == 0:
+        return result[()], flags[()]
+    return result, flags
 
 
 def _start(value: ArrayLike | None, goal: FloatArray) -> FloatArray:
@@ -276,13 +277,21 @@ def _refine(
             # A step below two units in the last place ends the iteration if the slope is f'(x):
             # then |x - root| ~ |r / f'(x)| is that small.  A secant through a far point can be
             # much too steep, so it counts only once its two points are close.
-            converged = np.isfinite(newton) & (np.abs(newton - x) <= 2 * np.spacing(np.abs(x)))
+            # An overflowing slope (inf) makes the step 0 without x being near the root: only
+            # a finite slope may end the iteration or take a Newton step.
+            finite_slope = np.isfinite(gradient)
+            converged = (
+                np.isfinite(newton)
+                & finite_slope
+                & (np.abs(newton - x) <= 2 * np.spacing(np.abs(x)))
+            )
             if slope is None:
                 converged &= np.abs(x - x_previous) <= 1e-6 * np.abs(x)
             # Otherwise Newton only if it lands strictly inside the bracket and at most halves the
             # step before last; else bisect, geometrically while the bracket is wide (rtsafe).
             trusted = (
                 np.isfinite(newton)
+                & finite_slope
                 & (newton > lo)
                 & (newton < hi)
                 & (np.abs(newton - x) <= 0.5 * np.abs(step_before_last))
@@ -341,8 +350,12 @@ def gauss_integral(
     ratio: FloatArray,
 ) -> FloatArray:
     """int_start^(start + length) integrand, elementwise, each with the smallest rule of
-    :data:`GAUSS_RULES` whose limit covers its ``ratio`` (all ratios <= QUADRATURE_LIMIT)."""
-    out = np.empty(start.shape)
+    :data:`GAUSS_RULES` whose limit covers its ``ratio``.
+
+    An element whose ratio no rule covers (above :data:`QUADRATURE_LIMIT`, or NaN) is NaN: the
+    caller must take the plain difference there, and a NaN cannot pass for an integral.
+    """
+    out = np.full(start.shape, np.nan)
     lower = -np.inf
     for limit, nodes, weights in GAUSS_RULES:
         chosen = (ratio > lower) & (ratio <= limit)
@@ -385,15 +398,20 @@ def growth_from(
     *,
     both: Callable[[FloatArray], tuple[FloatArray, FloatArray]] | None = None,
 ) -> tuple[FloatArray, NDArray[np.bool_]]:
-    """a(P1 + dP) - a(P1) from a1 = a(P1), with full relative precision however small dP/P1.
+    """a(P1 + dP) - a(P1) from a1 = a(P1): a1 + the result is a(P2) to a few units in the last
+    place for any load change, and the result keeps full relative precision however small
+    dP/P1 is.
 
-    Newton on P(a) = P2 from the tangent at a1 gives a2 to a few units in the last place of a2
-    (two or three steps); its difference from a1 is then accurate only to eps a2.  One more
-    Newton step on the cancellation-free residual difference(a1, d) - dP (d = a2 - a1) takes d
-    to full relative precision: its error after the step is of order (eps a2)^2, far below
-    eps d.  No quadrature of root solves.  Elements where Newton does not converge fall back to
-    the bracketing inverse; those with no root (P2 outside the law's range) are returned with
-    ``found`` False.
+    a2 is a root solve of P(a) = P2 (Newton from the tangent at a1, the bracketing inverse
+    where Newton does not settle), accurate to a few units in the last place of a2; so is
+    d0 = a2 - a1, which is all the precision d needs where d is not small against a1.  Where it
+    is (d0 <= :data:`QUADRATURE_LIMIT` a1), one Newton step on the cancellation-free residual
+    difference(a1, d) - dP takes d to full relative precision: its error after the step is of
+    order (eps a2)^2, far below eps d.  That step is kept only if it moves d0 by no more than
+    a2's own rounding can explain (8 units in the last place of a1 and of a2): a larger move
+    means the difference was not accurate there (an interval beyond its quadrature rule), and
+    d0 stands.  No quadrature of root solves.  Elements with no root (P2 outside the law's
+    range) are returned with ``found`` False.
     """
     a1 = np.asarray(a1, dtype=np.float64)
     P2, dP = np.asarray(P2, dtype=np.float64), np.asarray(dP, dtype=np.float64)
@@ -416,9 +434,13 @@ def growth_from(
         a2[retry], found = solved, np.array(found, dtype=bool)
         found[retry] = solved_found
     with np.errstate(all="ignore"):
-        d = np.where(found, np.maximum(a2 - a1, 0.0), np.nan)
-        d = d - (difference(a1, np.where(found, d, 0.0)) - dP) / slope(a1 + d)
-    d = np.where(found, d, np.nan)
+        d0 = np.where(found, np.maximum(a2 - a1, 0.0), np.nan)
+        near = found & (d0 <= QUADRATURE_LIMIT * a1)
+        step = np.where(near, d0, 0.0)
+        corrected = step - (difference(a1, step) - dP) / slope(a1 + step)
+        rounding = 8 * (np.spacing(np.abs(a1)) + np.spacing(np.abs(a2)))
+        trusted = near & np.isfinite(corrected) & (np.abs(corrected - d0) <= rounding)
+    d = np.where(trusted, corrected, d0)
     if d.ndim == 0:
         return d[()], found[()]
     return d, found

@@ -47,6 +47,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import replace
 from functools import cached_property
 from pathlib import Path
 
@@ -56,7 +57,7 @@ from numpy.typing import ArrayLike, NDArray
 from asymslip_gen.edge_multipliers import normal_edge_multiplier
 from asymslip_gen.table_law import normal_edge_multiplier_slope_loglog
 
-from ..errors import InputError, as_float_array
+from ..errors import InputError, as_float_array, as_numbers, positive
 from .base import BoolArray, ContactLaw, FloatArray, LawState
 
 #: The columns a table file must have (header row, any order; other columns are ignored).
@@ -224,9 +225,11 @@ def _validated_points(
     def where(index: int) -> str:
         return f"line {lines[index]}" if lines is not None else f"point {index + 1}"
 
-    P = np.asarray(P, dtype=np.float64) if lines is None else np.asarray(P)
     for name, values in (("P", P), ("a", a)):
-        values = np.asarray(values, dtype=np.float64)
+        if values is None:
+            raise InputError(name, "is missing: a table law needs the loads P and half-widths a")
+    P, a = as_numbers("P", P), as_numbers("a", a)
+    for name, values in (("P", P), ("a", a)):
         bad = ~np.isfinite(values)
         if bad.any():
             index = int(np.flatnonzero(bad.ravel())[0])
@@ -327,18 +330,55 @@ class TableLaw(ContactLaw):
     def _log_half_width(self, P: ArrayLike, derivatives: int = 1) -> tuple[FloatArray, ...]:
         return self._curve.evaluate(np.log(np.asarray(P, dtype=np.float64)), derivatives)
 
-    def half_width(self, P: ArrayLike) -> FloatArray:
-        # Far beyond an extreme table the power-law continuation can exceed the float range:
-        # that is an honest inf (the rules refuse a non-finite a), not a warning.
-        with np.errstate(over="ignore"):
+    def _half_width_values(self, P: ArrayLike) -> FloatArray:
+        """The fit's a(P) as computed: inf (or 0) where the power-law continuation far beyond
+        an extreme table leaves the double range, for the callers that mark such loads."""
+        with np.errstate(over="ignore", under="ignore"):
             return np.exp(self._log_half_width(P, 0)[0])
 
-    def half_width_slope(self, P: ArrayLike) -> FloatArray:
-        """a'(P) = (a/P) d(log a)/d(log P)."""
+    def _half_width_slope_values(self, P: ArrayLike) -> FloatArray:
         P = np.asarray(P, dtype=np.float64)
         s, ds = self._log_half_width(P)
-        with np.errstate(over="ignore"):  # inf, as in half_width
+        with np.errstate(over="ignore", under="ignore", invalid="ignore"):
             return np.exp(s) * ds / P
+
+    def _refuse_beyond_doubles(self, P: FloatArray, values: FloatArray) -> None:
+        """A load whose half-width (or slope) is not a positive finite double is refused."""
+        inside = np.isfinite(values) & (values > 0)
+        if np.all(inside):
+            return
+        loads = np.broadcast_to(P, np.shape(values))
+        shown = float(loads.ravel()[int(np.flatnonzero(~np.asarray(inside).ravel())[0])])
+        low, high = self.load_range
+        exponent = float(self._curve.c1[-1] if shown > high else self._curve.c1[0])
+        raise InputError(
+            "P",
+            f"is outside the range the {self.name} law ({self.source}) can answer: beyond "
+            f"its loads [{low:.6g}, {high:.6g}] it continues as the power law a ~ P^{exponent:.4g}"
+            " of its end, whose half-width at this load is beyond double precision",
+            shown,
+        )
+
+    def half_width(self, P: ArrayLike) -> FloatArray:
+        """a(P) of the fit; beyond the table, the power law of its end slope.
+
+        Raises
+        ------
+        InputError
+            (``P``) for a load that is not > 0, or so far beyond an extreme table that the
+            continuation's half-width leaves the double range (never inf or 0 as a result).
+        """
+        load = positive("P", P)
+        a = self._half_width_values(load)
+        self._refuse_beyond_doubles(load, a)
+        return a
+
+    def half_width_slope(self, P: ArrayLike) -> FloatArray:
+        """a'(P) = (a/P) d(log a)/d(log P); refused where :meth:`half_width` is."""
+        load = positive("P", P)
+        slope = self._half_width_slope_values(load)
+        self._refuse_beyond_doubles(load, slope)
+        return slope
 
     def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:
         """a(P1 + dP) - a(P1) = a1 expm1(s(u1 + du) - s(u1)), du = log1p(dP/P1): no cancellation."""
@@ -351,12 +391,13 @@ class TableLaw(ContactLaw):
         P = np.asarray(P, dtype=np.float64)
         usable = np.isfinite(P) & (P > 0)
         with np.errstate(all="ignore"):
-            a = self.half_width(np.where(usable, P, 1.0))
-        found = usable & np.isfinite(a)
+            a = self._half_width_values(np.where(usable, P, 1.0))
+        found = usable & np.isfinite(a) & (a > 0)
         return np.where(found, a, np.nan)[()], found[()]
 
     def half_width_near(self, P: ArrayLike, P_ref: ArrayLike, a_ref: ArrayLike) -> FloatArray:
-        return self.half_width(P)
+        # For the core's a(P_K): a value beyond the doubles is marked by its finiteness rules.
+        return self._half_width_values(P)
 
     def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
         """a, a' and L_I straight from the fitted curve: no root solve at all."""
@@ -366,7 +407,7 @@ class TableLaw(ContactLaw):
         P2 = P1 + dP
         with np.errstate(all="ignore"):
             u1, du = np.log(P1), np.log1p(dP / P1)
-            u2 = u1 + du
+            u2 = np.log(P2)  # not u1 + du: state 2 is the fit at P2 itself, as half_width(P2)
             j1, j2 = self._curve.piece(u1), self._curve.piece(u2)
             s1, ds1, d2s1 = self._curve.evaluate(u1, 2, j1)
             s2, ds2, d2s2 = self._curve.evaluate(u2, 2, j2)
@@ -375,29 +416,50 @@ class TableLaw(ContactLaw):
             slope1, slope2 = P1 / (a1 * ds1), P2 / (a2 * ds2)  # dP/da = 1/a'(P)
             L_I1 = normal_edge_multiplier(a1, slope1)
             L_I2 = normal_edge_multiplier(a2, slope2)
-            found1 = np.isfinite(a1) & np.isfinite(L_I1) & (P1 > 0)
-            found2 = found1 & np.isfinite(a2) & np.isfinite(L_I2) & np.isfinite(da)
-            return LawState(
-                P1=P1,
-                P2=P2,
-                a1=a1,
-                a2=a1 + da,
-                da=da,
-                L_I1=L_I1,
-                L_I2=L_I2,
-                load_slope1=slope1,
-                load_slope2=slope2,
-                L_I_slope1=self._multiplier_slope(P1, L_I1, ds1, d2s1),
-                L_I_slope2=self._multiplier_slope(P2, L_I2, ds2, d2s2),
-                found1=found1,
-                found2=found2,
+            found1 = np.isfinite(a1) & (a1 > 0) & np.isfinite(L_I1) & (P1 > 0)
+            found2 = found1 & np.isfinite(a2) & (a2 > 0) & np.isfinite(L_I2) & np.isfinite(da)
+            L_I_slope1 = self._multiplier_slope(P1, L_I1, ds1, d2s1)
+            L_I_slope2 = self._multiplier_slope(P2, L_I2, ds2, d2s2)
+        state = LawState(
+            P1=P1,
+            P2=P2,
+            a1=a1,
+            a2=a2,  # the fit's own a(P2); da, from the increment, keeps full precision
+            da=da,
+            L_I1=L_I1,
+            L_I2=L_I2,
+            load_slope1=slope1,
+            load_slope2=slope2,
+            L_I_slope1=L_I_slope1,
+            L_I_slope2=L_I_slope2,
+            found1=found1,
+            found2=found2,
+        )
+        if np.all(found2):
+            return state
+        # A load whose half-width leaves the doubles (the continuation of an extreme table)
+        # has none: NaN, never inf or 0, as every law marks a load it cannot carry.
+        marked = {
+            name: np.where(found, getattr(state, name), np.nan)
+            for found, names in (
+                (found1, ("a1", "L_I1", "load_slope1", "L_I_slope1")),
+                (found2, ("a2", "da", "L_I2", "load_slope2", "L_I_slope2")),
             )
+            for name in names
+        }
+        return replace(state, **marked)
 
     @staticmethod
     def _multiplier_slope(
         P: FloatArray, L_I: FloatArray, ds: FloatArray, d2s: FloatArray
     ) -> FloatArray:
         return normal_edge_multiplier_slope_loglog(P, L_I, ds, d2s)
+
+    #: Why a load has no half-width: only the power-law continuation can lose it.
+    range_note = (
+        "; beyond its table the law continues as the power law of its end slope, whose "
+        "half-width there is beyond double precision"
+    )
 
     def extrapolated(self, P: ArrayLike) -> BoolArray:
         return self.outside_range(P)
@@ -413,11 +475,11 @@ class TableLaw(ContactLaw):
         """P(a), by inverting the fitted a(P) (bisection; the fit is strictly increasing)."""
         from .roots import invert_increasing
 
-        return invert_increasing(self.half_width, np.asarray(a, dtype=np.float64))
+        return invert_increasing(self._half_width_values, np.asarray(a, dtype=np.float64))
 
     def load_slope(self, a: ArrayLike) -> FloatArray:
         """dP/da = 1 / a'(P) at P = P(a)."""
-        return 1.0 / self.half_width_slope(self.load(a))
+        return 1.0 / self._half_width_slope_values(self.load(a))
 
     def normal_multiplier(self, P: ArrayLike) -> FloatArray:
         """L_I of (19) at load P, with dP/da = 1/a'(P) (no inversion needed)."""

@@ -21,7 +21,9 @@ max_cycles=20, domain=None) -> SolverResult``
     ``PowerLaw``), or a :class:`Profile` (:class:`ExpressionProfile`,
     :class:`TableProfile`) with ``E_star``.  ``loading``: an :class:`asymslip.LoadCycle`
     or a :class:`LoadPath` (``LoadPath.from_csv(path)``, header ``P,Q,sigma,M``).
+
 ``refine(contact, loading, mu, *, elements=2000, levels=3, ...) -> RefinementResult``
+
 ``asymslip.solver.compare.with_asymptotes(result, law, cycle, mu)``
     the same result with every ``slip-zone`` estimate and its difference in elements.
 ``write_outputs(result, out_dir, *, png=True) -> list[Path]``

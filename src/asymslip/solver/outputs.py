@@ -45,6 +45,9 @@ from ..files.atomic import atomic_write
 from .conventions import comment_line
 from .result import Edge, SolverResult
 
+#: The files :func:`write_outputs` writes into its folder (the PNG unless ``png=False``).
+FILES = ("tractions.csv", "slip.csv", "energy.csv", "solver.png")
+
 
 def _figure_class() -> Any:
     try:

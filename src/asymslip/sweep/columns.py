@@ -14,6 +14,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Literal
 
+from ..edge import Edge
 from ..edge_flags import MEASURE_KEYS, NUMBER_KEYS
 
 Edges = Literal["right", "left", "both"]
@@ -33,8 +34,8 @@ def edge_columns() -> list[str]:
     return [*NUMBER_KEYS, *MEASURE_KEYS, "warnings"]
 
 
-def edges_of(edge: Edges) -> list[str]:
-    return {"right": ["right"], "left": ["left"], "both": ["right", "left"]}[edge]
+def edges_of(edge: Edges) -> list[Edge]:
+    return {"right": [Edge.RIGHT], "left": [Edge.LEFT], "both": [Edge.RIGHT, Edge.LEFT]}[edge]
 
 
 def output_columns(input_columns: Sequence[str], edge: Edges) -> list[str]:

@@ -89,7 +89,9 @@ def evaluate_chunk(
     for side in edges_of(edge):
         edge_values = evaluation.edges[side]
         for key in (*NUMBER_KEYS, *MEASURE_KEYS):
-            column = np.broadcast_to(np.asarray(edge_values.values[key], dtype=np.float64), (rows,))
+            column = np.broadcast_to(
+                np.asarray(getattr(edge_values, key), dtype=np.float64), (rows,)
+            )
             numbers[PREFIX[side] + key] = np.where(valid, column, np.nan)
         flags = np.broadcast_to(np.asarray(edge_values.flags, dtype=np.int64), (rows,))
         warnings[PREFIX[side] + "warnings"] = _warnings_column(flags, valid, law.for_edge(side))

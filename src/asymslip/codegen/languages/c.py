@@ -15,6 +15,7 @@ from sympy.printing.c import C99CodePrinter
 
 from ..cse import Reduced
 from ..documentation import PAPER, banner_lines, commented, function_lines, wrap
+from ..printer import BranchFree
 from .base import Language, Rendered, left_out_reason, unprintable_functions
 
 HEADER = "asymslip_gen.h"
@@ -24,7 +25,7 @@ PI_NAME = "asymslip_pi"
 PI_VALUE = sympy.N(sympy.pi, 21)
 
 
-class CGeneratedPrinter(C99CodePrinter):
+class CGeneratedPrinter(BranchFree, C99CodePrinter):
     """C99 printer for generated code: strict, no POSIX-only macros, pi as a named constant.
 
     ``M_PI`` is not ISO C, so SymPy's math macros are switched off and pi prints as the
@@ -38,9 +39,6 @@ class CGeneratedPrinter(C99CodePrinter):
 
     def _print_Pi(self, expr: sympy.Expr) -> str:
         return PI_NAME
-
-    def _print_Piecewise(self, expr: sympy.Piecewise) -> str:
-        raise TypeError("Piecewise is not allowed in generated code; use a branch-free form")
 
 
 def _comment_safe(text: str) -> str:

@@ -21,6 +21,7 @@ from sympy.printing.fortran import FCodePrinter
 
 from ..cse import Reduced
 from ..documentation import PAPER, banner_lines, commented, function_lines, wrap
+from ..printer import BranchFree
 from .base import Language, Rendered, left_out_reason, unprintable_functions
 
 MODULE = "asymslip_gen"
@@ -39,7 +40,7 @@ C_FUNCTIONS = {"log1p": log1p, "expm1": expm1}
 INDENT = "    "
 
 
-class FortranGeneratedPrinter(FCodePrinter):
+class FortranGeneratedPrinter(BranchFree, FCodePrinter):
     """Free-form Fortran 2008 printer for elemental ``real(c_double)`` functions.
 
     Configured, not post-processed: ``max``/``min`` get real literals (the intrinsics need
@@ -77,9 +78,6 @@ class FortranGeneratedPrinter(FCodePrinter):
 
     def _print_Pi(self, expr: sympy.Expr) -> str:
         return PI_NAME
-
-    def _print_Piecewise(self, expr: sympy.Piecewise) -> str:
-        raise TypeError("Piecewise is not allowed in generated code; use a branch-free form")
 
 
 def _continued(head: str, items: Sequence[str], tail: str, indent: str) -> list[str]:

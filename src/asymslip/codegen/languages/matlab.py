@@ -15,6 +15,7 @@ from sympy.printing.octave import OctaveCodePrinter
 
 from ..cse import Reduced
 from ..documentation import banner_lines, commented, function_lines
+from ..printer import BranchFree
 from .base import Language, Rendered, left_out_reason, unprintable_functions
 
 RESULT = "result"
@@ -75,12 +76,12 @@ BASE_FUNCTIONS = frozenset(
 )
 
 
-class MatlabGeneratedPrinter(OctaveCodePrinter):
+class MatlabGeneratedPrinter(BranchFree, OctaveCodePrinter):
     """Octave/MATLAB printer: strict, base functions only, with ``log1p`` and ``expm1``."""
 
     def __init__(self) -> None:
         super().__init__({"strict": True, "user_functions": {"log1p": "log1p", "expm1": "expm1"}})
-        self.known_functions = {
+        self.known_functions: dict[str, str] = {
             name: printed
             for name, printed in self.known_functions.items()
             if name in BASE_FUNCTIONS
@@ -102,9 +103,6 @@ class MatlabGeneratedPrinter(OctaveCodePrinter):
 
     def _print_sinc(self, expr: sympy.Expr) -> str:
         return self._print_not_supported(expr)
-
-    def _print_Piecewise(self, expr: sympy.Piecewise) -> str:
-        raise TypeError("Piecewise is not allowed in generated code; use a branch-free form")
 
 
 def _function_file(item: Reduced) -> str:

@@ -1,10 +1,10 @@
-"""One cycle's fast path gives exactly what the array path gives for the same cycle.
+"""One cycle on Python floats gives exactly what the arrays give for the same cycle.
 
-``slip_zone`` answers a single valid cycle of a symmetric law on Python floats
-(:mod:`asymslip.single_cycle`) and everything else on arrays (:func:`asymslip.slip_zones.evaluate`).
-The reference here is the array path itself, asked about the same cycle as an array of one
-element: a different code path through the same kernels, so every double and every warning
-flag must agree exactly -- and a cycle the fast path does not answer must be refused with the
+The slip-zone core runs one edge pipeline (:mod:`asymslip.core.edge_state`) over two sets of
+operations: Python floats and the ``math`` kernels for a single cycle, NumPy arrays for many
+(:mod:`asymslip.core.operations`).  The reference here is the array run of the same cycle as an
+array of one element: the other operations through the same lines, so every double and every
+warning flag must agree exactly -- and a cycle refused on floats must be refused with the
 array path's message.
 """
 
@@ -15,10 +15,11 @@ import warnings
 import numpy as np
 import pytest
 
+import asymslip.core.evaluation as core_evaluation
 from asymslip import FlatRoundedLaw, HertzLaw, LoadCycle, PowerLaw, TableLaw, slip_zone
-from asymslip.edge_flags import MEASURE_KEYS, NUMBER_KEYS
+from asymslip.core.flags import MEASURE_KEYS, NUMBER_KEYS
+from asymslip.core.operations import RuleBroken
 from asymslip.errors import InputError
-from asymslip.single_cycle import evaluate_one
 
 _FLAT = FlatRoundedLaw(c=1.0, R=10.0, E_star=1.0)
 _LOADS = np.geomspace(2.0, 400.0, 20)
@@ -84,7 +85,7 @@ def test_every_answered_cycle_has_the_array_paths_doubles_and_flags(name):
             assert str(refusal.value) == array.errors[0]
             refused += 1
             continue
-        assert evaluate_one(law, cycle, mu) is not None  # the fast path answered it
+        assert core_evaluation.evaluate(law, cycle, mu).shape == ()  # answered on floats
         one = slip_zone(law, cycle, mu, edge="both")
         _same_edge(one, array)
         _same_edge(one.left, array.left)
@@ -96,16 +97,14 @@ def test_without_tension_the_mirrored_left_edge_reuses_the_right_edges_estimates
     # The left edge of the Fig. 5 cycle is the right edge mirrored: one call of the kernels
     # answers both, and the left edge reports the same b with the opposite shear multipliers
     # and slip direction.  With bulk tension the mirror breaks and both edges are computed.
-    import asymslip.single_cycle as single_cycle
-
     calls = []
-    original = single_cycle.edge_estimates
+    original = core_evaluation.edge_estimates
 
     def counted(*arguments):
         calls.append(arguments)
         return original(*arguments)
 
-    monkeypatch.setattr(single_cycle, "edge_estimates", counted)
+    monkeypatch.setattr(core_evaluation, "edge_estimates", counted)
     result = slip_zone(LAWS["hertz"], LoadCycle(100, 0, 105, 1), 0.1, edge="both")
     assert len(calls) == 1
     assert result.left.b == result.b and result.left.slip_zone_width == result.slip_zone_width
@@ -119,9 +118,22 @@ def test_without_tension_the_mirrored_left_edge_reuses_the_right_edges_estimates
     assert len(calls) == 2
 
 
-def test_a_broken_rule_is_left_to_the_array_path_and_named_there():
+def test_a_rule_broken_on_floats_ends_the_cycle_and_is_named_as_on_arrays():
+    # Tension so large that (17) has no steady partial-slip state at an edge (denominator):
+    # the float run stops there, and its message is the array run's.
+    law, cycle = LAWS["hertz"], LoadCycle(100, 0, 105, 1, 0, 30)
+    evaluation = core_evaluation.evaluate(law, cycle, 0.1)
+    assert isinstance(evaluation.checked, RuleBroken)
+    assert evaluation.checked.key == "denominator_tension"  # the tension change is to blame
+    array = _array_result(law, (100, 0, 105, 1, 0, 30), 0.1)
+    with pytest.raises(InputError) as refusal:
+        slip_zone(law, cycle, 0.1)
+    assert str(refusal.value) == array.errors[0]
+    assert np.isnan(slip_zone(law, cycle, 0.1, invalid="mark").b)
+
+
+def test_gross_sliding_is_named_for_one_cycle():
     law, cycle = LAWS["hertz"], LoadCycle(100, 0, 105, 20)  # |Q2| = 20 > mu P2 = 10.5
-    assert evaluate_one(law, cycle, 0.1) is None
     with pytest.raises(InputError, match="gross sliding"):
         slip_zone(law, cycle, 0.1)
 
@@ -134,9 +146,10 @@ def test_a_law_on_numpy_gives_no_warning_on_the_fast_path(name):
     assert 0 < result.b < result.a1
 
 
-def test_many_cycles_and_asymmetric_input_shapes_take_the_array_path():
+def test_many_cycles_take_the_arrays_and_one_cycle_the_floats():
     law = LAWS["hertz"]
-    assert evaluate_one(law, LoadCycle([100, 101], 0, 105, 1), 0.1) is None
-    assert evaluate_one(law, LoadCycle(100, 0, 105, 1), np.array([0.1, 0.2])) is None
-    assert evaluate_one(law, LoadCycle(100, 0, 105, 1), "0.1") is None
-    assert evaluate_one(law, LoadCycle(100, 0, 105, 1), np.float64(0.1)) is not None
+    evaluate = core_evaluation.evaluate
+    assert evaluate(law, LoadCycle([100, 101], 0, 105, 1), 0.1).shape == (2,)
+    assert evaluate(law, LoadCycle(100, 0, 105, 1), np.array([0.1, 0.2])).shape == (2,)
+    one = evaluate(law, LoadCycle(100, 0, 105, 1), np.float64(0.1))
+    assert type(one.edges["right"].b) is float  # Python floats, not NumPy scalars

@@ -1,0 +1,33 @@
+"""The worked example docs/examples/lab_recipe.py runs, prints its recipe and saves its figure."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "docs" / "examples" / "lab_recipe.py"
+
+
+@pytest.mark.slow
+def test_the_blade_root_example_designs_an_exact_recipe_the_solver_confirms(tmp_path: Path):
+    pytest.importorskip("matplotlib")
+    environment = dict(os.environ, PYTHONWARNINGS="error")
+    run = subprocess.run(
+        [sys.executable, str(EXAMPLE)],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        env=environment,
+        timeout=120,
+        check=False,
+    )
+    assert run.returncode == 0, run.stderr
+    assert "(leading order, exact: True)" in run.stdout
+    widths = next(line for line in run.stdout.splitlines() if "solver slip-zone widths" in line)
+    difference, allowed = (float(part.split()[-1].rstrip(")")) for part in widths.split(",")[-2:])
+    assert abs(difference) <= allowed
+    assert (tmp_path / "lab_recipe.png").stat().st_size > 10_000
