@@ -1632,6 +1632,18 @@ def solve_cases() -> list[Bad]:
             "--out",
             r"cannot create",
         ),
+        Bad(
+            "solve --elements 1000000000: more memory than any machine has",
+            ("solve", *hertz(), "--elements", "1000000000"),
+            "--elements",
+            r"1,000,000,000 elements need about 1\.\d+ TB of memory .* give at most about",
+        ),
+        Bad(
+            "solve --refine: the finest grid (4 N) does not fit",
+            ("solve", *hertz(), "--refine", "--elements", "400000000"),
+            "--elements",
+            r"the finest grid \(1,600,000,000 elements\) needs about",
+        ),
     ]
 
 

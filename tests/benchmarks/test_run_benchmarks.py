@@ -55,7 +55,10 @@ EXPECTED = {
     ],
 }
 MET = {"yes", "**no**", "-"}
-MEASURED = re.compile(r"^([\d.,]+ (s|ms|µs|ns)|[\d.]+e-\d+|N\^[\d.]+|skipped: .+)$")
+MEASURED = re.compile(
+    r"^([\d.,]+ (s|ms|µs|ns)|[\d.]+e-\d+|N\^[\d.]+|skipped: .+"
+    r"|[\d.]+ (GB|MB)|[\d.]+(e-\d+)? elements)$"  # the solver's memory and boundary rows
+)
 
 
 def cells(line: str) -> list[str]:

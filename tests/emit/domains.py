@@ -275,6 +275,16 @@ def _tension(draw: Draw) -> Points:
     }
 
 
+def _tension_share(draw: Draw) -> Points:
+    """The error map's axes: a tension share of either sign, half-widths, frictions."""
+    return {
+        "tau": draw.uniform(-3.0, 3.0),
+        "eta": draw.uniform(-1.0, 1.0),
+        "a1": draw.log_uniform(0.01, 100.0),
+        "mu": draw.uniform(0.05, 1.0),
+    }
+
+
 def _asymmetric_edges(draw: Draw) -> Points:
     """One edge of an asymmetric contact: width, slopes and multipliers of both edges > 0; the
     moment of the increments about the centre within +-20 % of the load's (so L_I > 0)."""
@@ -540,6 +550,9 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
         for load in ("pressure", "shear")
         for c in ("sxx", "syy", "sxy")
     },
+    # edge_drive (the error map's axes)
+    "tension_share": _tension_share,
+    "tension_slope_for_share": _tension_share,
 }
 
 
