@@ -94,10 +94,14 @@ bench: $(STAMP) ## issue 10's targets vs the strongest baselines (BENCH_ARGS="--
 # the derivation pages and the generated-language pages are written from the sources at build
 # time (docs/_ext), so new modules, commands and examples appear without editing the docs.
 DOCS_OUT := docs/_build/html
+# The stamp (docs/_ext/asymslip_docs/stamp.py): the digest of the sources, taken before the build
+# and written into the site only when it succeeded; tests/docs skip on a stale site.
 docs: $(STAMP) ## build the documentation site into docs/_build/html (offline, warnings as errors)
 	@rm -rf $(DOCS_OUT)  # no page of an earlier build survives (the link check reads them all)
-	$(PY) -m sphinx -b html -W --keep-going -n -q -d docs/_build/doctrees docs $(DOCS_OUT)
-	@echo "docs: open $(DOCS_OUT)/index.html"
+	@start=$$(date +%s) && digest=$$($(PY) docs/_ext/asymslip_docs/stamp.py) && \
+	  $(PY) -m sphinx -b html -W --keep-going -n -q -d docs/_build/doctrees docs $(DOCS_OUT) && \
+	  echo "$$digest" > $(DOCS_OUT)/.sources-digest && \
+	  echo "docs: built in $$(( $$(date +%s) - start )) s; open $(DOCS_OUT)/index.html"
 
 docs-tools: ## install Chromium for the documentation's browser test (Debian, as root; idempotent)
 	@.ci/install-docs-tools

@@ -14,6 +14,7 @@ from sphinx.application import Sphinx
 
 from . import (
     api_pages,
+    bound_names,
     cli_pages,
     derivation_pages,
     docstrings,
@@ -37,6 +38,6 @@ def setup(app: Sphinx) -> dict[str, Any]:
     app.add_config_value("asymslip_docs_digest", _digest(), "env")
     pages = (api_pages, derivation_pages, language_pages)
     directives = (paper_equations, report_sections, cli_pages)
-    for helper in (mathjax_local, *pages, *directives, short_names, docstrings):
+    for helper in (mathjax_local, *pages, *directives, bound_names, short_names, docstrings):
         helper.setup(app)
     return {"parallel_read_safe": True, "parallel_write_safe": True}

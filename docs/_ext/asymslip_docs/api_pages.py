@@ -21,6 +21,8 @@ from types import ModuleType
 from typing import Any
 
 from sphinx.application import Sphinx
+from sphinx.domains.python import PythonDomain
+from sphinx.environment import BuildEnvironment
 from sphinx.errors import PycodeError
 from sphinx.pycode import ModuleAnalyzer
 
@@ -38,6 +40,8 @@ FOLDER = Path("reference") / "api"
 #: the short-name resolver skips the latter, so that a name has one target.
 SUBMODULES: set[str] = set()
 ALIASES: set[str] = set()
+#: The type aliases declared on the pages (``module.Name``), for the annotation resolver.
+DOCUMENTED_ALIASES: set[str] = set()
 
 
 @dataclass(frozen=True)
@@ -70,7 +74,7 @@ def _directive(value: Any) -> str | None:
     return None
 
 
-def _is_type_alias(value: Any) -> bool:
+def is_type_alias(value: Any) -> bool:
     """``Parsed = tuple[...]``, ``Engine = Literal[...]``, ``X = A | B``: a typing construct."""
     kind = type(value)
     return kind.__module__ in {"typing", "types"} and kind.__name__ in {
@@ -153,7 +157,7 @@ def describe(name: str) -> ModulePage:
         home = getattr(value, "__module__", None)
         if directive is not None and home != name and canonical is not None:
             reexported.append((member, directive, canonical))
-        elif directive is None and _is_type_alias(value):
+        elif directive is None and is_type_alias(value):
             defined.append((member, "alias"))
         else:
             defined.append((member, directive or "data"))
@@ -243,6 +247,13 @@ def write_pages(srcdir: Path) -> None:
         for page in package_pages
         for member, _, _ in page.reexported
     )
+    DOCUMENTED_ALIASES.update(
+        f"{page.name}.{member}"
+        for package_pages in pages.values()
+        for page in package_pages
+        for member, directive in page.defined
+        if directive == "alias"
+    )
     wanted = {"index.rst"}
     for package_pages in pages.values():
         for page in package_pages:
@@ -258,6 +269,23 @@ def _builder_inited(app: Sphinx) -> None:
     write_pages(Path(app.srcdir))
 
 
+def _mark_aliases(app: Sphinx, env: BuildEnvironment) -> None:
+    """The re-export entries are aliases of the one description where the object is defined.
+
+    Sphinx prefers the one non-aliased object among several candidates, so ``ContactLaw``
+    resolves to ``asymslip.laws.base.ContactLaw`` although ``asymslip.ContactLaw`` and
+    ``asymslip.laws.ContactLaw`` are entries too (an exact ``asymslip.ContactLaw`` still finds
+    its own entry, which links to the description).
+    """
+    domain = env.get_domain("py")
+    assert isinstance(domain, PythonDomain)
+    for name in ALIASES:
+        entry = domain.objects.get(name)
+        if entry is not None and not entry.aliased:
+            domain.objects[name] = entry._replace(aliased=True)
+
+
 def setup(app: Sphinx) -> dict[str, Any]:
     app.connect("builder-inited", _builder_inited)
+    app.connect("env-updated", _mark_aliases)
     return {"parallel_read_safe": True}

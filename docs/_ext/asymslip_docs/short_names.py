@@ -50,6 +50,20 @@ def _candidates(domain: PythonDomain, target: str, role: str) -> set[tuple[str, 
     return found
 
 
+def _value(name: str) -> Any:
+    """The object a full name of the packages stands for, or None."""
+    parts = name.split(".")
+    for cut in range(len(parts) - 1, 0, -1):
+        try:
+            value: Any = importlib.import_module(".".join(parts[:cut]))
+        except ImportError:
+            continue
+        for attribute in parts[cut:]:
+            value = getattr(value, attribute, None)
+        return value
+    return None
+
+
 def _inherited(domain: PythonDomain, node: pending_xref, target: str) -> set[tuple[str, str]]:
     """A member written as ``name`` inside a class, or ``Class.name``, that the class inherits:
     the description on the first class of its method resolution order that has one."""
@@ -62,17 +76,7 @@ def _inherited(domain: PythonDomain, node: pending_xref, target: str) -> set[tup
         owners = {context} if context else set()
     found: set[tuple[str, str]] = set()
     for owner in owners:
-        cls = None
-        # The longest importable module prefix holds the class.
-        parts = owner.split(".")
-        for cut in range(len(parts) - 1, 0, -1):
-            try:
-                cls = importlib.import_module(".".join(parts[:cut]))
-            except ImportError:
-                continue
-            for attribute in parts[cut:]:
-                cls = getattr(cls, attribute, None)
-            break
+        cls = _value(owner)
         if not isinstance(cls, type):
             continue
         for base in cls.__mro__:
@@ -82,6 +86,23 @@ def _inherited(domain: PythonDomain, node: pending_xref, target: str) -> set[tup
                 found.add((name, entry.docname))
                 break
     return found
+
+
+def _as_bound(node: pending_xref, target: str, found: set[tuple[str, str]]) -> set[tuple[str, str]]:
+    """Of several candidates, the one that is the object the docstring's module binds the name to
+    (``CYCLE_COLUMNS`` in ``sweep.evaluate`` is the one it imports from ``sweep.columns``, not
+    ``batch.cases``'s own), as Python would read the name there."""
+    module = node.get("py:module")
+    if not module or "." in target:
+        return found
+    try:
+        namespace = vars(importlib.import_module(module))
+    except ImportError:
+        return found
+    if target not in namespace:
+        return found
+    value = namespace[target]
+    return {(name, docname) for name, docname in found if _value(name) is value}
 
 
 def resolve(
@@ -99,6 +120,8 @@ def resolve(
     found = _inherited(domain, node, target)
     if not found:
         found = _candidates(domain, target, node.get("reftype", "obj"))
+    if len(found) > 1:
+        found = _as_bound(node, target, found)
     if len(found) != 1:
         return None
     ((name, docname),) = found
