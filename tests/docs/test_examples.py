@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -21,21 +22,35 @@ from .site import ROOT, tutorials
 
 #: Tutorials that took more than about 5 s on the 2-core development machine: run by CI's slow
 #: step (``pytest -m slow``), not by the default suite.
-SLOW = {"bulk_tension", "lab_recipe", "own_contact_law", "solver_load_path"}
+SLOW = {"bulk_tension", "fe_calibration_tutorial", "own_contact_law", "solver_load_path"}
+#: Worked examples that their package's own (slow) test runs and checks further: not run twice.
+OWN_TESTS = {
+    "lab_recipe": "tests/match/test_docs_example.py",
+    "law_to_crack_site": "tests/stress/test_docs_example.py",
+    "parameter_study": "tests/batch/test_docs_example.py",
+}
 #: What each tutorial needs beyond NumPy (the extra that installs it).
 NEEDS = {"matplotlib": "plot", "pandas": "docs", "pyarrow": "parquet", "sympy": "derive"}
+#: Tutorials that run a program of a toolchain (``make toolchains`` installs it).
+PROGRAMS = {"fe_calibration_tutorial": "ccx"}
 
 
 def _params() -> list[object]:
     return [
         pytest.param(path, id=path.stem, marks=[pytest.mark.slow] if path.stem in SLOW else [])
         for path in tutorials()
+        if path.stem not in OWN_TESTS
     ]
 
 
 def run_tutorial(path: Path, folder: Path) -> str:
     for module, extra in NEEDS.items():
         pytest.importorskip(module, reason=f"tutorials need the {extra} extra (make env)")
+    program = PROGRAMS.get(path.stem)
+    if program is not None and shutil.which(program) is None:
+        if os.environ.get("ASYMSLIP_REQUIRE_TOOLCHAINS") == "1":
+            pytest.fail(f"{path.name} needs {program} (ASYMSLIP_REQUIRE_TOOLCHAINS=1)")
+        pytest.skip(f"{program} not installed: `make toolchains` installs it")
     env = {**os.environ, "MPLBACKEND": "Agg", "PYTHONWARNINGS": "error"}
     done = subprocess.run(
         [sys.executable, "-W", "error", str(path)],
@@ -53,6 +68,13 @@ def run_tutorial(path: Path, folder: Path) -> str:
 
 def test_there_are_tutorials():
     assert len(tutorials()) >= 7
+
+
+@pytest.mark.parametrize("stem", sorted(OWN_TESTS))
+def test_a_tutorial_not_run_here_is_run_by_its_own_test(stem: str):
+    test = ROOT / OWN_TESTS[stem]
+    assert (ROOT / "docs" / "examples" / f"{stem}.py").is_file()
+    assert f'"{stem}.py"' in test.read_text(), f"{test} does not run {stem}.py"
 
 
 @pytest.mark.parametrize("path", _params())
