@@ -51,7 +51,7 @@ exclude_patterns = [
     "tutorials/*.pickle",
     "benchmark-results.md",
 ]
-templates_path: list[str] = []
+templates_path = ["_templates"]
 
 # Cross-references must resolve (make docs passes -n).  Offline there is no intersphinx, so
 # names of the standard library and of third-party packages cannot resolve: they alone are
@@ -133,7 +133,8 @@ html_show_sourcelink = False
 html_theme_options: dict[str, Any] = {
     "navigation_with_keys": False,
     "show_prev_next": True,
-    "secondary_sidebar_items": ["page-toc"],
+    # Every page links to the one statement of the conventions (docs/_templates).
+    "secondary_sidebar_items": ["page-toc", "conventions-link"],
     "footer_start": ["copyright"],
     "footer_end": [],
     "icon_links": [],

@@ -117,8 +117,54 @@ def test_the_site_has_its_sections(site: Path, parsed: dict[Path, Page]):
         "reference/languages/matlab.html",
         "benchmarks.html",
         "changelog.html",
+        "conventions.html",
+        "guide/index.html",
     ):
         assert site / page in parsed, f"{page} is missing"
+
+
+def test_every_page_links_to_the_conventions(site: Path, parsed: dict[Path, Page]):
+    # The index of names and the search page are Sphinx's own, not pages of the site's text.
+    own = {site / "genindex.html", site / "search.html", site / "py-modindex.html"}
+    unlinked = [
+        str(path.relative_to(site))
+        for path, page in parsed.items()
+        if path not in own
+        and not any(
+            (local := _local_target(path, href, site)) is not None
+            and local[0] == site / "conventions.html"
+            for href in page.links
+        )
+    ]
+    assert len(parsed) > 100
+    assert unlinked == []
+
+
+def test_every_guide_page_is_in_the_site(site: Path):
+    from .site import DOCS
+
+    guide = sorted(path.stem for path in (DOCS / "guide").glob("*.md"))
+    assert len(guide) >= 10
+    assert [name for name in guide if not (site / "guide" / f"{name}.html").is_file()] == []
+
+
+def test_the_trust_table_is_the_error_maps_data(site: Path):
+    # Hertz, a2/a1 = 1.10, lambda/mu = 2, tension 0.2, right edge: (22)'s error in elements, read
+    # here from the CSV the solver wrote, must be what the page shows (a hand copy went stale).
+    import csv
+
+    from .site import ROOT
+
+    lines = (ROOT / "generated" / "report" / "error_map.csv").read_text().splitlines()
+    rows = csv.DictReader(line for line in lines if not line.startswith("#"))
+    (row,) = [
+        r
+        for r in rows
+        if (r["law"], r["a2_a1"], r["lam_mu"], r["tau"], r["edge"])
+        == ("hertz", "1.10", "2.00", "0.20", "right")
+    ]
+    text = (site / "theory" / "trust.html").read_text(encoding="utf-8")
+    assert f"{float(row['b_paper_elements']):+.2f}" in text
 
 
 def test_no_page_loads_anything_from_the_network(site: Path, parsed: dict[Path, Page]):

@@ -1,8 +1,9 @@
-"""The README's C, Fortran and MATLAB/Octave examples, compiled and run exactly as printed.
+"""The documented C, Fortran and MATLAB/Octave examples, compiled and run exactly as printed.
 
-The code blocks and their build commands are read from the README section "The formulas in
-C, Fortran and MATLAB/Octave", written to a scratch folder beside a link to ``generated/``,
-built with the README's own command and run; their output is the NumPy value.
+The code blocks and their build commands are read from the section "The formulas in C, Fortran
+and MATLAB/Octave" of the generated-functions guide (``docs/guide/generated.md``, moved there
+from the README), written to a scratch folder beside a link to ``generated/``, built with the
+page's own command and run; their output is the NumPy value.
 """
 
 from __future__ import annotations
@@ -21,7 +22,7 @@ SECTION = "## The formulas in C, Fortran and MATLAB/Octave"
 
 
 def _blocks(language):
-    text = (ROOT / "README.md").read_text()
+    text = (ROOT / "docs" / "guide" / "generated.md").read_text()
     section = text[text.index(SECTION) :]
     section = section[: section.find("\n## ", 1) if "\n## " in section[1:] else len(section)]
     return re.findall(rf"```{language}\n(.*?)```", section, re.DOTALL)

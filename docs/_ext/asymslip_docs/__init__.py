@@ -18,6 +18,7 @@ from . import (
     cli_pages,
     derivation_pages,
     docstrings,
+    error_map_rows,
     language_pages,
     mathjax_local,
     paper_equations,
@@ -37,7 +38,7 @@ def _digest() -> str:
 def setup(app: Sphinx) -> dict[str, Any]:
     app.add_config_value("asymslip_docs_digest", _digest(), "env")
     pages = (api_pages, derivation_pages, language_pages)
-    directives = (paper_equations, report_sections, cli_pages)
+    directives = (paper_equations, report_sections, error_map_rows, cli_pages)
     for helper in (mathjax_local, *pages, *directives, bound_names, short_names, docstrings):
         helper.setup(app)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
