@@ -40,6 +40,10 @@ OTHER_PAGES = [
     "reference/api/asymslip.slip_zones.html",
     "reference/api/asymslip_gen.corrective_slip.html",
     "benchmarks.html",
+    "conventions.html",
+    "theory/trust.html",
+    "guide/slip-zone.html",
+    "guide/stress.html",
 ]
 RAW_TEX = ("$$", "\\frac", "\\sqrt", "\\[", "\\tag")
 
@@ -81,7 +85,9 @@ def visit(browser, page_path: str) -> dict[str, object]:
         """() => Array.from(document.images).map(img => ({
                src: img.currentSrc || img.src, ok: img.complete && img.naturalWidth > 0}))"""
     )
+    sidebar = page.query_selector(".bd-sidebar-secondary")
     result = {
+        "sidebar": sidebar.inner_text() if sidebar is not None else "",
         "text": page.inner_text("article")
         if page.query_selector("article")
         else page.inner_text("body"),
@@ -142,6 +148,17 @@ def test_page_loads_offline_with_its_images(browser, page_path: str):
     assert seen["failed"] == []
     assert [tex for tex in RAW_TEX if tex in seen["text"]] == []
     assert seen["math_errors"] == []
+
+
+def test_the_stress_guide_shows_its_two_committed_figures(browser):
+    seen = visit(browser, "guide/stress.html")
+    shown = [image for image in seen["images"] if "_images" in image["src"]]
+    assert len(shown) == 2 and all(image["ok"] for image in shown)
+
+
+def test_the_conventions_link_is_beside_a_tutorial(browser):
+    seen = visit(browser, "tutorials/fig5_cycle.html")
+    assert "Conventions" in seen["sidebar"]
 
 
 def test_getting_started_draws_which_edge_is_which(browser):
