@@ -45,6 +45,19 @@ def test_amplitude_uniform_sxx_is_half_of_each_cycles_tension_change():
     assert uniform.rig < 0.9 * uniform.prototype
 
 
+def test_the_match_warns_that_the_uniform_sxx_of_the_amplitude_is_not_matched():
+    result = match(BLADE, BLADE_CYCLE, MU, Rig("hertz", 1.0))
+    rig_half = (float(result.cycle.sigma2) - float(result.cycle.sigma1)) / 2
+    text = next(w for w in result.warnings if "uniform sxx" in w)
+    assert f"prototype {0.001:.4g}, rig {rig_half:.4g}" in text
+
+
+def test_an_exact_hertz_rig_of_a_hertz_prototype_has_its_uniform_sxx_and_no_such_warning():
+    result = match(HERTZ, HERTZ_CYCLE, HERTZ_MU, Rig("hertz", 2.0))
+    assert not any("uniform sxx" in w for w in result.warnings)
+    assert float(result.cycle.sigma2) - float(result.cycle.sigma1) == pytest.approx(0.005)
+
+
 def test_compared_points_lie_where_both_asymptotes_hold():
     # A rounded flat's edge length scale is 1/|k_p|, shorter than its half-width: the grid
     # shrinks to 0.99 x 0.1 of the shorter of the two contacts' scales.
