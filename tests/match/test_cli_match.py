@@ -94,6 +94,11 @@ def test_verify_on_the_command_line_reports_the_solver_widths():
     assert check["rig"]["element_size"] == pytest.approx(
         check["prototype"]["element_size"], rel=0.02
     )
+    # Each solve's largest |q2 - q1| is LT2's peak shear change to the edge expansions' next
+    # terms, (a2 - b)/a1 (the solver against the asymptote, both contacts).
+    for side in ("prototype", "rig"):
+        solved, asymptotic = check["shear_change_peak"][side], data["peak_shear_change"][side]
+        assert abs(solved / asymptotic - 1) <= check["expansion_allowance"], side
     stress = check["stress_amplitude"]
     assert sorted(stress) == ["asymptote", "solver"]
     assert stress["asymptote"]["points"] == stress["solver"]["points"] == 24
@@ -108,7 +113,9 @@ def test_verify_text_shows_the_near_edge_stress_amplitude_of_both_sources():
     )
     assert status == 0, err
     assert "near-edge stress amplitude" in out
-    assert "    asymptote largest difference" in out and "    solver    largest difference" in out
+    assert "    asymptote largest |component|: prototype" in out
+    assert "    solver    largest |component|: prototype" in out
+    assert "largest |q2 - q1|: prototype" in out
     assert "uniform sxx of the amplitude (dsigma/2" in out
 
 

@@ -249,6 +249,11 @@ def format_answer(result: MatchResult) -> str:
             f"to the prototype's largest, {check.compared_points} points; the edge expansions' "
             f"next terms reach {check.expansion_allowance:.3g} there)"
         )
+        lines.append(
+            f"  largest |q2 - q1|: prototype {_number(check.shear_change_peak.prototype)}, rig "
+            f"{_number(check.shear_change_peak.rig)}; largest |slip|: prototype "
+            f"{_number(check.slip_peak.prototype)}, rig {_number(check.slip_peak.rig)}"
+        )
         lines.extend(_stress_lines(check.stress))
     lines.append("Warnings: " + ("none" if not result.warnings else ""))
     lines.extend(f"  - {text}" for text in result.warnings)
@@ -268,7 +273,9 @@ def _stress_lines(comparisons: tuple[StressComparison, ...]) -> list[str]:
     for item in comparisons:
         verdict = "within" if item.within_stated_accuracy else "OUTSIDE"
         text = (
-            f"    {item.source:<9} largest difference {item.difference:.3g} ({verdict} the two "
+            f"    {item.source:<9} largest |component|: prototype "
+            f"{_number(item.largest.prototype)}, rig {_number(item.largest.rig)}; "
+            f"largest difference {item.difference:.3g} ({verdict} the two "
             f"asymptotes' stated accuracy, {item.allowed:.3g})"
         )
         if item.explained is not None:

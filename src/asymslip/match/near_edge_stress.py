@@ -90,6 +90,7 @@ class StressComparison:
     points: int
     unit: float  # the grid's unit, a length
     scale: float  # the prototype's largest |component| over the points
+    largest: Pair  # each contact's largest |component| over the points
     difference: float  # max |rig - prototype| / scale
     allowed: float  # max (accuracy(prototype) + accuracy(rig)) / scale
     within_stated_accuracy: bool
@@ -103,6 +104,7 @@ class StressComparison:
             "points": self.points,
             "grid_unit": self.unit,
             "scale": self.scale,
+            "largest": {"prototype": self.largest.prototype, "rig": self.largest.rig},
             "difference": self.difference,
             "allowed": self.allowed,
             "within_stated_accuracy": self.within_stated_accuracy,
@@ -184,6 +186,7 @@ def asymptotic_amplitudes(result: MatchResult) -> AsymptoticAmplitudes:
         points=int(grid.X.size),
         unit=grid.unit,
         scale=scale,
+        largest=Pair(scale, float(np.max(np.abs(theirs)))),
         difference=float(np.max(difference)) / scale,
         allowed=float(np.max(allowance)) / scale,
         within_stated_accuracy=bool(np.all(difference <= allowance)),
@@ -213,6 +216,7 @@ def solver_comparison(
         points=int(asymptotes.grid.X.size),
         unit=asymptotes.grid.unit,
         scale=scale,
+        largest=Pair(scale, float(np.max(np.abs(theirs)))),
         difference=float(np.max(_largest(difference))) / scale,
         allowed=float(np.max(allowance)) / scale,
         within_stated_accuracy=bool(np.all(_largest(difference) <= allowance)),

@@ -40,7 +40,7 @@ from numpy.typing import NDArray
 from ..errors import InputError
 from ..solver.result import Edge
 from .near_edge_stress import StressComparison, asymptotic_amplitudes, solver_comparison
-from .result import MatchResult
+from .result import MatchResult, Pair
 
 if TYPE_CHECKING:
     from ..stress.field import StressField
@@ -108,6 +108,16 @@ class Verification:
     stress: tuple[StressComparison, ...] = ()
 
     @property
+    def shear_change_peak(self) -> Pair:
+        """The largest |q2 - q1| of each solve over its own slip zone."""
+        return Pair(_peak(self.prototype, "q_diff"), _peak(self.rig, "q_diff"))
+
+    @property
+    def slip_peak(self) -> Pair:
+        """The largest |slip| on loading of each solve over its own slip zone."""
+        return Pair(_peak(self.prototype, "slip"), _peak(self.rig, "slip"))
+
+    @property
     def widths_agree(self) -> bool:
         return abs(self.width_difference) <= self.width_allowed
 
@@ -120,6 +130,11 @@ class Verification:
             "widths_agree": self.widths_agree,
             "shear_change_difference": self.shear_change_difference,
             "slip_difference": self.slip_difference,
+            "shear_change_peak": {
+                "prototype": self.shear_change_peak.prototype,
+                "rig": self.shear_change_peak.rig,
+            },
+            "slip_peak": {"prototype": self.slip_peak.prototype, "rig": self.slip_peak.rig},
             "compared_points": self.compared_points,
             "expansion_allowance": self.expansion_allowance,
             "stress_amplitude": {item.source: item.to_dict() for item in self.stress},
@@ -159,6 +174,13 @@ def solve_edge(
         a2=a2,
         solution=result,
     )
+
+
+def _peak(solved: SolvedEdge, values: str) -> float:
+    """max |values| over the element centres of the solve's slip zone, 0 < s < a2 - b."""
+    inside = (solved.s > 0) & (solved.s < solved.reach)
+    chosen: FloatArray = getattr(solved, values)[inside]
+    return float(np.max(np.abs(chosen))) if chosen.size else math.nan
 
 
 def compared(prototype: SolvedEdge, rig: SolvedEdge) -> NDArray[np.bool_]:
