@@ -110,6 +110,9 @@ sphinx_gallery_conf = {
     "show_signature": False,
     "plot_gallery": "True",
     "abort_on_example_error": True,
+    # Every tutorial runs on every build, not only those whose script changed: a tutorial's
+    # output must be what today's code prints (the gallery's cache keys on the script alone).
+    "run_stale_examples": True,
     # Generated pages would link to a Binder/JupyterLite; the site is offline: none.
     "first_notebook_cell": None,
     "capture_repr": (),
