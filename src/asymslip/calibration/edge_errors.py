@@ -18,8 +18,11 @@ error.  The error of a window's a (and likewise of its L_I) has two parts, added
     - *Richardson*: the change Delta_1 to the first window at least twice as wide, divided
       by r^p - 1 (r the ratio of their widths): the neglected term shifts a by O(w^3) and
       L_I by O(w^2) over a window of width w, so p = 3 and 2 -- but p is the order the data
-      show, log(Delta_2 / Delta_1) / log r from a third window twice as wide again, kept in
-      [1, 3] (resp. [1, 2]) and 1 where the changes are within their scatter.  A window
+      show, log(Delta_2 / Delta_1) / log r from a third window twice as wide again (or, on a
+      trace too coarse for one, from a window between the two: e(w) = C w^p through the
+      three), kept in [1, 3] (resp. [1, 2]), and 1 where the changes are within twice their
+      scatter or disagree in sign (taking the expansion's order there instead lets the
+      estimate miss: 88 % coverage of a's error with 1 % absolute scatter, not 95 %).  A window
       reaching towards the end of the expansion's validity (the corner of a flat punch) has
       changes that shrink slower than w^3, a low observed order and a large estimate: the
       next term alone misses such cases by up to 2.3 times.
@@ -47,10 +50,11 @@ from .noise import NoiseModel
 
 FloatArray = NDArray[np.float64]
 
-#: The truncation part of the error is this many times the larger of its two estimates: on
-#: exact traces of the built-in laws (240 fits) 1.5 covers every one (the largest true/reported
-#: 0.68 for a, 0.88 for L_I) and keeps the median true/reported at 0.62-0.64; 1.25 does not
-#: cover every L_I.
+#: The truncation part of the error is this many times the larger of its two estimates.  On
+#: exact traces of the built-in laws (240 fits, tests/calibration/census.py) the estimate alone
+#: is the true error to within a few per cent in most fits (true/reported 0.45-0.50 at factor 2
+#: for 35 nodes or more; lower near the corner of the rounded flat punch and on some 20-node
+#: meshes), and 2 covers every fit (largest true/reported 0.57 for a, 0.70 for L_I).
 TRUNCATION_SAFETY = 2.0
 #: The orders of the two-term fit's truncation error in the window width: a, L_I.
 ORDERS = (3.0, 2.0)
@@ -204,7 +208,7 @@ def window_errors(
                 significant, np.abs(first), 1.0
             )
             observed = np.log(growth) / np.log(mean_ratio)
-            order = _order(significant, observed, (first, sd_first), (second, sd_second))
+            order = np.where(significant, np.clip(observed, 1.0, ORDERS), 1.0)
         elif m - k >= 2:
             # No window twice as wide again (a coarse trace): the order from a window j
             # between k and m instead, e(w) = C w^p through the three.
@@ -225,7 +229,7 @@ def window_errors(
                 fits.reach[j] / fits.reach[k],
                 ratio,
             )
-            order = _order(significant, observed, (inner, sd_inner), (outer, sd_outer))
+            order = np.where(significant, np.clip(observed, 1.0, ORDERS), 1.0)
         richardson = _beyond_scatter(first, sd_first) / (ratio**order - 1.0)
         truncation[k] = safety * np.maximum(next_term, richardson)
     scatter = quantile * fits.sd
@@ -296,23 +300,6 @@ def _change(
     return values[wide] - values[narrow], np.sqrt(difference**2 @ fits.sigma**2)
 
 
-def _order(
-    significant: FloatArray,
-    observed: FloatArray,
-    *changes: tuple[FloatArray, FloatArray],
-) -> FloatArray:
-    """The order for Richardson's estimate: the observed one where the changes stand out of
-    their scatter (kept in [1, ORDERS]); the expansion's own (ORDERS) where a change is buried
-    in the scatter (it then measures the scatter, not the truncation, which is of the
-    expansion's order below it); 1 (the cautious bound) where they stand out but disagree in
-    sign or growth (the window reaches the end of the expansion's validity)."""
-    buried = np.zeros(np.shape(observed), dtype=bool)
-    for change, sd in changes:
-        buried |= np.abs(change) <= SIGNIFICANT * sd
-    clipped = np.clip(np.where(significant, observed, 1.0), 1.0, ORDERS)
-    return np.where(significant, clipped, np.where(buried, ORDERS, 1.0))
-
-
 def _three_window_order(quotient: FloatArray, r_inner: float, r_outer: float) -> FloatArray:
     """p with (r_outer^p - r_inner^p) / (r_inner^p - 1) = quotient, by bisection in [0.25, 6].
 
@@ -327,7 +314,8 @@ def _three_window_order(quotient: FloatArray, r_inner: float, r_outer: float) ->
         above = value > quotient
         high = np.where(above, middle, high)
         low = np.where(above, low, middle)
-    return 0.5 * (low + high)
+    root: FloatArray = 0.5 * (low + high)
+    return root
 
 
 def _shrunk(change: FloatArray, sd: FloatArray) -> FloatArray:

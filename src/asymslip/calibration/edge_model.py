@@ -43,7 +43,7 @@ def resolution(low: float, high: float) -> float:
     Each round narrows the bracket to two grid steps around its best point; the answer is the
     middle of the last bracket, within one last grid step of the minimum.
     """
-    return (high - low) * 2.0 ** (ROUNDS - 1) / (GRID - 1) ** ROUNDS
+    return float((high - low) * 2.0 ** (ROUNDS - 1) / (GRID - 1) ** ROUNDS)
 
 
 def two_term(D: FloatArray, p: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
@@ -140,7 +140,8 @@ def minimise(
         best = trial[np.arange(rows), np.argmin(rss, axis=1)]
         step = (hi - lo) / (GRID - 1)
         lo, hi = np.maximum(best - step, low), np.minimum(best + step, high)
-    return 0.5 * (lo + hi)
+    middle: FloatArray = 0.5 * (lo + hi)
+    return middle
 
 
 def padded(
