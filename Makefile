@@ -10,6 +10,7 @@ EXTRAS := derive,dev,plot,bench,dask,special,parquet,fe,docs
 .DEFAULT_GOAL := all
 .PHONY: all env demo generate check-generated check-wheel verify test lint test-languages toolchains bench \
         figures error-map check-error-map report docs docs-tools test-docs \
+        stress-error-map check-stress-error-map nucleation-figure \
         accuracy clean help
 
 all: generate demo ## set up the environment, regenerate the formulas, print the demo
@@ -33,6 +34,7 @@ check-generated: $(STAMP) ## regenerate every tree under two hash seeds and diff
 	$(PY) -m asymslip.codegen check
 	$(PY) -m asymslip figure fig5 --check generated/figures
 	$(PY) -m asymslip figure error-map --check generated/report
+	$(PY) -m asymslip.stress.error_map --check --data generated/report
 
 verify: $(STAMP) ## run every derivation, one line per paper equation
 	$(PY) -m asymslip.codegen verify
@@ -59,6 +61,18 @@ error-map: $(STAMP) ## solver vs every estimate: generated/report/error_map.csv,
 
 check-error-map: $(STAMP) ## recompute a few rows of the error map and compare (a few seconds)
 	$(PY) -m asymslip figure error-map --check generated/report
+
+# The stress error map runs the solver on 60 cycles (a few minutes); the report summarises it
+# (EA-7 of derivations/stress_edge_asymptote.py), so it is rewritten too.
+stress-error-map: $(STAMP) ## asymptotic stress vs solver and exact field near the edges (CSV, PNG)
+	$(PY) -m asymslip.stress.error_map --data generated/report --out generated/figures
+	$(PY) -m asymslip.codegen report
+
+check-stress-error-map: $(STAMP) ## recompute two cycles of the stress error map and compare
+	$(PY) -m asymslip.stress.error_map --check --data generated/report
+
+nucleation-figure: $(STAMP) ## the blade-root-like nucleation figure (generated/figures)
+	$(PY) -m asymslip.nucleation.blade_root --out generated/figures
 
 report: $(STAMP) ## write generated/report/derivation.md from the derivation records
 	$(PY) -m asymslip.codegen report

@@ -27,24 +27,34 @@ free of traction, and balance the applied force on a half circle.  Plane-strain 
   z -> 0, integrates (u_z' odd in x) to du_z/dx = -(2 (1 - nu^2)/(pi E)) P / x;
 * a bulk stress sigma_xx = sigma (sigma_zz = 0) strains the surface by (1 - nu^2) sigma / E.
 
-Two elastically similar bodies (1 above, 2 below, both described in a frame with z into the
-body and the same x) with 1/E* = 2 (1 - nu^2)/E (the paper's plane-strain modulus, so that
-(29) reads a^2 = 4 P R/(pi E*)):
+Two elastically similar bodies, the lower body (1) and the indenter (2), each described in a
+frame with z into the body and the same x (the relations are symmetric in the two: which one
+lies above does not enter), with 1/E* = 2 (1 - nu^2)/E (the paper's plane-strain modulus, so
+that (29) reads a^2 = 4 P R/(pi E*)):
 
 * the pressure p presses both bodies in: the gap opens by w = u_z1 + u_z2, with
   dw/dx = -(2/(pi E*)) int p(t)/(x - t) dt;
-* q(x) is the shear traction the lower body exerts on the upper body (along +x), Q = int q
-  dx; the lower body carries -q.  The relative tangential displacement s = u_x2 - u_x1 (lower
-  body relative to the upper) has ds/dx = +(2/(pi E*)) int q(t)/(x - t) dt;
-* the differential bulk tension sigma = sigma_2 - sigma_1 (tension in the lower body minus
-  tension in the upper) adds ds/dx = sigma/(2 E*).
+* q(x) is the shear traction the indenter exerts on the lower body (along +x), Q = int q dx;
+  the indenter carries -q.  The relative tangential displacement s = u_x2 - u_x1 (the
+  indenter relative to the lower body: the project's slip) has ds/dx = +(2/(pi E*)) int
+  q(t)/(x - t) dt;
+* the differential bulk tension sigma = sigma_2 - sigma_1 (the indenter's bulk tension minus
+  the lower body's) adds ds/dx = sigma/(2 E*).
 
 The local (1 - 2 nu) terms of Johnson's (2.25) (du_x/dx from pressure, du_z/dx from shear) are
 equal in the two bodies and cancel in w and s: the normal and tangential problems uncouple.
 Under full stick ds/dx = 0 on the contact, i.e. (1/pi) int q/(x - t) dt = -sigma/4: on a
-Hertz contact this gives q = (Q/pi - sigma x/4)/sqrt(a^2 - x^2) and, at the right edge,
+Hertz contact this gives q = (Q/pi + sigma x/4)/sqrt(a^2 - x^2) and, at the right edge,
 K_II = Q/(pi sqrt(2a)) + (sigma/4) sqrt(a/2), the (38) of the paper (the solver's tests check
 it).  Coulomb slip: where an element slips, q = mu p sign(ds/dt).
+
+Which body carries the tension matters.  With the lower body alone in tension sigma_L,
+sigma = -sigma_L, and under full stick q = (Q/pi - sigma_L x/4)/sqrt(a^2 - x^2): the stretched
+lower body pulls its surface outward, the indenter holds it back with a traction along -x at
+x > 0, and K_II = Q/(pi sqrt(2a)) - (sigma_L/4) sqrt(a/2).  The paper's (20), (21) and (38),
+and the asymptotic formulas derived from them, carry +sigma: the sign of sigma above, the
+indenter's bulk tension minus the lower body's (equivalently, a tension of the lower body with
+q taken as the traction on the indenter).
 
 Integrating the point-force relations over one element (u = x_i - t, k = (x_i - x_j)/h an
 integer): the displacement of a log kernel, made definite by a reference length ell,
@@ -96,8 +106,8 @@ REFERENCE = Argument(
 MODULUS = Argument(E_star, "Plane-strain contact modulus E* > 0 [force/length^2].")
 TENSION = Argument(
     sigma,
-    "Differential bulk tension sigma = sigma_2 - sigma_1: the bulk tension of the lower body "
-    "minus that of the upper body [force/length^2].",
+    "Differential bulk tension sigma = sigma_2 - sigma_1: the bulk tension of the indenter "
+    "minus that of the lower body [force/length^2].",
 )
 POSITION = Argument(x, "Position along the interface [length].")
 
@@ -207,9 +217,9 @@ def gap_opening_slope_kernel() -> sympy.Expr:
 
 @functools.cache
 def relative_slip_slope_kernel() -> sympy.Expr:
-    """ds/dx at x from a unit shear traction on the upper body at t, s = u_x2 - u_x1.
+    """ds/dx at x from a unit shear traction on the lower body at t, s = u_x2 - u_x1.
 
-    The upper body (1) carries +F, the lower body (2) -F, each in its own frame with z into
+    The lower body (1) carries +F, the indenter (2) -F, each in its own frame with z into
     the body and the same x.
     """
     per_force = tangential_surface_strain().subs({force: 1, r_pos: x - t})
@@ -218,7 +228,7 @@ def relative_slip_slope_kernel() -> sympy.Expr:
 
 @functools.cache
 def tension_strain() -> sympy.Expr:
-    """ds/dx from bulk tensions sigma_2 (lower) and sigma_1 (upper): eps_xx2 - eps_xx1."""
+    """ds/dx from bulk tensions sigma_2 (indenter) and sigma_1 (lower body): eps_xx2 - eps_xx1."""
     sigma1, sigma2 = sympy.symbols("sigma_1 sigma_2", real=True)
     eps2 = _hooke(sigma2, 0, 0)[0]
     eps1 = _hooke(sigma1, 0, 0)[0]
@@ -332,7 +342,7 @@ def derive() -> Derivation:
         )
         eq.holds(
             relative_slip_slope_kernel() - 2 / (sympy.pi * E_star) / (x - t),
-            how="ds/dx = +(2/(pi E*)) int q(t)/(x - t) dt, q the traction on the upper body",
+            how="ds/dx = +(2/(pi E*)) int q(t)/(x - t) dt, q the traction on the lower body",
         )
         local = (1 - 2 * nu) * (1 + nu) / E  # Johnson (2.25): -local p in u_x', +local q in u_z'
         p_, q_ = sympy.symbols("p q", real=True)
@@ -425,8 +435,8 @@ def derive() -> Derivation:
         summary="Relative tangential displacement at element centre i per unit shear "
         "traction on element j.",
         doc="S(k) = +(2/(pi E*)) int_{(k - 1/2) h}^{(k + 1/2) h} ln(|u|/ell) du = -W(k): "
-        "s = u_x2 - u_x1 (the lower body relative to the upper) caused by a uniform unit shear "
-        "traction exerted on the upper body by the lower one (the lower body carrying the "
+        "s = u_x2 - u_x1 (the indenter relative to the lower body) caused by a uniform unit "
+        "shear traction exerted on the lower body by the indenter (the indenter carrying the "
         "opposite traction), from Flamant's solution.  Defined up to a multiple of the total "
         "shear force (the constant ln ell), which the rigid tangential shift absorbs.",
         module="solver_influence",

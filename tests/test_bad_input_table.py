@@ -185,6 +185,9 @@ FILES = {
     "cases_bad_rows.csv": "# cycles\nP1,Q1,P2,Q2,case\n100,0,105,1,good\n100,0,1o5,1,typo\n"
     "100,0,100,1,flat\n100,900,105,1,sliding\n100,nan,105,1,nan\n100,,105,1,empty\n"
     "1e2,-1e-1,1.05e2,5e-1,good\n",
+    # solve-batch: a case, and a table with neither a cycle nor a path
+    "batch.csv": "case,P1,Q1,P2,Q2\nfig5,100,0,105,1\n",
+    "batch_no_cycle.csv": "case,P1,Q1\na,100,0\n",
     # module laws: one row inside the cubic's range, one beyond its maximum load
     "cases_cubic.csv": "P1,Q1,P2,Q2\n1,0,1.05,0.01\n100,0,105,1\n2,0,2.1,0.02\n",
     "not_a_law.py": "x = 1\n",
@@ -238,6 +241,14 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> Path:
     os.symlink(folder / "cases.csv", folder / "cases_symlink.csv")
     os.link(folder / "cases.csv", folder / "cases_hardlink.csv")
     (folder / "a_folder").mkdir()
+    (folder / "batch_dataset").mkdir()  # a Parquet dataset of solve-batch cases
+    import pyarrow
+    import pyarrow.parquet
+
+    pyarrow.parquet.write_table(
+        pyarrow.table({"P1": [100.0], "Q1": [0.0], "P2": [105.0], "Q2": [1.0]}),
+        folder / "batch_dataset" / "part.parquet",
+    )
     (folder / "folder.py").mkdir()
     # The law modules of `asymslip derive` that the table uses (their derivation is a case of
     # its own below too).
@@ -1621,6 +1632,18 @@ def solve_cases() -> list[Bad]:
             "--out",
             r"cannot create",
         ),
+        Bad(
+            "solve --elements 1000000000: more memory than any machine has",
+            ("solve", *hertz(), "--elements", "1000000000"),
+            "--elements",
+            r"1,000,000,000 elements need about 1\.\d+ TB of memory .* give at most about",
+        ),
+        Bad(
+            "solve --refine: the finest grid (4 N) does not fit",
+            ("solve", *hertz(), "--refine", "--elements", "400000000"),
+            "--elements",
+            r"the finest grid \(1,600,000,000 elements\) needs about",
+        ),
     ]
 
 
@@ -1811,6 +1834,220 @@ def calibrate_cases() -> list[Bad]:
     ]
 
 
+def stress_cases() -> list[Bad]:
+    """The stress field and the crack-nucleation parameters (issue 18)."""
+    near = ("--x", "11.5", "--depth", "0")
+    asymptote = ("stress", *hertz(), *near, "--source", "asymptote")
+    nucleation = ("nucleation", *hertz(), "--elements", "100", "--E", "1.82", "--nu", "0.3")
+    return [
+        Bad(
+            "stress --depth -1",
+            ("stress", *hertz(), "--x", "11.5", "--depth", "-1", "--source", "asymptote"),
+            "--depth",
+            r"must be >= 0",
+        ),
+        Bad(
+            "stress --depth nan",
+            ("stress", *hertz(), "--x", "11.5", "--depth", "nan"),
+            "--depth",
+            FINITE,
+        ),
+        Bad("stress --x text", ("stress", *hertz(), "--x", "abc", "--depth", "0"), "--x", TEXT),
+        Bad("stress --depth missing", ("stress", *hertz(), "--x", "11.5"), "--depth", r"required"),
+        Bad(
+            "stress: the asymptote at the centre",
+            ("stress", *hertz(), "--x", "0", "--depth", "0", "--source", "asymptote"),
+            "--x",
+            r"must lie within 0\.5 a1",
+        ),
+        Bad(
+            "stress: --elements with the asymptote",
+            (*asymptote, "--elements", "100"),
+            "--elements",
+            r"applies to --source solver only",
+        ),
+        Bad("stress --nu 0.5", (*asymptote, "--nu", "0.5"), "--nu", r"0 < nu < 0\.5"),
+        Bad(
+            "stress --out with another extension",
+            (*asymptote, "--out", "{d}/field.txt"),
+            "--out",
+            r"must end in \.csv or \.parquet",
+        ),
+        Bad(
+            "stress --source bogus",
+            ("stress", *hertz(), *near, "--source", "fem"),
+            "--source",
+            r"invalid choice",
+        ),
+        Bad(
+            "stress: a table law has no profile for the solver",
+            ("stress", "--law", "table", "--table", "{d}/hertz.csv", *cycle(), *near),
+            "--law",
+            r"has no profile for the solver",
+        ),
+        Bad(
+            "stress: gross sliding",
+            ("stress", *hertz(Q2="11"), *near, "--elements", "100"),
+            "--Q2",
+            r"must be < mu P2",
+        ),
+        Bad("nucleation --nu 0.5", _swap(nucleation, "--nu", "0.5"), "--nu", r"0 < nu < 0\.5"),
+        Bad("nucleation --E 0", _swap(nucleation, "--E", "0"), "--E", r"Young's modulus > 0"),
+        Bad("nucleation --E text", _swap(nucleation, "--E", "abc"), "--E", TEXT),
+        Bad("nucleation --L -1", (*nucleation, "--L", "-1"), "--L", r"must be finite and > 0"),
+        Bad(
+            "nucleation: findley without k",
+            (*nucleation, "--criteria", "findley"),
+            "--criteria",
+            r"findley needs its constant k",
+        ),
+        Bad(
+            "nucleation: fs without sigma-y",
+            (*nucleation, "--criteria", "fs", "--k", "0.5"),
+            "--criteria",
+            r"fs \(Fatemi-Socie\) needs",
+        ),
+        Bad(
+            "nucleation: an unknown criterion",
+            (*nucleation, "--criteria", "swt,miner"),
+            "--criteria",
+            r"unknown criterion 'miner'",
+        ),
+        Bad(
+            "nucleation --elements 10",
+            _swap(nucleation, "--elements", "10"),
+            "--elements",
+            r"must be at least 64",
+        ),
+        Bad(
+            "nucleation --out a file",
+            (*nucleation, "--criteria", "swt", "--out", "{d}/hertz.csv"),
+            "--out",
+            r"not a folder",
+        ),
+    ]
+
+
+def solve_batch_cases() -> list[Bad]:
+    def batch(*options: str, cases: str = "{d}/batch.csv", out: str = "{d}/o.parquet") -> tuple:
+        return ("solve-batch", cases, *HERTZ, "--mu", "0.1", *options, "--out", out)
+
+    return [
+        Bad("solve-batch: CASES missing", batch(cases="{d}/nowhere.csv"), "CASES", "cannot read"),
+        Bad(
+            "solve-batch: CASES an empty folder",
+            batch(cases="{d}/a_folder"),
+            "CASES",
+            r"cannot read .*no \.parquet file",
+        ),
+        Bad(
+            "solve-batch: CASES with neither a cycle nor a path",
+            batch(cases="{d}/batch_no_cycle.csv"),
+            "CASES",
+            r"no column P2, Q2 and no path column",
+        ),
+        Bad(
+            "solve-batch: a law without a profile",
+            (
+                "solve-batch",
+                "{d}/batch.csv",
+                "--law",
+                "table",
+                "--table",
+                "{d}/table.csv",
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/o.parquet",
+            ),
+            "--law",
+            r"solves a law's profile",
+        ),
+        Bad(
+            "solve-batch: no radius",
+            ("solve-batch", "{d}/batch.csv", "--E-star", "1", "--mu", "0.1", "--out", "{d}/o.csv"),
+            "--R",
+            r"is required with --law hertz",
+        ),
+        Bad(
+            "solve-batch: no friction coefficient",
+            ("solve-batch", "{d}/batch.csv", *HERTZ, "--out", "{d}/o.parquet"),
+            "--mu",
+            r"is required",
+        ),
+        Bad("solve-batch: --mu 0", batch("--mu", "0"), "--mu", r"must be > 0"),
+        Bad("solve-batch: too few elements", batch("--elements", "10"), "--elements", "at least"),
+        Bad("solve-batch: no steps", batch("--steps", "0"), "--steps", "at least 1"),
+        Bad(
+            "solve-batch: no cases per task",
+            batch("--cases-per-task", "0"),
+            "--cases-per-task",
+            ">= 1",
+        ),
+        Bad("solve-batch: no workers", batch("--workers", "0"), "--workers", ">= 1"),
+        Bad(
+            "solve-batch: workers and a scheduler",
+            batch("--workers", "2", "--scheduler", "tcp://127.0.0.1:8786"),
+            "--scheduler",
+            r"either --workers or --scheduler",
+        ),
+        Bad(
+            "solve-batch: --out is the input",
+            batch(out="{d}/batch.csv"),
+            "--out",
+            r"is also an input \(the cases",
+        ),
+        Bad(
+            "solve-batch: --out a folder without its slash",
+            batch(out="{d}/a_folder"),
+            "--out",
+            r"is a folder: end it with /",
+        ),
+        Bad(
+            "solve-batch: --out a file of the cases folder",
+            (
+                "solve-batch",
+                "{d}/batch_dataset",
+                *HERTZ,
+                "--mu",
+                "0.1",
+                "--out",
+                "{d}/batch_dataset/part.parquet",
+            ),
+            "--out",
+            r"part\.parquet is also an input \(a file of the cases",
+        ),
+        Bad(
+            "solve-batch: --out a folder holding the input",
+            batch(out="{d}/"),
+            "--out",
+            r"holds an input",
+        ),
+        Bad(
+            "solve-batch: --out a bad extension",
+            batch(out="{d}/o.txt"),
+            "--out",
+            r"name a \.csv or \.parquet file",
+        ),
+        Bad(
+            "sweep: no workers",
+            (
+                "sweep",
+                "{d}/cases.csv",
+                *HERTZ,
+                "--mu",
+                "0.1",
+                "--workers",
+                "0",
+                "--out",
+                "{d}/o.csv",
+            ),
+            "--workers",
+            ">= 1",
+        ),
+    ]
+
+
 BAD: list[Bad] = [
     *number_option_cases(),
     *physics_cases(),
@@ -1821,6 +2058,8 @@ BAD: list[Bad] = [
     *solve_cases(),
     *calibrate_cases(),
     *match_cases(),
+    *stress_cases(),
+    *solve_batch_cases(),
 ]
 
 
@@ -2533,6 +2772,8 @@ def test_the_table_has_at_least_80_cases_across_every_command():
         "sweep",
         "solve",
         "calibrate",
+        "stress",
+        "nucleation",
     } <= commands
     assert len(BAD) + len(VALID) + len(ROW_ERRORS) >= 80
 
@@ -2605,6 +2846,22 @@ MISSING_EXTRAS = [
         "out.parquet",
     ),
     (
+        "dask",
+        "distributed",
+        (
+            "solve-batch",
+            "{d}/batch.csv",
+            *HERTZ,
+            "--mu",
+            "0.1",
+            "--workers",
+            "2",
+            "--out",
+            "{d}/batch_on_dask.csv",
+        ),
+        "batch_on_dask.csv",
+    ),
+    (
         "fe",
         "meshio",
         ("calibrate", "{d}/surface.vtu", "--out", "{d}/cal_without_meshio.json"),
@@ -2633,6 +2890,20 @@ WITHOUT_EXTRAS = [
         "pyarrow",
         ("sweep", "{d}/cases.csv", *HERTZ, "--mu", "0.1", "--out", "{d}/without_pyarrow.csv"),
     ),
+    (
+        "distributed",
+        (
+            "solve-batch",
+            "{d}/batch.csv",
+            *HERTZ,
+            "--mu",
+            "0.1",
+            "--elements",
+            "100",
+            "--out",
+            "{d}/batch_in_one_process.csv",
+        ),
+    ),
 ]
 
 
@@ -2641,7 +2912,7 @@ WITHOUT_EXTRAS = [
 #: JSON one after the other and printing each one's (exit status, stdout, stderr) as JSON.
 WITHOUT_OPTIONAL_PACKAGES = """
 import contextlib, io, json, sys
-for package in ("matplotlib", "scipy", "sympy", "pyarrow", "meshio"):
+for package in ("matplotlib", "scipy", "sympy", "pyarrow", "meshio", "dask", "distributed"):
     sys.modules[package] = None
 from asymslip.cli import main
 results = []
@@ -2760,6 +3031,8 @@ def test_what_needs_no_optional_dependency_works_without_them(files: Path, proce
     assert json.loads(results["scipy"][1])["a1"] > 0  # the power law's slip zone: no 2F1
     with open(files / "without_pyarrow.csv", newline="") as handle:
         assert [float(row["lam"]) for row in csv.DictReader(handle)] == [0.2, 0.12]
+    with open(files / "batch_in_one_process.csv", newline="") as handle:  # no pyarrow, no Dask
+        assert [row["edge"] for row in csv.DictReader(handle)] == ["right", "left"]
 
 
 def test_a_reader_that_goes_away_stops_the_command_quietly(processes: dict):

@@ -40,8 +40,10 @@ EXEMPT = {
     **{
         f"asymslip.solver.{name}": "a numerical step inside solve(), not called by users; the "
         "package's example (asymslip.solver) runs it end to end"
-        for name in ("boundaries", "grid", "normal", "qp", "tangential", "toeplitz")
+        for name in ("boundaries", "grid", "normal", "qp", "tangential", "toeplitz", "steady")
     },
+    "asymslip.solver.settings": "records passed from the solver's run to its results; the "
+    "package's example (asymslip.solver) builds them",
 }
 
 

@@ -282,7 +282,7 @@ def test_an_output_that_is_the_input_is_refused_and_the_input_kept(tmp_path):
 
 
 def test_an_interrupted_sweep_leaves_no_results_file(tmp_path, monkeypatch):
-    import asymslip.sweep as sweep
+    from asymslip.sweep import chunk
 
     cases = tmp_path / "cases.csv"
     cases.write_text(CASES)
@@ -294,8 +294,8 @@ def test_an_interrupted_sweep_leaves_no_results_file(tmp_path, monkeypatch):
             raise KeyboardInterrupt  # Ctrl-C during the second chunk
         return original(*args, **kwargs)
 
-    original = sweep.evaluate_chunk
-    monkeypatch.setattr(sweep, "evaluate_chunk", interrupted)
+    original = chunk.evaluate_chunk  # the evaluation of every way of running a sweep
+    monkeypatch.setattr(chunk, "evaluate_chunk", interrupted)
     with pytest.raises(KeyboardInterrupt):
         sweep_file(cases, LAW, tmp_path / "out.csv", mu=DEFAULT_MU, chunk_rows=4, progress=False)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["cases.csv"]

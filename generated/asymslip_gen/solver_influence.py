@@ -78,10 +78,10 @@ def relative_slip_influence(
     """Relative tangential displacement at element centre i per unit shear traction on element j.
 
     S(k) = +(2/(pi E*)) int_{(k - 1/2) h}^{(k + 1/2) h} ln(|u|/ell) du = -W(k): s = u_x2 - u_x1
-    (the lower body relative to the upper) caused by a uniform unit shear traction exerted on
-    the upper body by the lower one (the lower body carrying the opposite traction), from
-    Flamant's solution.  Defined up to a multiple of the total shear force (the constant ln
-    ell), which the rigid tangential shift absorbs.
+    (the indenter relative to the lower body) caused by a uniform unit shear traction exerted on
+    the lower body by the indenter (the indenter carrying the opposite traction), from Flamant's
+    solution.  Defined up to a multiple of the total shear force (the constant ln ell), which
+    the rigid tangential shift absorbs.
 
     Implements Eqs. (F-3), (F-5) of the paper; derived in ``derivations/solver_influence.py``.
 
@@ -136,8 +136,8 @@ def tension_relative_displacement(x: ArrayLike, sigma: ArrayLike, E_star: ArrayL
     x : array_like
         Position along the interface [length].
     sigma : array_like
-        Differential bulk tension sigma = sigma_2 - sigma_1: the bulk tension of the lower body
-        minus that of the upper body [force/length^2].
+        Differential bulk tension sigma = sigma_2 - sigma_1: the bulk tension of the indenter
+        minus that of the lower body [force/length^2].
     E_star : array_like
         Plane-strain contact modulus E* > 0 [force/length^2].
 

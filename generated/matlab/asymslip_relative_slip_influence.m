@@ -3,10 +3,10 @@ function result = asymslip_relative_slip_influence(k, h, ell, E_star)
 % j.
 %
 % S(k) = +(2/(pi E*)) int_{(k - 1/2) h}^{(k + 1/2) h} ln(|u|/ell) du = -W(k): s = u_x2 -
-% u_x1 (the lower body relative to the upper) caused by a uniform unit shear traction
-% exerted on the upper body by the lower one (the lower body carrying the opposite
-% traction), from Flamant's solution. Defined up to a multiple of the total shear force
-% (the constant ln ell), which the rigid tangential shift absorbs.
+% u_x1 (the indenter relative to the lower body) caused by a uniform unit shear traction
+% exerted on the lower body by the indenter (the indenter carrying the opposite traction),
+% from Flamant's solution. Defined up to a multiple of the total shear force (the constant
+% ln ell), which the rigid tangential shift absorbs.
 %
 % Implements Eqs. (F-3), (F-5) of the paper; derived in derivations/solver_influence.py.
 %

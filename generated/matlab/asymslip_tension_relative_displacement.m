@@ -10,7 +10,7 @@ function result = asymslip_tension_relative_displacement(x, sigma, E_star)
 % Arguments (scalars or arrays):
 %   x       Position along the interface [length].
 %   sigma   Differential bulk tension sigma = sigma_2 - sigma_1: the bulk tension of the
-%           lower body minus that of the upper body [force/length^2].
+%           indenter minus that of the lower body [force/length^2].
 %   E_star  Plane-strain contact modulus E* > 0 [force/length^2].
 %
 % Returns:

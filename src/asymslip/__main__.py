@@ -4,4 +4,7 @@ import sys
 
 from .cli import main
 
-sys.exit(main())
+# Guarded: the worker processes of a local Dask cluster (--workers) are started by
+# multiprocessing's spawn, which imports this module again under another name.
+if __name__ == "__main__":
+    sys.exit(main())

@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 import mpmath
 import numpy as np
 
-from . import references  # noqa: F401  (registers the laws and quantities)
+from . import references, references_stress  # noqa: F401  (register laws and quantities)
 from .registry import LAWS, QUANTITIES, LawCase, Quantity
 
 DIGITS = 50

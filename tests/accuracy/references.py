@@ -1883,3 +1883,27 @@ register_quantity(
         laws=("flat-rounded",),
     )
 )
+
+
+# ---------------------------------------------------------------------------------------------
+# The error map's axes (derivations/edge_drive.py): (21) at state 1, L_II1/(mu L_I1) =
+# lam/mu + pi eta a1/(4 mu), whose tension term is tau, transcribed; eta from tau by solving
+# the same line by hand.
+# ---------------------------------------------------------------------------------------------
+
+register_quantity(
+    Quantity(
+        "edge_drive.tension_share",
+        ("eta", "a1", "mu"),
+        lambda eta, a1, mu: pi * eta * a1 / (4 * mu),
+        ("21", "28"),
+    )
+)
+register_quantity(
+    Quantity(
+        "edge_drive.tension_slope_for_share",
+        ("tau=lam", "a1", "mu"),
+        lambda tau, a1, mu: 4 * mu * tau / (pi * a1),
+        ("21", "28"),
+    )
+)

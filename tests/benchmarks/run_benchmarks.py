@@ -24,6 +24,10 @@ imports    ``from asymslip import ...`` vs ``import numpy``                 (ben
 generate   ``make generate``, best of 3                                    (bench_startup)
 solver     the reference solver's cost against N, if ``bench_solver.py``
            exists                                                          (bench_solver_hook)
+stress     a 200 x 200 grid from N = 4000 solver elements vs the direct
+           sum; the edge asymptote at 10^6 points vs complex NumPy          (bench_stress)
+dask       solve-batch (200 solves) and the sweep (10^7 rows) on 2 local
+           Dask workers vs one process; the overhead of a task             (bench_batch)
 
 Noise (the machine is shared): every ratio comes from candidates interleaved in the same
 rounds in one process, best of N, with the median of the per-round ratios beside it;
@@ -63,6 +67,9 @@ class Sizes:
     import_rounds: int = 11
     generate_rounds: int = 3
     solver_repeat: int = 3
+    stress_grid: int = 200
+    stress_elements: int = 4000
+    stress_rounds: int = 3
 
 
 QUICK = Sizes(
@@ -80,6 +87,9 @@ QUICK = Sizes(
     import_rounds=1,
     generate_rounds=0,
     solver_repeat=1,
+    stress_grid=20,
+    stress_elements=400,
+    stress_rounds=1,
 )
 
 
@@ -131,6 +141,18 @@ def sections(sizes: Sizes, quick: bool, seed: int) -> dict[str, tuple[str, Measu
 
         return bench_solver(quick, sizes.solver_repeat)
 
+    def stress() -> list[Row]:
+        from .bench_stress import bench_asymptote, bench_grid
+
+        return bench_grid(
+            sizes.stress_grid, sizes.stress_elements, sizes.stress_rounds
+        ) + bench_asymptote(sizes.points, sizes.stress_rounds, seed)
+
+    def dask() -> list[Row]:
+        from .bench_batch import bench_batch
+
+        return bench_batch(quick)
+
     return {
         "scalar": ("One scalar call", scalar),
         "laws": ("Cycles in bulk, law against law", laws),
@@ -140,6 +162,8 @@ def sections(sizes: Sizes, quick: bool, seed: int) -> dict[str, tuple[str, Measu
         "imports": ("Import time", imports),
         "generate": ("Code generation", generate),
         "solver": ("Reference solver", solver),
+        "stress": ("The stress field near an edge", stress),
+        "dask": ("Parameter studies on Dask", dask),
     }
 
 

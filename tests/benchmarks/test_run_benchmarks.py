@@ -39,9 +39,26 @@ EXPECTED = {
     "Import time": ["`from asymslip import", "`from asymslip_gen import *`"],
     "Code generation": ["`make generate`"],
     "Reference solver": ["reference solver"],
+    "The stress field near an edge": [
+        "grid near the right edge",
+        "fast - direct",
+        "the solve",
+        "asymptotic amplitude",
+        "stated accuracy",
+    ],
+    "Parameter studies on Dask": [
+        "`LocalCluster`",
+        "`solve-batch`",
+        "sweep",
+        "overhead per task",
+        "overhead per task of a study",
+    ],
 }
 MET = {"yes", "**no**", "-"}
-MEASURED = re.compile(r"^([\d.,]+ (s|ms|µs|ns)|[\d.]+e-\d+|N\^[\d.]+|skipped: .+)$")
+MEASURED = re.compile(
+    r"^([\d.,]+ (s|ms|µs|ns)|[\d.]+e-\d+|N\^[\d.]+|skipped: .+"
+    r"|[\d.]+ (GB|MB)|[\d.]+(e-\d+)? elements)$"  # the solver's memory and boundary rows
+)
 
 
 def cells(line: str) -> list[str]:

@@ -275,6 +275,16 @@ def _tension(draw: Draw) -> Points:
     }
 
 
+def _tension_share(draw: Draw) -> Points:
+    """The error map's axes: a tension share of either sign, half-widths, frictions."""
+    return {
+        "tau": draw.uniform(-3.0, 3.0),
+        "eta": draw.uniform(-1.0, 1.0),
+        "a1": draw.log_uniform(0.01, 100.0),
+        "mu": draw.uniform(0.05, 1.0),
+    }
+
+
 def _asymmetric_edges(draw: Draw) -> Points:
     """One edge of an asymmetric contact: width, slopes and multipliers of both edges > 0; the
     moment of the increments about the centre within +-20 % of the load's (so L_I > 0)."""
@@ -306,6 +316,94 @@ def _flat_rounded_pair(draw: Draw) -> Points:
     points["a2"] = points["a"] * (1 + draw.log_uniform(1e-9, 0.1))
     points["L_I"] = draw.log_uniform(1e-2, 1e3)
     return points
+
+
+def _half_plane_element(draw: Draw) -> Points:
+    """One linear traction element [t0, t1] and a point below the surface (y > 0) within a
+    few element lengths of it, where the closed form is documented as well conditioned."""
+    t0 = draw.uniform(-10.0, 10.0)
+    length = draw.log_uniform(1e-3, 5.0)
+    return {
+        "x": t0 + length * draw.uniform(-3.0, 4.0),
+        "y": length * draw.log_uniform(0.1, 3.0),
+        "t0": t0,
+        "t1": t0 + length,
+        **{name: draw.uniform(-5.0, 5.0) for name in ("p0", "p1", "q0", "q1")},
+    }
+
+
+def _half_plane_node(draw: Draw) -> Points:
+    """A point below the surface and a node: offset u, depth y > 0, and free sums."""
+    return {
+        "u": draw.uniform(-10.0, 10.0),
+        "x": draw.uniform(-10.0, 10.0),
+        "y": draw.log_uniform(1e-4, 10.0),
+        "L": draw.uniform(-5.0, 3.0),
+        "theta": draw.uniform(-math.pi, 0.0),
+        "k": np.round(draw.uniform(2.0, 40.0)),
+        **{
+            name: draw.uniform(-10.0, 10.0)
+            for name in ("A_L", "B_L", "A_theta", "B_theta", "A_1", "B_1")
+        },
+        **{
+            name: draw.uniform(-10.0, 10.0)
+            for name in ("Q_re", "Q_im", "P_im", "dQ_re", "dQ_im", "dP_re", "dP_im")
+        },
+    }
+
+
+def _semi_ellipse(draw: Draw) -> Points:
+    """Any point of the body (y >= 0, a tenth of them on the surface) and a half-width."""
+    y = draw.log_uniform(1e-4, 10.0)
+    y[: draw.n // 10] = 0.0
+    return {"x": draw.uniform(-20.0, 20.0), "y": y, "a": draw.log_uniform(0.1, 10.0)}
+
+
+def _edge_eigenfield(draw: Draw) -> Points:
+    """The polar parts of a point below the surface (y > 0) seen from a load's edge, for the
+    powers 1/2 and 3/2 of the edge expansions."""
+    X = draw.uniform(-5.0, 5.0)
+    y = draw.log_uniform(1e-4, 5.0)
+    lam = np.where(draw.uniform(0.0, 1.0) < 0.5, 0.5, 1.5)
+    rho, phi = np.hypot(X, y), np.arctan2(-y, X)
+    return {
+        "rho_lam": rho**lam,
+        "cos_lam": np.cos(lam * phi),
+        "sin_lam": np.sin(lam * phi),
+        "sin_angle": y / rho,
+        "cos_lam1": np.cos((lam - 1) * phi),
+        "sin_lam1": np.sin((lam - 1) * phi),
+        "lam_e": lam,
+    }
+
+
+def _edge_law(draw: Draw) -> Points:
+    """A cycle's multipliers, a slope of L_I and a bulk-tension change."""
+    points = draw.cycle()
+    points["a"] = points["a1"]
+    points["L_I"] = points["L_I1"]
+    points["dL_I_da"] = points["L_I1"] / points["a1"] * draw.uniform(-2.0, 2.0)
+    points["dsigma"] = draw.uniform(-1e3, 1e3)
+    return points
+
+
+def _plane(draw: Draw) -> Points:
+    """A stress state, a plane, a material and a criterion's inputs."""
+    return {
+        **{name: draw.uniform(-1e3, 1e3) for name in ("sxx", "syy", "sxy")},
+        "theta": draw.uniform(0.0, math.pi),
+        "E": draw.log_uniform(1e3, 1e6),
+        "nu": draw.uniform(0.05, 0.49),
+        "tau_a": draw.log_uniform(1.0, 1e3),
+        "sigma_n_max": draw.uniform(-1e3, 1e3),
+        "k": draw.log_uniform(0.05, 2.0),
+        "gamma_a": draw.log_uniform(1e-6, 1e-2),
+        "sigma_y": draw.log_uniform(100.0, 2e3),
+        "eps_a": draw.log_uniform(1e-6, 1e-2),
+        "tau": draw.log_uniform(1.0, 1e3),
+        "delta": draw.log_uniform(1e-6, 1e-1),
+        "sigma_T": draw.uniform(-1e3, 1e3),
+    }
 
 
 #: Function name -> how to draw points inside its documented domain.
@@ -412,6 +510,49 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "matched_shear_slope": _lab_transfer,
     "flat_rounded_matched_radius": _flat_rounded_pair,
     "flat_rounded_multiplier_ratio": _flat_rounded_pair,
+    # half_plane_stress
+    **{f"half_plane_element_{c}": _half_plane_element for c in ("sxx", "syy", "sxy")},
+    **{f"half_plane_potential_{c}": _half_plane_node for c in ("sxx", "syy", "sxy")},
+    "half_plane_node_log_distance": _half_plane_node,
+    "half_plane_node_angle": _half_plane_node,
+    "half_plane_node_potential_real": _half_plane_node,
+    "half_plane_node_potential_imag": _half_plane_node,
+    "half_plane_node_sum_real": _half_plane_node,
+    "half_plane_node_sum_imag": _half_plane_node,
+    "half_plane_node_series_factor": _half_plane_node,
+    **{
+        f"edge_eigenfield_{load}_{c}": _edge_eigenfield
+        for load in ("pressure", "shear")
+        for c in ("sxx", "syy", "sxy")
+    },
+    "edge_uniform_sxx": _edge_law,
+    **{
+        name: _plane
+        for name in (
+            "plane_normal_stress",
+            "plane_shear_stress",
+            "plane_normal_strain",
+            "plane_shear_strain",
+            "findley_parameter",
+            "fatemi_socie_parameter",
+            "smith_watson_topper_parameter",
+            "ruiz_frictional_work",
+            "ruiz_parameter",
+        )
+    },
+    "edge_shear_amplitude_state2": _edge_law,
+    "edge_shear_amplitude_state1": _edge_law,
+    "edge_shear_amplitude_stick": _edge_law,
+    "edge_pressure_next_coefficient": _edge_law,
+    "edge_shear_next_coefficient": _edge_law,
+    **{
+        f"semi_ellipse_{load}_{c}": _semi_ellipse
+        for load in ("pressure", "shear")
+        for c in ("sxx", "syy", "sxy")
+    },
+    # edge_drive (the error map's axes)
+    "tension_share": _tension_share,
+    "tension_slope_for_share": _tension_share,
 }
 
 

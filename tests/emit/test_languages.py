@@ -18,7 +18,16 @@ from .toolchains import relative_difference
 
 LANGUAGES = ("C", "Fortran", "MATLAB/Octave")
 #: Relative tolerance by function where 1e-13 is not enough, with why.
-TOLERANCE: dict[str, tuple[float, str]] = {}
+TOLERANCE: dict[str, tuple[float, str]] = {
+    f"half_plane_element_{component}": (
+        1e-11,
+        "the field of a load of either sign passes through zero at some points, where the "
+        "relative difference measures rounding of terms of the load's size (NumPy against a "
+        "40-digit evaluation of the same expression: 1.1e-15 of max|p| + max|q|, 1.3e-11 of "
+        "the value at its worst point)",
+    )
+    for component in ("sxx", "syy", "sxy")
+}
 DEFAULT_TOLERANCE = 1e-13
 
 

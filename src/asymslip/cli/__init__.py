@@ -18,11 +18,37 @@ from collections.abc import Sequence
 from .. import __version__
 from ..errors import InputError
 from ..files.signals import Terminated
-from . import calibrate, derive, fe_model, figure, match, slip_zone, solve, sweep, traction
+from . import (
+    calibrate,
+    derive,
+    fe_model,
+    figure,
+    match,
+    nucleation,
+    slip_zone,
+    solve,
+    solve_batch,
+    stress,
+    sweep,
+    traction,
+)
 from .laws import OPTION_OF
 from .parser import Parser
 
-COMMANDS = (slip_zone, traction, solve, calibrate, fe_model, figure, derive, sweep, match)
+COMMANDS = (
+    slip_zone,
+    traction,
+    solve,
+    calibrate,
+    fe_model,
+    figure,
+    derive,
+    sweep,
+    match,
+    stress,
+    nucleation,
+    solve_batch,
+)
 
 
 def build_parser() -> Parser:

@@ -13,6 +13,7 @@ import argparse
 import json
 import sys
 from pathlib import Path
+from typing import Any
 
 from ..cycle import LoadCycle
 from ..errors import InputError
@@ -22,7 +23,7 @@ from .laws import add_law_options, build_law, law_inputs, parse_assignments
 from .parser import number, whole_number
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     from ..solver import DEFAULT_ELEMENTS, DEFAULT_STEPS
 
     solve = commands.add_parser(
@@ -96,11 +97,17 @@ def register(commands: argparse._SubParsersAction) -> None:
         metavar="DIR",
         help="write tractions.csv, slip.csv, energy.csv and solver.png there",
     )
+    solve.add_argument(
+        "--no-plot",
+        dest="plot",
+        action="store_false",
+        help="with --out, write the CSV files only (no solver.png; matplotlib not needed)",
+    )
     solve.set_defaults(run=run)
 
 
-def _contact(args: argparse.Namespace):  # noqa: ANN202 - a law or a profile
-    """(the contact the solver works on, the law for the asymptotes or None)."""
+def _contact(args: argparse.Namespace) -> tuple[Any, Any | None]:
+    """(the contact the solver works on: a law or a profile; the law for the asymptotes or None)."""
     from ..solver import ExpressionProfile, TableProfile
 
     if args.profile is not None and args.profile_table is not None:
@@ -147,7 +154,7 @@ def _loading(args: argparse.Namespace) -> tuple[object, LoadCycle | None]:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..solver import SolverError, refine, solve, write_outputs
+    from ..solver import RefinementResult, SolverError, refine, solve, write_outputs
     from ..solver.compare import with_asymptotes
     from ..solver.outputs import FILES
 
@@ -174,8 +181,8 @@ def run(args: argparse.Namespace) -> int:
     if law is not None and cycle is not None:
         result = with_asymptotes(result, law, cycle, args.mu)
     if args.out is not None:
-        final = result.results[-1] if args.refine else result
-        for path in write_outputs(final, args.out):
+        final = result.finest if isinstance(result, RefinementResult) else result
+        for path in write_outputs(final, args.out, png=args.plot):
             print(f"wrote {path}", file=sys.stderr)
     data = result.to_dict()
     if args.json:
@@ -185,7 +192,7 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _summary(data: dict) -> str:
+def _summary(data: dict[str, Any]) -> str:
     """The human-readable report: each edge's boundary, bound and the estimates beside it."""
     lines = []
     for name, edge in (("right", data), ("left", data.get("left") or {})):

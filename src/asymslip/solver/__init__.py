@@ -31,10 +31,14 @@ max_cycles=20, domain=None) -> SolverResult``
 ``result.to_dict()``
     shaped like ``slip-zone --json``: right edge on top, left edge under ``left``.
 
-Sign conventions (``derivations/solver_influence.py``): q and Q are the shear traction and
-force on the upper body (the indenter), sigma = sigma_lower - sigma_upper the differential bulk
-tension; both give a positive K_II (38) at the right edge.  x is the profile's coordinate; b
-and a are measured outward from its origin (right edge: x; left edge: -x), as ``slip-zone``.
+Conventions (:mod:`asymslip.solver.conventions`, every output states them in these words):
+x from the contact centre (the profile's origin), b and a measured outward from it (right
+edge: x; left edge: -x), as ``slip-zone``; q the shear traction exerted by the indenter on the
+lower body's surface, along +x (int q dx = Q); the slip the change of u_x(indenter) -
+u_x(lower body), along +x, since point 1 of the steady period -- in a slip zone it has the sign
+of q2 - q1; sigma the differential bulk tension with the sign of the paper's (20) and (38)
+(Q and sigma both raise K_II at the right edge), which with q so defined is the indenter's
+bulk tension minus the lower body's (``derivations/solver_influence.py``).
 
 Examples
 --------

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
-from typing import Any
+from typing import Any, overload
 
 import numpy as np
 
@@ -76,6 +76,18 @@ def asymptote_comparison(
     return out
 
 
+@overload
+def with_asymptotes(
+    result: SolverResult, law: Any, cycle: LoadCycle, mu: float
+) -> SolverResult: ...
+
+
+@overload
+def with_asymptotes(
+    result: RefinementResult, law: Any, cycle: LoadCycle, mu: float
+) -> RefinementResult: ...
+
+
 def with_asymptotes(
     result: SolverResult | RefinementResult, law: Any, cycle: LoadCycle, mu: float
 ) -> SolverResult | RefinementResult:
@@ -96,8 +108,12 @@ def with_asymptotes(
     True
     """
     if isinstance(result, RefinementResult):
-        finest = with_asymptotes(result.finest, law, cycle, mu)
+        finest = _compared(result.finest, law, cycle, mu)
         return replace(result, results=(*result.results[:-1], finest))
+    return _compared(result, law, cycle, mu)
+
+
+def _compared(result: SolverResult, law: Any, cycle: LoadCycle, mu: float) -> SolverResult:
     comparison = asymptote_comparison(result, law, cycle, mu)
     return result.with_edges(
         replace(result.right, asymptotes=comparison["right"]),

@@ -54,10 +54,11 @@ from __future__ import annotations
 
 import csv
 import io
-import math
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
+
+from asymslip_gen.edge_drive import tension_share, tension_slope_for_share
 
 from ..cycle import LoadCycle
 from ..edge_flags import VALIDITY_THRESHOLD
@@ -164,7 +165,7 @@ class MapCase:
         P1, P2 = float(law.load(A1)), float(law.load(self.ratio * A1))
         dP = P2 - P1
         lam = self.lam_mu * MU
-        eta = 4 * MU * self.tau / (math.pi * A1)
+        eta = float(tension_slope_for_share(self.tau, A1, MU))
         return LoadCycle(P1, 0.0, P2, lam * dP, 0.0, eta * dP)
 
 
@@ -262,8 +263,10 @@ def solve_case(case: MapCase, *, elements: int = ELEMENTS) -> list[dict[str, Any
     """
     h, boundaries = solver_boundaries(case, elements=elements)
     estimates = slip_zone(case.contact_law, case.cycle(), MU, edge="both")
+    left = estimates.left
+    assert left is not None  # edge="both" gives the left edge
     rows = []
-    sides = (("right", estimates, estimates.left), ("left", estimates.left, estimates))
+    sides = (("right", estimates, left), ("left", left, estimates))
     for side, estimate, other in sides:
         solved = boundaries[side]
         b = solved.b
@@ -281,7 +284,8 @@ def solve_case(case: MapCase, *, elements: int = ELEMENTS) -> list[dict[str, Any
             "slip_direction": direction,
             "solver_slip_direction": solved.slip_direction,
             "edge_lam_mu": orientation * float(estimate.lam) / MU,
-            "edge_tau": orientation * math.pi * float(estimate.eta) * float(estimate.a1) / (4 * MU),
+            "edge_tau": orientation
+            * float(tension_share(float(estimate.eta), float(estimate.a1), MU)),
             "elements": elements,
             "element": h,
             "a1": float(estimate.a1),

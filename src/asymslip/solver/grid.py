@@ -44,7 +44,7 @@ class Grid:
 
     @cached_property
     def centres(self) -> FloatArray:
-        return self.start + (np.arange(self.count) + 0.5) * self.width
+        return self.start + (np.arange(self.count, dtype=np.float64) + 0.5) * self.width
 
     def boundary(self, index: int, side: int) -> float:
         """Position of the end of element ``index`` on ``side`` (+1 right, -1 left)."""

@@ -4,18 +4,21 @@ Files (each written beside and renamed into place by :func:`asymslip.files.atomi
 so an interrupted run leaves no truncated file):
 
 ``tractions.csv``
-    x, then for each path point k: ``p_k`` (pressure), ``q_k`` (shear traction on the upper
-    body, see :mod:`asymslip.solver.tangential`), ``state_k`` (0 stick, +1/-1 slipping along
-    +x/-x, blank out of contact); for the paper's cycle also ``q_diff`` = q_2 - q_1 (46).
+    x, then for each path point k: ``p_k`` (pressure), ``q_k`` (shear traction exerted by the
+    indenter on the lower body, along +x), ``state_k`` (0 stick, +1/-1 slipping along +x/-x,
+    blank out of contact); for the paper's cycle also ``q_diff`` = q_2 - q_1 (46).
 ``slip.csv``
-    x, ``slip_k`` (relative slip accumulated since point 1 of the steady period),
-    ``slip_range`` (peak to peak over the period) and ``slip_amplitude`` (half of it).
+    x, ``slip_k`` (the change of u_x(indenter) - u_x(lower body) since point 1 of the steady
+    period: for the paper's cycle ``slip_2`` is the slip from state 1 to state 2, of the sign
+    of q_2 - q_1 in a slip zone), ``slip_range`` (peak to peak over the period) and
+    ``slip_amplitude`` (half of it).
 ``energy.csv``
     x, ``energy``: frictional energy dissipated per period per unit area, int q ds.
 ``solver.png``
     the three, one panel each (matplotlib, the ``plot`` extra, imported only here).
 
-Values are written with 17 significant digits (they read back exactly).
+Values are written with 17 significant digits (they read back exactly).  Every file's comment
+lines state the conventions in the words of :mod:`asymslip.solver.conventions`.
 
 Examples
 --------
@@ -39,7 +42,8 @@ import numpy as np
 
 from ..errors import InputError
 from ..files.atomic import atomic_write
-from .result import SolverResult
+from .conventions import comment_line
+from .result import Edge, SolverResult
 
 #: The files :func:`write_outputs` writes into its folder (the PNG unless ``png=False``).
 FILES = ("tractions.csv", "slip.csv", "energy.csv", "solver.png")
@@ -52,7 +56,8 @@ def _figure_class() -> Any:
         raise InputError(
             "out",
             "drawing solver.png needs matplotlib: install the 'plot' extra, e.g. "
-            "pip install 'asymslip[plot]' (or ask for the CSV files only)",
+            "pip install 'asymslip[plot]', or write the CSV files only (png=False; on the "
+            "command line --no-plot)",
         ) from None
     return Figure
 
@@ -70,12 +75,14 @@ def _comments(result: SolverResult) -> list[str]:
         for s in result.states
     )
     profile = ", ".join(f"{k} = {v}" for k, v in result.profile.items())
+    # Three comment lines, always: readers skip them by count.
     return [
-        f"asymslip reference solver: {profile}; mu = {result.mu:.17g}, E* = {result.E_star:.17g}",
+        f"asymslip reference solver: {profile}; mu = {result.mu:.17g}, E* = {result.E_star:.17g}; "
         f"{result.elements} elements of {result.element_size:.17g} on "
         f"[{result.grid.start:.17g}, {result.grid.end:.17g}]; {result.steps} steps per segment; "
         f"steady = {result.steady} after {result.cycles} periods",
         f"points: {loads}",
+        comment_line(),
     ]
 
 
@@ -121,16 +128,21 @@ def _draw(result: SolverResult, target: Any) -> None:
         traction.plot(x, result.q_diff, "k--", linewidth=1.0, label="$q_{diff} = q_2 - q_1$")
     slip.plot(x, result.slip_amplitude, "k-", linewidth=1.0, label="slip amplitude")
     energy.plot(x, result.energy, "k-")
-    for side in ("right", "left"):
-        edge = result.edge(side)  # type: ignore[arg-type]
+    sides: tuple[Edge, Edge] = ("right", "left")
+    for side in sides:
+        edge = result.edge(side)
         if edge.b is not None:
             position = edge.b if side == "right" else -edge.b
             for axes in (traction, slip, energy):
                 axes.axvline(position, color="0.8", linewidth=0.8, zorder=0)
-    traction.set_ylabel("traction")
-    slip.set_ylabel("relative slip")
+    traction.set_ylabel("q: indenter on lower body")
+    slip.set_ylabel("slip: u_x(indenter) - u_x(lower)")
     energy.set_ylabel("energy per period")
-    energy.set_xlabel("x (grey: permanent stick boundaries)")
+    energy.set_xlabel(
+        "x from the contact centre (grey: permanent stick boundaries); slip since point 1, "
+        "of the sign of q2 - q1 in a slip zone",
+        fontsize="small",
+    )
     traction.legend(fontsize="small", frameon=False, ncol=2)
     slip.legend(fontsize="small", frameon=False)
     traction.set_title(

@@ -160,12 +160,19 @@ class LoadPath:
             )
 
     def segment_loads(self, steps: int) -> list[FloatArray]:
-        """Loads at the end of each step of one period, segment by segment (steps, 4) each."""
-        fractions = np.arange(1, steps + 1) / steps
+        """Loads at the end of each step of one period, segment by segment (steps, 4) each.
+
+        Step j of a segment from A to B is ((steps - j)/steps) A + (j/steps) B: the same two
+        products, summed, as step steps - j of a segment from B to A, so a segment run back
+        along another gives loads equal to the last bit (the normal solutions are reused).
+        """
+        done = np.arange(1, steps + 1)
+        to_end = (done / steps)[:, None]
+        from_start = ((steps - done) / steps)[:, None]
         segments = []
         for i in range(self.count):
             start, end = self.points[i], self.points[(i + 1) % self.count]
-            loads = start + fractions[:, None] * (end - start)
+            loads = from_start * start + to_end * end
             loads[-1] = end  # exactly the vertex
             segments.append(loads)
         return segments
@@ -177,7 +184,7 @@ class LoadPath:
         if first[1] == 0 and first[2] == 0:
             return start[None, :]
         fractions = np.arange(0, steps + 1) / steps
-        loads = start + fractions[:, None] * (first - start)
+        loads: FloatArray = start + fractions[:, None] * (first - start)
         loads[-1] = first
         return loads
 

@@ -108,7 +108,7 @@ class LawProfile(Profile):
         self.name = law.name
 
     def heights(self, x: FloatArray) -> FloatArray:
-        return self.law.profile(x)
+        return np.asarray(self.law.profile(x), dtype=np.float64)
 
     def length_scale(self, P: float, E_star: float) -> float | None:
         return float(self.law.half_width(P))

@@ -31,11 +31,11 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..cycle import LoadCycle
-from ..errors import InputError
+from .memory import check_memory
 from .path import LoadPath, as_path
 from .profiles import as_profile
 from .result import SolverResult
-from .run import DEFAULT_ELEMENTS, _integer, _modulus, choose_domain, solve
+from .run import DEFAULT_ELEMENTS, DEFAULT_STEPS, _integer, _modulus, choose_domain, solve
 
 #: Accepted range of an observed convergence order for Richardson extrapolation.
 ORDER_RANGE = (0.5, 6.0)
@@ -63,13 +63,14 @@ class Extrapolation:
 
 def extrapolate(values: tuple[float | None, ...]) -> Extrapolation:
     """Richardson extrapolation of a sequence on grids refined by 2, or its spread."""
-    if any(v is None for v in values) or len(values) < 2:
+    known = [v for v in values if v is not None]
+    if len(known) < len(values) or len(values) < 2:
         return Extrapolation(values, None, None, None, "unavailable")
-    finest = float(values[-1])
-    spread = max(abs(float(v) - finest) for v in values[:-1])
-    if len(values) >= 3:
-        d1 = float(values[-2]) - float(values[-3])
-        d2 = finest - float(values[-2])
+    finest = float(known[-1])
+    spread = max(abs(float(v) - finest) for v in known[:-1])
+    if len(known) >= 3:
+        d1 = float(known[-2]) - float(known[-3])
+        d2 = finest - float(known[-2])
         if d1 * d2 > 0 and abs(d2) < abs(d1):
             ratio = d1 / d2
             order = math.log2(ratio)
@@ -129,14 +130,12 @@ def refine(
     """
     levels = _integer("levels", levels, 2, "must be at least 2 (a sequence needs two grids)")
     elements = _integer("elements", elements, 1, "must be at least 1")
-    if elements * 2 ** (levels - 1) > 2_000_000:
-        raise InputError(
-            "levels",
-            "the finest grid would exceed 2,000,000 elements",
-            elements * 2 ** (levels - 1),
-        )
+    steps = _integer("steps", options.get("steps", DEFAULT_STEPS), 1, "must be at least 1")
+    path = as_path(loading)
+    finest = elements * 2 ** (levels - 1)
+    check_memory(finest, steps, path, subject=f"the finest grid ({finest:,} elements) needs")
     if domain is None:
-        domain = choose_domain(as_profile(contact), _modulus(contact, E_star), as_path(loading))
+        domain = choose_domain(as_profile(contact), _modulus(contact, E_star), path)
     results = tuple(
         solve(
             contact, loading, mu, elements=elements * 2**k, E_star=E_star, domain=domain, **options

@@ -7,8 +7,9 @@ x, minus the left edge's x.  A boundary's error is a bound of at least one eleme
 (:mod:`asymslip.solver.boundaries`).
 
 Slip direction of an edge (+1, -1 or 0), as in ``slip-zone``: +1 when the edge slips outward
-(the traction on the upper body, and the lower body's motion relative to it, point away from
-the contact centre) -- forward slip; -1 inward; 0 when the edge does not slip.  It is the
+(the traction q on the lower body, and the slip, the indenter's motion relative to it, point
+away from the contact centre) -- forward slip; -1 inward; 0 when the edge does not slip
+(conventions: :mod:`asymslip.solver.conventions`).  It is the
 direction of the element just outside the permanent stick zone at the point of largest P
 (state 2 of the paper's cycle, i.e. on loading); 0 when that element does not slip there,
 as when only the annulus a1 < |x| < a2 slips (|lambda| < mu, eta = 0).  Each state also
@@ -36,6 +37,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .boundaries import Boundary
+from .conventions import CONVENTIONS
 from .grid import Grid
 from .path import LoadPath
 from .toeplitz import FloatArray
@@ -76,7 +78,7 @@ class StateResult:
 
     @property
     def stick(self) -> NDArray[np.bool_]:
-        return self.contact & (self.slip_sign == 0)
+        return self.contact & np.equal(self.slip_sign, 0)
 
     def edge(self, side: Edge) -> EdgeState:
         return self.right if side == "right" else self.left
@@ -135,6 +137,7 @@ class SolverResult:
     fallbacks: int
     seconds: float
     warnings: tuple[str, ...] = field(default_factory=tuple)
+    normal_solves: int = 0  # distinct loads whose normal problem was solved
 
     @property
     def x(self) -> FloatArray:
@@ -194,7 +197,8 @@ class SolverResult:
         edge ``a<k>`` and stick boundary ``b<k>`` (with ``_error``) at each path point k (for the
         paper's cycle a1, a2, b1, b2), and ``asymptotes`` when attached by
         :func:`asymslip.solver.compare.with_asymptotes`.  Then the loads of the states, the
-        settings and the convergence record, and the warnings.
+        settings and the convergence record, the conventions (:mod:`.conventions`) and the
+        warnings.
         """
         data = self._edge_dict("right")
         data["left"] = self._edge_dict("left")
@@ -223,11 +227,13 @@ class SolverResult:
             "active_set_solves": self.active_set_solves,
             "cg_iterations": self.cg_iterations,
             "fallbacks": self.fallbacks,
+            "normal_solves": self.normal_solves,
             "seconds": self.seconds,
             "mu": self.mu,
             "E_star": self.E_star,
             **self.profile,
         }
+        data["conventions"] = dict(CONVENTIONS)
         data["warnings"] = list(self.warnings)
         return data
 

@@ -1,37 +1,53 @@
 """The incremental solver: load the contact along the path, period after period, to steady state.
 
 :func:`solve` is the entry point.  Each load step solves the normal problem at the step's
-(P, M) (:mod:`.normal`; reused in every period) and then the tangential problem from the
-previous step's shear state (:mod:`.tangential`).  Each step's solution is unique (a strictly
-convex programme), so the shear state at the start of a period decides the whole period: a
-period that ends in the state it began from repeats forever, and its stick zones, tractions,
-slips and energies are the steady ones.  The steady state is declared when, over the last
-period, no shear traction changed by more than ``tolerance`` times mu max p, and the changes
-still to come -- the approach is geometric: change r/(1 - r) with r the ratio of the last two
-periods' changes -- are within the tolerance too.  The result is built from that period.
-Periods needed on the paper's cycle: 2 (4 when one edge does not slip and tension is present,
-whose locked-in tractions settle geometrically, by about 2500 times per period).
+(P, M) (:mod:`.normal`; each distinct load once, :class:`~.period.NormalCache`) and then the
+tangential problem from the previous step's shear state (:mod:`.tangential`).  Each step's
+solution is unique (a strictly convex programme), so the shear state at any point of the path
+decides everything after it: once the state at the end of a segment is the one it was a
+period earlier, the period that ends there repeats forever, and its stick zones, tractions,
+slips and energies are the steady ones.  The steady state is declared at the first point where,
+over the last period, no shear traction changed by more than ``tolerance`` times mu max p, and
+the changes still to come -- the approach is geometric: change r/(1 - r) with r the ratio of
+this change to the one found at the point before -- are within the tolerance too.  The result
+is that period, read from point 1 (:mod:`.steady`).  The paper's cycle is steady one segment
+into its second period (1.5 periods: the state at state 2 repeats; before, the whole second
+period was run to see state 1 repeat); 3.5 when one edge does not slip and tension is present,
+whose locked-in tractions settle geometrically, by about 2500 times per period.
+
+The work per load step is what the step needs (measured in ``tests/benchmarks/bench_solver.py``):
+the normal problem only at loads not met before; the tangential problem warm-started three
+ways -- its slip zones predicted from the last two steps (:func:`~.tangential.predict_slip`),
+or taken from the same step a period earlier once the state repeats it; the conjugate
+gradients started from the last solution, whose image under the influence matrix is carried
+along so that only the change costs a product (:class:`~.qp.Workspace`); and no BLAS call in
+the inner loop, so a solve runs on one thread whatever the BLAS is set to
+(:mod:`.inner_products`).  Memory is one period of shear tractions and one normal solution per
+distinct load, checked before the grid is allocated (:mod:`.memory`).
 """
 
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, replace
+from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 
 from ..cycle import LoadCycle
 from ..errors import InputError, as_float_array, positive
-from .boundaries import Boundary, locate
 from .grid import Grid, InfluenceOperators
-from .normal import ContactOutsideGrid, NormalSolver, NormalState, extrapolated_contact
+from .memory import check_memory
+from .normal import ContactOutsideGrid, NormalSolver, NormalState
 from .path import LoadPath, as_path
+from .period import NormalCache, PeriodWindow, SlipRecord, StepRecord
 from .profiles import Profile, as_profile
-from .result import ORIENTATION, Edge, EdgeResult, EdgeState, SolverResult, StateResult, measured
+from .result import SolverResult
+from .settings import Convergence, SolverSettings
+from .steady import build_result
 from .tangential import TangentialSolver, TangentialState, predict_slip
-from .toeplitz import FloatArray, Runs, SolverError
+from .toeplitz import FloatArray, SolverError
 
 #: Fewest elements accepted: the boundary fits need a few elements in every zone.
 MIN_ELEMENTS = 64
@@ -47,9 +63,10 @@ DEFAULT_MAX_CYCLES = 20
 DOMAIN_MARGIN = 0.03
 #: Elements of the coarse grid that places the domain.
 COARSE_ELEMENTS = 400
-#: A slip below this fraction of the period's largest slip increment counts as none: the
-#: residue of the geometric approach to the steady state (see ``_significant_slip``).
-SLIP_SIGNIFICANCE = 1e-6
+#: The state counts as repeating the previous period's when it differs from it by at most
+#: this fraction of the last step's change: the next step then starts from its own solution
+#: of a period earlier (a guess, which affects only the work).
+REPEAT_FRACTION = 1e-2
 
 
 def _modulus(contact: Any, E_star: float | None) -> float:
@@ -74,7 +91,12 @@ def _integer(parameter: str, value: Any, minimum: int, rule: str) -> int:
 
 
 def _normal_extent(
-    profile_heights, left: float, right: float, E_star: float, loads: FloatArray, count: int
+    profile_heights: Callable[[FloatArray], FloatArray],
+    left: float,
+    right: float,
+    E_star: float,
+    loads: FloatArray,
+    count: int,
 ) -> tuple[float, float]:
     """Union of the contacts at the given (P, M) on a grid over [left, right]."""
     grid = Grid.spanning(left, right, count)
@@ -146,12 +168,20 @@ def _check_moment(profile: Profile, grid: Grid, heights: FloatArray, path: LoadP
 
 
 @dataclass
-class _StepRecord:
-    """One load step of the period being solved."""
+class _Work:
+    """The work done so far: load steps, active-set solves, CG iterations, fallbacks."""
 
-    normal: NormalState
-    state: TangentialState
-    energy: FloatArray
+    steps: int = 0
+    solves: int = 0
+    cg: int = 0
+    fallbacks: int = 0
+
+    def count(self, state: TangentialState) -> TangentialState:
+        self.steps += 1
+        self.solves += state.iterations
+        self.cg += state.cg_iterations
+        self.fallbacks += int(state.fallback)
+        return state
 
 
 def _energy(
@@ -258,6 +288,7 @@ def solve(
     path = as_path(loading)
     path.check_partial_slip(mu)
     is_cycle = isinstance(loading, LoadCycle)
+    check_memory(elements, steps, path)
 
     # Loads, moduli or lengths so far from 1 that the influence sums overflow (loads of 1e300)
     # are refused, never answered with inf or NaN.
@@ -274,19 +305,11 @@ def solve(
                 attempts = [(left, right), (left - width, right + width)]
             for left, right in attempts:
                 grid = Grid.spanning(left, right, elements)
+                settings = SolverSettings(
+                    profile, E_star, path, mu, grid, steps, tolerance, max_cycles, is_cycle
+                )
                 try:
-                    return _run(
-                        profile,
-                        E_star,
-                        path,
-                        mu,
-                        grid,
-                        steps,
-                        tolerance,
-                        max_cycles,
-                        is_cycle,
-                        started,
-                    )
+                    return _run(settings, started)
                 except ContactOutsideGrid:
                     continue
         except FloatingPointError:
@@ -301,317 +324,101 @@ def solve(
     )
 
 
-def _run(
-    profile: Profile,
-    E_star: float,
-    path: LoadPath,
-    mu: float,
-    grid: Grid,
-    steps: int,
-    tolerance: float,
-    max_cycles: int,
-    is_cycle: bool,
-    started: float,
-) -> SolverResult:
-    heights = profile.checked_heights(grid.centres)
-    _check_moment(profile, grid, heights, path)
-    operators = InfluenceOperators(grid, E_star)
-    normal_solver = NormalSolver(grid, operators, heights)
+def _run(settings: SolverSettings, started: float) -> SolverResult:
+    grid, path, steps, mu = settings.grid, settings.path, settings.steps, settings.mu
+    heights = settings.profile.checked_heights(grid.centres)
+    _check_moment(settings.profile, grid, heights, path)
+    operators = InfluenceOperators(grid, settings.E_star)
+    normals = NormalCache(NormalSolver(grid, operators, heights))
     tangential = TangentialSolver(grid, operators, mu)
-    counters = {"steps": 0, "solves": 0, "cg": 0, "fallbacks": 0}
-
-    def advance(
-        state: TangentialState,
-        normal: NormalState,
-        Q: float,
-        sigma: float,
-        predicted: NDArray[np.int8] | None = None,
-        previous: NormalState | None = None,
-    ) -> TangentialState:
-        new = tangential.step(state, normal, Q, sigma, predicted, previous)
-        counters["steps"] += 1
-        counters["solves"] += new.iterations
-        counters["cg"] += new.cg_iterations
-        counters["fallbacks"] += int(new.fallback)
-        return new
+    work = _Work()
 
     initial = path.initial_loads(steps)
-    normal = normal_solver.solve(initial[0, 0], initial[0, 3])
+    normal = normals.solve(float(initial[0, 0]), float(initial[0, 3]))
     state = tangential.initial()
     for _, Q, sigma, _ in initial[1:]:
-        state = advance(state, normal, Q, sigma)
+        state = work.count(tangential.step(state, normal, Q, sigma))
+    initial_shear = state.shear
 
     segments = path.segment_loads(steps)
-    normals: list[list[NormalState | None]] = [[None] * steps for _ in segments]
+    window = PeriodWindow(path.count, steps)
+    # The per-step change from the period before, at each step of the period: the ratio of
+    # two at the same step is the geometric rate of the approach to the steady state.
+    changes = np.full((path.count, steps), np.inf)
     change = np.inf
     steady = False
     cycles = 0
-    records: list[_StepRecord] = []
-    while cycles < max_cycles:
-        cycles += 1
-        start = state
-        records = []
-        for s, loads in enumerate(segments):
-            previous_step: tuple[NormalState, TangentialState] | None = None
-            for j, (P, Q, sigma, M) in enumerate(loads):
-                cached = normals[s][j]
-                if cached is None:
-                    guess = normal.contact
-                    if previous_step is not None:  # the contact's ends move steadily too
-                        guess = extrapolated_contact(previous_step[0], normal)
-                    cached = normal_solver.solve(P, M, guess)
-                    normals[s][j] = cached
-                # Within a segment the slip zones grow steadily: extrapolate the last two steps.
-                # At a segment's start (a reversal, for the paper's cycle) everything sticks.
-                if previous_step is None:
-                    predicted = np.zeros(grid.count, dtype=np.int8)
-                else:
-                    predicted = predict_slip(mu, previous_step, (normal, state), cached)
-                previous_step = (normal, state)
-                before, normal = normal, cached
-                new = advance(state, normal, Q, sigma, predicted, before)
-                records.append(_StepRecord(normal, new, _energy(state, new, before, normal)))
-                state = new
-        # Each step's solution is unique, so the shear state at the start of a period decides
-        # the whole period: when a period ends where it began, it repeats forever.
-        scale = mu * max(float(r.normal.pressure.max()) for r in records)
-        previous_change, change = change, float(np.max(np.abs(state.shear - start.shear))) / scale
-        # The approach is geometric: with the ratio r of the last two changes the changes
-        # still to come sum to change r/(1 - r), which must be within the tolerance too.
-        ratio = change / previous_change if np.isfinite(previous_change) and previous_change else 0
-        remaining = change * ratio / (1 - ratio) if ratio < 1 else np.inf
-        if change <= tolerance and remaining <= tolerance:
-            steady = True
+    repeating = False
+    stick = np.zeros(grid.count, dtype=np.int8)
+    for segment_number in range(settings.max_cycles * path.count):
+        s = segment_number % path.count
+        if s == 0:
+            cycles += 1
+            state = tangential.refreshed(state)
+        previous_step: tuple[NormalState, TangentialState] | None = None
+        for j, (P, Q, sigma, M) in enumerate(segments[s]):
+            upcoming = normals.solve(float(P), float(M), steady_motion=previous_step is not None)
+            earlier = window.get(s, j)  # this step, a period ago
+            guess = None
+            if repeating and earlier is not None:
+                predicted, guess = earlier.slip.signs(grid.count), earlier.shear
+            elif previous_step is None:
+                # At a segment's start (a reversal, for the paper's cycle) the slip zones are
+                # those of the same step a period ago; in the first period, everything sticks.
+                predicted = stick if earlier is None else earlier.slip.signs(grid.count)
+            else:
+                # Within a segment the slip zones grow steadily: extrapolate the last two
+                # steps, the slip zones as the friction reserves close, the tractions linearly.
+                predicted = predict_slip(mu, previous_step, (normal, state), upcoming)
+                guess = 2 * state.shear - previous_step[1].shear
+            new = work.count(
+                tangential.step(
+                    state,
+                    upcoming,
+                    Q,
+                    sigma,
+                    predicted,
+                    normal,
+                    guess=guess,
+                    settle=previous_step is None and not repeating,
+                )
+            )
+            energy = _energy(state, new, normal, upcoming)
+            replaced = window.put(s, j, StepRecord(upcoming, new.shear, SlipRecord.of(new, energy)))
+            ago = replaced.shear if replaced is not None else None
+            if ago is None and cycles == 1 and s == path.count - 1 and j == steps - 1:
+                ago = initial_shear  # point 1 a period ago: the state after initial loading
+            previous_step = (normal, state)
+            normal, state = upcoming, new
+            if ago is None:
+                continue
+            # Each step's solution is unique, so the state after a step decides everything
+            # after it: when it is the state of a period ago, the period that ends here repeats
+            # forever (read from point 1, it is the steady period).
+            difference = float(np.max(np.abs(new.shear - ago)))
+            moved = float(np.max(np.abs(new.shear - previous_step[1].shear)))
+            repeating = difference <= REPEAT_FRACTION * moved
+            change = difference / (mu * window.largest_pressure())
+            # The approach is geometric: with the ratio r of this change to the one at the
+            # same step a period earlier, the changes still to come sum to change r/(1 - r),
+            # which must be within the tolerance too.
+            last = changes[s, j]
+            ratio = change / last if np.isfinite(last) and last else 0.0
+            remaining = change * ratio / (1 - ratio) if ratio < 1 else np.inf
+            changes[s, j] = change
+            if change <= settings.tolerance and remaining <= settings.tolerance:
+                steady = True
+                break
+        if steady:
             break
-    return _build(
-        profile,
-        E_star,
-        path,
-        mu,
-        grid,
-        steps,
-        tolerance,
-        is_cycle,
-        records,
+    convergence = Convergence(
         cycles,
         steady,
         change,
-        counters,
-        started,
+        work.steps,
+        work.solves,
+        work.cg,
+        work.fallbacks,
+        len(normals),
     )
-
-
-# --- post-processing --------------------------------------------------------------------------
-
-
-def _central_run(mask: NDArray[np.bool_], anchor: NDArray[np.bool_]) -> tuple[int, int] | None:
-    """(first, last) of the run of ``mask`` overlapping ``anchor`` most (else the longest)."""
-    runs = Runs.of(mask)
-    if not runs.starts:
-        return None
-    overlaps = [int(anchor[a:b].sum()) for a, b in zip(runs.starts, runs.stops, strict=True)]
-    lengths = runs.lengths
-    best = max(range(len(lengths)), key=lambda i: (overlaps[i], lengths[i]))
-    return runs.starts[best], runs.stops[best] - 1
-
-
-def _edge_state(
-    grid: Grid,
-    mu: float,
-    normal: NormalState,
-    state: TangentialState,
-    anchor: NDArray[np.bool_],
-    side: Edge,
-) -> EdgeState:
-    direction = ORIENTATION[side]
-    edge_index = normal.last if direction > 0 else normal.first
-    a, a_error = measured(side, locate(grid, normal.pressure, edge_index, direction))
-    stick = normal.contact & (state.slip_sign == 0)
-    run = _central_run(stick, anchor)
-    if run is None:
-        return EdgeState(a, a_error, None, None, 0)
-    end = run[1] if direction > 0 else run[0]
-    outside = end + direction
-    sign = int(state.slip_sign[outside]) if normal.contact[outside] else 0
-    if sign == 0:  # the stick zone reaches the contact edge
-        return EdgeState(a, a_error, a, a_error, 0)
-    reserve = mu * normal.pressure - sign * state.shear
-    b, b_error = measured(side, locate(grid, reserve, end, direction))
-    return EdgeState(a, a_error, b, b_error, sign * direction)
-
-
-def _permanent_boundary(
-    grid: Grid,
-    mu: float,
-    records: list[_StepRecord],
-    vertex_steps: set[int],
-    end: int,
-    side: Edge,
-) -> Boundary:
-    """The permanent stick zone's boundary beyond element ``end`` on ``side``.
-
-    The element just outside the zone slips at some steps, or leaves the contact at some, or
-    both.  Where it slips, the friction reserves mu p -+ q of those steps (the path's points
-    among them if any) are summed: each vanishes like a square root at the boundary.  Where it
-    leaves the contact, the innermost of those steps' contact edges is the candidate.  The
-    boundary is the innermost candidate.
-    """
-    direction = ORIENTATION[side]
-    outside = end + direction
-    candidates = []
-    slipping = [
-        i
-        for i, r in enumerate(records)
-        if r.normal.contact[outside] and r.state.slip_sign[outside] != 0
-    ]
-    if slipping:
-        chosen = [i for i in slipping if i in vertex_steps] or slipping
-        reserve = np.zeros(grid.count)
-        for i in chosen:
-            r = records[i]
-            reserve += mu * r.normal.pressure - r.state.slip_sign[outside] * r.state.shear
-        candidates.append(locate(grid, reserve, end, direction))
-    normals = {id(r.normal): r.normal for r in records if not r.normal.contact[outside]}
-    candidates.extend(locate(grid, n.pressure, end, direction) for n in normals.values())
-    return min(candidates, key=lambda boundary: direction * boundary.x)
-
-
-def _significant_slip(records: list[_StepRecord]) -> list[_StepRecord]:
-    """The period's steps with slips below SLIP_SIGNIFICANCE of the largest one set to zero.
-
-    A steady state is approached geometrically: the last period still carries residual slips,
-    of the order of the steady tolerance, where the limit has none (the permanent stick
-    zone).  Counted as slip they would shrink that zone; they are far below any slip of a real
-    slip zone except within a tiny fraction of an element of its boundary.
-    """
-    largest = max(float(np.max(np.abs(r.state.slip_increment))) for r in records)
-    threshold = SLIP_SIGNIFICANCE * largest
-    out = []
-    for r in records:
-        significant = np.abs(r.state.slip_increment) > threshold
-        state = replace(
-            r.state,
-            slip_sign=np.where(significant, r.state.slip_sign, 0).astype(np.int8),
-            slip_increment=np.where(significant, r.state.slip_increment, 0.0),
-        )
-        out.append(_StepRecord(r.normal, state, np.where(significant, r.energy, 0.0)))
-    return out
-
-
-def _build(
-    profile: Profile,
-    E_star: float,
-    path: LoadPath,
-    mu: float,
-    grid: Grid,
-    steps: int,
-    tolerance: float,
-    is_cycle: bool,
-    records: list[_StepRecord],
-    cycles: int,
-    steady: bool,
-    change: float,
-    counters: dict[str, int],
-    started: float,
-) -> SolverResult:
-    warnings: list[str] = []
-    if not steady:
-        warnings.append(
-            f"no steady state after {cycles} periods: the tractions still changed by "
-            f"{change:.3g} mu max p (tolerance {tolerance:g}) or the stick/slip state moved; "
-            "the results are those of the last period"
-        )
-    records = _significant_slip(records)
-    in_contact_always = np.logical_and.reduce([r.normal.contact for r in records])
-    never_slips = np.logical_and.reduce([r.state.slip_sign == 0 for r in records])
-    permanent = in_contact_always & never_slips
-    slip = np.cumsum([r.state.slip_increment for r in records], axis=0)
-    slip_range = np.maximum(slip.max(axis=0), 0.0) - np.minimum(slip.min(axis=0), 0.0)
-    energy = np.sum([r.energy for r in records], axis=0)
-    vertex_steps = {(s + 1) * steps - 1 for s in range(path.count)}
-    states = []
-    for k in range(path.count):
-        # Point k ends segment k - 1 (point 1 ends the period); the period starts at point 1.
-        index = (k - 1) % path.count
-        record = records[(index + 1) * steps - 1]
-        P, Q, sigma, M = path.points[k]
-        shift = slip[k * steps - 1] if k > 0 else np.zeros(grid.count)
-        states.append(
-            StateResult(
-                label=path.labels[k],
-                P=float(P),
-                Q=float(Q),
-                sigma=float(sigma),
-                M=float(M),
-                pressure=record.normal.pressure,
-                contact=record.normal.contact,
-                shear=record.state.shear,
-                slip_sign=record.state.slip_sign,
-                slip=shift,
-                approach=record.normal.approach,
-                tilt=record.normal.tilt,
-                right=_edge_state(grid, mu, record.normal, record.state, permanent, "right"),
-                left=_edge_state(grid, mu, record.normal, record.state, permanent, "left"),
-            )
-        )
-    run = _central_run(permanent, permanent)
-    runs = Runs.of(permanent)
-    if len(runs.starts) > 1:
-        warnings.append(
-            f"the permanent stick zone is in {len(runs.starts)} pieces; b refers to the longest"
-        )
-    loaded = int(np.argmax(path.points[:, 0]))
-    loaded_step = records[((loaded - 1) % path.count + 1) * steps - 1]
-    edges = {}
-    for side in ("right", "left"):
-        if run is None:
-            direction = states[loaded].edge(side).slip_direction
-            edges[side] = EdgeResult(side, None, None, None, direction)
-            continue
-        end = run[1] if side == "right" else run[0]
-        # The edge's slip direction: that of the element just outside the permanent stick
-        # zone at the point of largest load (state 2 of the paper's cycle: on loading); 0 if
-        # it does not slip there (e.g. only the annulus a1 < |x| < a2 ever slips).
-        outside = end + ORIENTATION[side]
-        direction = int(loaded_step.state.slip_sign[outside]) * ORIENTATION[side]
-        boundary = _permanent_boundary(grid, mu, records, vertex_steps, end, side)
-        b, b_error = measured(side, boundary)
-        edges[side] = EdgeResult(side, b, b_error, boundary.method, direction)
-        if is_cycle and direction != 0:
-            for state in states:
-                at = state.edge(side)
-                if at.b is not None and abs(at.b - b) > max(at.b_error or 0.0, b_error):
-                    warnings.append(
-                        f"{side} edge: the stick boundary at state {state.label} ({at.b:.6g}) "
-                        f"differs from the permanent one ({b:.6g}) by more than its error"
-                    )
-    if run is None:
-        warnings.append(
-            "no element sticks throughout the period: there is no permanent stick "
-            "zone, and b is undefined"
-        )
-    return SolverResult(
-        grid=grid,
-        mu=mu,
-        E_star=E_star,
-        profile=profile.describe(),
-        path=path,
-        is_cycle=is_cycle,
-        states=tuple(states),
-        permanent_stick=permanent,
-        slip_range=slip_range,
-        energy=energy,
-        right=edges["right"],
-        left=edges["left"],
-        steps=steps,
-        cycles=cycles,
-        steady=steady,
-        steady_change=float(change),
-        tolerance=tolerance,
-        load_steps=counters["steps"],
-        active_set_solves=counters["solves"],
-        cg_iterations=counters["cg"],
-        fallbacks=counters["fallbacks"],
-        seconds=time.perf_counter() - started,
-        warnings=tuple(warnings),
-    )
+    return build_result(settings, window.records(), convergence, time.perf_counter() - started)

@@ -1,9 +1,10 @@
 """One load step of the tangential problem: stick, slip and the shear tractions.
 
-Sign convention (``derivations/solver_influence.py``): q(x) is the shear traction the lower
-body exerts on the upper one, along +x, Q = int q dx; s = u_x2 - u_x1 is the tangential
-displacement of the lower body relative to the upper one; sigma = sigma_2 - sigma_1 is the
-bulk tension of the lower body minus that of the upper.  Then
+Conventions (:mod:`asymslip.solver.conventions`, derived in ``derivations/solver_influence.py``):
+q(x) is the shear traction the indenter exerts on the lower body, along +x, Q = int q dx;
+s = u_x(indenter) - u_x(lower body) is their relative tangential displacement, whose change
+is the slip; sigma is the indenter's bulk tension minus the lower body's (the sign of the
+paper's (38)).  Then
 
     s_i = (S q)_i + sigma x_i/(2 E*) + c,
 
@@ -33,7 +34,7 @@ energy within 0.3 % and 1 % of its peak at every point, the stick boundary ident
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import NDArray
@@ -42,7 +43,7 @@ from asymslip_gen.solver_influence import tension_relative_displacement
 
 from .grid import Grid, InfluenceOperators
 from .normal import NormalState
-from .qp import BoxQP, Workspace, solve_box_qp
+from .qp import BoxQP, Iterate, Workspace, solve_box_qp
 from .toeplitz import FloatArray
 
 Int8Array = NDArray[np.int8]
@@ -59,10 +60,11 @@ class TangentialState:
     iterations: int  # active-set solves
     cg_iterations: int
     fallback: bool  # the monotone fallback was needed
+    image: FloatArray | None = None  # (-S) q, the slip stiffness times q; None: not kept
 
     @property
     def stick(self) -> NDArray[np.bool_]:
-        return self.slip_sign == 0
+        return np.equal(self.slip_sign, 0)
 
 
 class TangentialSolver:
@@ -79,8 +81,16 @@ class TangentialSolver:
         """No shear: the state after normal loading alone (elastically similar bodies)."""
         zeros = np.zeros(self.grid.count)
         return TangentialState(
-            zeros, np.zeros(self.grid.count, dtype=np.int8), zeros, 0.0, 0, 0, False
+            zeros, np.zeros(self.grid.count, dtype=np.int8), zeros, 0.0, 0, 0, False, zeros
         )
+
+    def refreshed(self, state: TangentialState) -> TangentialState:
+        """The state with its image (-S) q recomputed by one product, and made the start of
+        the next solve: the image is otherwise carried along by updates, whose rounding this
+        keeps from accumulating over many periods."""
+        image = self.operators.slip_stiffness.apply(state.shear)
+        self._workspace.last = Iterate(state.shear, image)
+        return replace(state, image=image)
 
     def step(
         self,
@@ -90,6 +100,8 @@ class TangentialSolver:
         sigma: float,
         predicted: Int8Array | None = None,
         previous: NormalState | None = None,
+        guess: FloatArray | None = None,
+        settle: bool = False,
     ) -> TangentialState:
         """The state at the end of a step to shear force Q and tension sigma.
 
@@ -98,7 +110,11 @@ class TangentialSolver:
         iteration starts from the previous step's slip zones.  The guess only affects the
         work, never the solution.  ``previous`` is the normal state at the step's start: with
         it, elements that come into or leave the contact during the step count only the part
-        of their slip made while in contact (see :func:`contact_fractions`).
+        of their slip made while in contact (see :func:`contact_fractions`).  ``guess`` is a
+        guess of the new shear tractions to start the iteration from (default: the old ones);
+        like ``predicted`` it affects only the work.  ``settle`` moves the predicted stick
+        zone's ends first (:func:`~asymslip.solver.qp.settle_ends`), for a prediction that is
+        not an extrapolation (a segment's first step).
         """
         contact = normal.contact
         capacity = self.mu * normal.pressure
@@ -111,20 +127,23 @@ class TangentialSolver:
             domain=contact,
             lower=-capacity,
             upper=capacity,
-            linear=stiffness.apply(old.shear) + tension_change,
+            # The old tractions' term is the image (-S) q_old the last solve kept, when kept.
+            linear=(stiffness.apply(old.shear) if old.image is None else old.image)
+            + tension_change,
             rows=self._rows,
             targets=np.array([Q], dtype=np.float64),
         )
         guess_sign = old.slip_sign if predicted is None else predicted
         at_upper = contact & (guess_sign > 0)
         at_lower = contact & (guess_sign < 0)
-        guess = np.where(contact, np.clip(old.shear, -capacity, capacity), 0.0)
         solution = solve_box_qp(
             qp,
             at_lower,
             at_upper,
             workspace=self._workspace,
-            feasible_start=self._feasible(guess, capacity, contact, Q),
+            feasible_start=lambda inside: self._feasible(inside, capacity, contact, Q),
+            guess=guess,
+            settle=settle,
         )
         # An element at its friction limit slips only if it moves: one held at the limit by
         # a locked-in traction, with no slip increment, sticks.
@@ -148,6 +167,7 @@ class TangentialSolver:
             iterations=solution.iterations,
             cg_iterations=solution.cg_iterations,
             fallback=solution.method != "primal-dual",
+            image=solution.image,
         )
 
     def _feasible(
@@ -161,7 +181,8 @@ class TangentialSolver:
         if total <= 0:
             return guess
         share = min(1.0, abs(deficit) / total)
-        return guess + np.sign(deficit) * share * room
+        moved: FloatArray = guess + np.sign(deficit) * share * room
+        return moved
 
 
 def predict_slip(

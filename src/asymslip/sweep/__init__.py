@@ -43,25 +43,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TextIO
 
-import numpy as np
-
 from ..errors import InputError
-from ..files import CaseTable, Categorical, Progress, WrittenTable, open_table, read_table
+from ..files import Progress, WrittenTable, open_table, read_table
 from ..files.collisions import Input, Output, refuse_overwriting_inputs
-from ..files.writer import Column, Kind, table_format
+from ..files.writer import table_format
 from ..laws.base import ContactLaw
-from .columns import (
-    CYCLE_COLUMNS,
-    DEFAULTS,
-    PREFIX,
-    REQUIRED_COLUMNS,
-    WARNING_SEPARATOR,
-    Edges,
-    edge_columns,
-    edges_of,
-    output_columns,
-)
-from .evaluate import FloatArray, evaluate_chunk
+from .chunk import check_header, schema, sweep_chunk
+from .columns import REQUIRED_COLUMNS, WARNING_SEPARATOR, Edges, edge_columns, output_columns
 
 __all__ = ["WARNING_SEPARATOR", "SweepSummary", "edge_columns", "output_columns", "sweep_file"]
 
@@ -80,6 +68,8 @@ class SweepSummary:
     invalid: list[tuple[int, str]] = field(default_factory=list)
     written: WrittenTable | None = None
     comment_lines: int = 0
+    #: What an invalid row's number counts: ``line`` of a CSV file, ``row`` of a dataset.
+    unit: str = "line"
 
     @property
     def rows_per_second(self) -> float:
@@ -97,51 +87,12 @@ class SweepSummary:
             lines.append(f"  {self.comment_lines} comment lines of the input were skipped")
         if self.invalid:
             lines.append(f"{len(self.invalid)} invalid rows (reason in the error column):")
-            lines.extend(f"  line {line}: {message}" for line, message in self.invalid[:shown])
+            lines.extend(
+                f"  {self.unit} {line}: {message}" for line, message in self.invalid[:shown]
+            )
             if len(self.invalid) > shown:
                 lines.append(f"  ... and {len(self.invalid) - shown} more")
         return "\n".join(lines)
-
-
-def _schema(header: list[str], edge: Edges, numbers: set[str]) -> list[tuple[str, Kind]]:
-    """Input columns (``numbers`` as numbers, the rest as text), then each edge's numbers and
-    warnings, then the error."""
-    schema: list[tuple[str, Kind]] = [
-        (name, "float" if name in numbers else "text") for name in header
-    ]
-    for side in edges_of(edge):
-        schema.extend(
-            (PREFIX[side] + name, "category" if name == "warnings" else "float")
-            for name in edge_columns()
-        )
-    schema.append(("error", "category"))
-    return schema
-
-
-def _cycle_values(
-    part: CaseTable, default_mu: float | None
-) -> tuple[dict[str, FloatArray], FloatArray, list[str | None]]:
-    """The cycle columns and mu of a chunk, defaults filled in, and each row's parse error."""
-    rows = len(part)
-    errors: list[str | None] = [part.errors.get(row) for row in range(rows)]
-    values = {}
-    for name in CYCLE_COLUMNS:
-        if name in part.values:
-            column = part.values[name]
-            if name in DEFAULTS:
-                column = np.where(part.empty[name], DEFAULTS[name], column)
-            values[name] = column
-        else:
-            values[name] = np.full(rows, DEFAULTS[name])
-    fallback = np.nan if default_mu is None else default_mu
-    if "mu" in part.values:
-        mu = np.where(part.empty["mu"], fallback, part.values["mu"])
-        if default_mu is None:
-            for row in np.flatnonzero(part.empty["mu"]).tolist():
-                errors[row] = errors[row] or "mu: missing (give --mu or a value in the mu column)"
-    else:
-        mu = np.full(rows, fallback)
-    return values, mu, errors
 
 
 def sweep_file(
@@ -200,14 +151,7 @@ def sweep_file(
     table = read_table(
         cases, required=REQUIRED_COLUMNS, numeric=("sigma1", "sigma2", "mu"), option="cases"
     )
-    clash = sorted(set(table.header) & set(output_columns([], "both")))
-    if clash:
-        raise InputError(
-            "cases",
-            f"{cases}: input column {', '.join(clash)} has the name of an output column; rename it",
-        )
-    if mu is None and "mu" not in table.header:
-        raise InputError("mu", "is required: give --mu or a mu column in the cases file")
+    check_header(table.header, cases, mu)
     default_mu = None if mu is None else float(mu)
     invalid: list[tuple[int, str]] = []
     bar = Progress(len(table), stream or sys.stderr, progress)
@@ -215,29 +159,15 @@ def sweep_file(
     # field is empty or not a number: its row's error says which); CSV copies every field's
     # text as written, for an exact round trip.
     numbers = set(table.values) if table_format(out) == "parquet" else set()
-    schema = _schema(table.header, edge, numbers)
-    with open_table(out, schema, option="out", inputs=[source]) as writer:
+    with open_table(
+        out, schema(table.header, edge, numbers), option="out", inputs=[source]
+    ) as writer:
         for part in table.chunks(chunk_rows):
-            values, friction, errors = _cycle_values(part, default_mu)
-            result = evaluate_chunk(law, values, friction, edge, errors)
-            columns: dict[str, Column] = {
-                name: part.values[name] if name in numbers else part.text[name]
-                for name in table.header
-            }
-            columns.update(result.numbers)
-            columns.update(
-                {
-                    name: Categorical(encoded.codes, encoded.categories)
-                    for name, encoded in result.warnings.items()
-                }
+            columns, bad = sweep_chunk(
+                part, law=law, default_mu=default_mu, edge=edge, numbers=numbers
             )
-            columns["error"] = Categorical.from_strings(result.errors)  # None: no error
             writer.write(columns)
-            invalid.extend(
-                (int(part.line[row]), message)
-                for row, message in enumerate(result.errors)
-                if message is not None
-            )
+            invalid.extend(bad)
             bar.update(writer.rows)
     bar.close()
     return SweepSummary(
