@@ -134,9 +134,14 @@ def _edge_estimates(d: Derivation) -> None:
             "slip_zone_growth_measure",
             ("mu", "lam", "eta", "a1", "dP", "worst_slope"),
         ),
-        Step("accuracy", "stick_boundary_accuracy", ("a1", "da", "width")),
-        Step("paper_accuracy", "paper_stick_boundary_accuracy", ("a1", "da", "width")),
-        Step("first_accuracy", "stick_boundary_accuracy_first_order", ("a1", "da", "width")),
+        Step("relative_growth", expr=da / a1),  # first: da**2 alone overflows at a1 ~ 1e150
+        Step("accuracy", "stick_boundary_accuracy", ("relative_growth", "width")),
+        Step("paper_accuracy", "paper_stick_boundary_accuracy", ("relative_growth", "width")),
+        Step(
+            "first_accuracy",
+            "stick_boundary_accuracy_first_order",
+            ("relative_growth", "width"),
+        ),
         Step(
             "paper_limit",
             "disagreement_limit",

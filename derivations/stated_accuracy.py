@@ -39,7 +39,7 @@ import sympy
 
 from asymslip.codegen import Argument, Derivation
 
-from ._glossary import L_I1, L_I2, P1, a1, a2, arguments, da, da_dP, dP, eta, lam, mu
+from ._glossary import L_I1, L_I2, P1, a1, a2, arguments, da_dP, dP, eta, lam, mu
 from .generic_law_comparison import d2a_dP2
 from .second_order_slip_zone import other_edge, second_order_width
 from .section2_calibrations import stick_boundary_proportional
@@ -51,7 +51,11 @@ accuracy = sympy.Symbol("accuracy", nonnegative=True)
 other_accuracy = sympy.Symbol("other_accuracy", nonnegative=True)
 rounding = sympy.Symbol("rounding", nonnegative=True)
 ratio = sympy.Symbol("r", positive=True)  # lam/mu without tension
+relative_growth = sympy.Symbol("relative_growth", nonnegative=True)
 
+#: da/a1 as one argument: (da/a1)^2 |w| printed as da**2 |w| / a1**2 would overflow at loads
+#: where the accuracy itself is a double (a1 ~ 1e150).
+RELATIVE_GROWTH = Argument(relative_growth, "da/a1, the contact growth over the cycle.")
 WIDTH = Argument(width, "Slip-zone width a1 - b of the estimate b (either sign) [length].")
 ACCURACY = Argument(accuracy, "Stated accuracy of b, the headline stick boundary [length].")
 OTHER_ACCURACY = Argument(
@@ -66,7 +70,7 @@ ROUNDING = Argument(
 
 def second_order_accuracy() -> sympy.Expr:
     """The stated accuracy of b2: (da/a1)^2 |w|."""
-    return (da / a1) ** 2 * sympy.Abs(width)
+    return relative_growth**2 * sympy.Abs(width)
 
 
 def paper_accuracy() -> sympy.Expr:
@@ -76,7 +80,7 @@ def paper_accuracy() -> sympy.Expr:
 
 def first_order_accuracy() -> sympy.Expr:
     """The stated accuracy of a first-order estimate: 2 (da/a1) |w|."""
-    return 2 * (da / a1) * sympy.Abs(width)
+    return 2 * relative_growth * sympy.Abs(width)
 
 
 def disagreement_limit() -> sympy.Expr:
@@ -162,7 +166,7 @@ def derive() -> Derivation:
                 how=f"Hertz, eta = 0: b(exact) - {estimate} = ({value}) (da/a1)^{power} "
                 "(a1 - b) to leading order in dP",
             )
-    common = arguments(a1, da)
+    common = (RELATIVE_GROWTH,)
     d.emit(
         name="stick_boundary_accuracy",
         args=(*common, WIDTH),

@@ -4680,7 +4680,7 @@ def tension_relative_displacement(x: float, sigma: float, E_star: float) -> floa
     return (1 / 2) * sigma * x / E_star
 
 
-def stick_boundary_accuracy(a1: float, da: float, width: float) -> float:
+def stick_boundary_accuracy(relative_growth: float, width: float) -> float:
     """Stated accuracy of the headline b (b2): (da/a1)^2 |a1 - b|.
 
     b2 is exact to second order in dP; its error is of third order, which (da/a1)^2 times the
@@ -4692,11 +4692,8 @@ def stick_boundary_accuracy(a1: float, da: float, width: float) -> float:
 
     Parameters
     ----------
-    a1 : float
-        Contact half-width a(P1) at load state 1 [length].
-    da : float
-        Growth of the contact half-width a2 - a1 > 0, passed in directly so that callers who
-        know it accurately keep every digit [length].
+    relative_growth : float
+        da/a1, the contact growth over the cycle.
     width : float
         Slip-zone width a1 - b of the estimate b (either sign) [length].
 
@@ -4705,10 +4702,10 @@ def stick_boundary_accuracy(a1: float, da: float, width: float) -> float:
     float
         The accuracy [length].
     """
-    return da**2 * abs(width) / a1**2
+    return relative_growth**2 * abs(width)
 
 
-def paper_stick_boundary_accuracy(a1: float, da: float, width: float) -> float:
+def paper_stick_boundary_accuracy(relative_growth: float, width: float) -> float:
     """Stated accuracy of (22): 2 (da/a1)^2 |a1 - b|, twice b2's.
 
     (22) is right to second order in dP without bulk tension for Hertz (third-order error r (r +
@@ -4720,11 +4717,8 @@ def paper_stick_boundary_accuracy(a1: float, da: float, width: float) -> float:
 
     Parameters
     ----------
-    a1 : float
-        Contact half-width a(P1) at load state 1 [length].
-    da : float
-        Growth of the contact half-width a2 - a1 > 0, passed in directly so that callers who
-        know it accurately keep every digit [length].
+    relative_growth : float
+        da/a1, the contact growth over the cycle.
     width : float
         Slip-zone width a1 - b of the estimate b (either sign) [length].
 
@@ -4733,10 +4727,10 @@ def paper_stick_boundary_accuracy(a1: float, da: float, width: float) -> float:
     float
         The accuracy [length].
     """
-    return 2 * da**2 * abs(width) / a1**2
+    return 2 * relative_growth**2 * abs(width)
 
 
-def stick_boundary_accuracy_first_order(a1: float, da: float, width: float) -> float:
+def stick_boundary_accuracy_first_order(relative_growth: float, width: float) -> float:
     """Stated accuracy of a first-order b ((28), (40)): 2 (da/a1) |a1 - b|.
 
     A first-order estimate errs at second order in dP, which (da/a1) times the width counts; for
@@ -4750,11 +4744,8 @@ def stick_boundary_accuracy_first_order(a1: float, da: float, width: float) -> f
 
     Parameters
     ----------
-    a1 : float
-        Contact half-width a(P1) at load state 1 [length].
-    da : float
-        Growth of the contact half-width a2 - a1 > 0, passed in directly so that callers who
-        know it accurately keep every digit [length].
+    relative_growth : float
+        da/a1, the contact growth over the cycle.
     width : float
         Slip-zone width a1 - b of the estimate b (either sign) [length].
 
@@ -4763,7 +4754,7 @@ def stick_boundary_accuracy_first_order(a1: float, da: float, width: float) -> f
     float
         The accuracy [length].
     """
-    return 2 * da * abs(width) / a1
+    return 2 * relative_growth * abs(width)
 
 
 def disagreement_limit(accuracy: float, other_accuracy: float, a1: float, rounding: float) -> float:

@@ -231,18 +231,19 @@ def edge_estimates(
        (26) of the growth of L_I over the cycle, dP |L_I'(P)| / L_I1.
     21. eq27 = slip_zone_growth_measure(mu, lam, eta, a1, dP, worst_slope) (27): Necessary-
        condition measure (27), twice the first-order |b - a1| / a1.
-    22. accuracy = stick_boundary_accuracy(a1, da, width) (28): Stated accuracy of the
-       headline b (b2): (da/a1)^2 |a1 - b|.
-    23. paper_accuracy = paper_stick_boundary_accuracy(a1, da, width) (22): Stated accuracy
-       of (22): 2 (da/a1)^2 |a1 - b|, twice b2's.
-    24. first_accuracy = stick_boundary_accuracy_first_order(a1, da, width) (28), (40):
-       Stated accuracy of a first-order b ((28), (40)): 2 (da/a1) |a1 - b|.
-    25. paper_limit = disagreement_limit(accuracy, paper_accuracy, a1, rounding) (22), (28),
+    22. relative_growth = da/a1
+    23. accuracy = stick_boundary_accuracy(relative_growth, width) (28): Stated accuracy of
+       the headline b (b2): (da/a1)^2 |a1 - b|.
+    24. paper_accuracy = paper_stick_boundary_accuracy(relative_growth, width) (22): Stated
+       accuracy of (22): 2 (da/a1)^2 |a1 - b|, twice b2's.
+    25. first_accuracy = stick_boundary_accuracy_first_order(relative_growth, width) (28),
+       (40): Stated accuracy of a first-order b ((28), (40)): 2 (da/a1) |a1 - b|.
+    26. paper_limit = disagreement_limit(accuracy, paper_accuracy, a1, rounding) (22), (28),
        (40): How far an estimate may lie from b before the two disagree.
-    26. first_limit = disagreement_limit(accuracy, first_accuracy, a1, rounding) (22), (28),
+    27. first_limit = disagreement_limit(accuracy, first_accuracy, a1, rounding) (22), (28),
        (40): How far an estimate may lie from b before the two disagree.
-    27. exact_accuracy = 0
-    28. exact_limit = disagreement_limit(accuracy, exact_accuracy, a1, rounding) (22), (28),
+    28. exact_accuracy = 0
+    29. exact_limit = disagreement_limit(accuracy, exact_accuracy, a1, rounding) (22), (28),
        (40): How far an estimate may lie from b before the two disagree.
     """
     a_slope1 = 1 / load_slope1
@@ -324,9 +325,10 @@ def edge_estimates(
     eq26 = dP * abs(dL_I_dP) / L_I1
     da_dP = worst_slope
     eq27 = (1 / 4) * dP * da_dP * abs(math.pi * a1 * eta + 4 * lam - 4 * mu) / (a1 * mu)
-    accuracy = da**2 * abs(width) / a1**2
-    paper_accuracy = 2 * da**2 * abs(width) / a1**2
-    first_accuracy = 2 * da * abs(width) / a1
+    relative_growth = da / a1
+    accuracy = relative_growth**2 * abs(width)
+    paper_accuracy = 2 * relative_growth**2 * abs(width)
+    first_accuracy = 2 * relative_growth * abs(width)
     other_accuracy = paper_accuracy
     paper_limit = a1 * rounding + accuracy + other_accuracy
     other_accuracy = first_accuracy

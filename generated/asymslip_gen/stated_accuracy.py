@@ -21,7 +21,7 @@ __all__ = [
 ]
 
 
-def stick_boundary_accuracy(a1: ArrayLike, da: ArrayLike, width: ArrayLike) -> FloatArray:
+def stick_boundary_accuracy(relative_growth: ArrayLike, width: ArrayLike) -> FloatArray:
     """Stated accuracy of the headline b (b2): (da/a1)^2 |a1 - b|.
 
     b2 is exact to second order in dP; its error is of third order, which (da/a1)^2 times the
@@ -33,11 +33,8 @@ def stick_boundary_accuracy(a1: ArrayLike, da: ArrayLike, width: ArrayLike) -> F
 
     Parameters
     ----------
-    a1 : array_like
-        Contact half-width a(P1) at load state 1 [length].
-    da : array_like
-        Growth of the contact half-width a2 - a1 > 0, passed in directly so that callers who
-        know it accurately keep every digit [length].
+    relative_growth : array_like
+        da/a1, the contact growth over the cycle.
     width : array_like
         Slip-zone width a1 - b of the estimate b (either sign) [length].
 
@@ -46,10 +43,10 @@ def stick_boundary_accuracy(a1: ArrayLike, da: ArrayLike, width: ArrayLike) -> F
     ndarray or float64
         The accuracy [length].
     """
-    return da**2 * abs(width) / a1**2
+    return relative_growth**2 * abs(width)
 
 
-def paper_stick_boundary_accuracy(a1: ArrayLike, da: ArrayLike, width: ArrayLike) -> FloatArray:
+def paper_stick_boundary_accuracy(relative_growth: ArrayLike, width: ArrayLike) -> FloatArray:
     """Stated accuracy of (22): 2 (da/a1)^2 |a1 - b|, twice b2's.
 
     (22) is right to second order in dP without bulk tension for Hertz (third-order error r (r +
@@ -60,11 +57,8 @@ def paper_stick_boundary_accuracy(a1: ArrayLike, da: ArrayLike, width: ArrayLike
 
     Parameters
     ----------
-    a1 : array_like
-        Contact half-width a(P1) at load state 1 [length].
-    da : array_like
-        Growth of the contact half-width a2 - a1 > 0, passed in directly so that callers who
-        know it accurately keep every digit [length].
+    relative_growth : array_like
+        da/a1, the contact growth over the cycle.
     width : array_like
         Slip-zone width a1 - b of the estimate b (either sign) [length].
 
@@ -73,12 +67,10 @@ def paper_stick_boundary_accuracy(a1: ArrayLike, da: ArrayLike, width: ArrayLike
     ndarray or float64
         The accuracy [length].
     """
-    return 2 * da**2 * abs(width) / a1**2
+    return 2 * relative_growth**2 * abs(width)
 
 
-def stick_boundary_accuracy_first_order(
-    a1: ArrayLike, da: ArrayLike, width: ArrayLike
-) -> FloatArray:
+def stick_boundary_accuracy_first_order(relative_growth: ArrayLike, width: ArrayLike) -> FloatArray:
     """Stated accuracy of a first-order b ((28), (40)): 2 (da/a1) |a1 - b|.
 
     A first-order estimate errs at second order in dP, which (da/a1) times the width counts; for
@@ -91,11 +83,8 @@ def stick_boundary_accuracy_first_order(
 
     Parameters
     ----------
-    a1 : array_like
-        Contact half-width a(P1) at load state 1 [length].
-    da : array_like
-        Growth of the contact half-width a2 - a1 > 0, passed in directly so that callers who
-        know it accurately keep every digit [length].
+    relative_growth : array_like
+        da/a1, the contact growth over the cycle.
     width : array_like
         Slip-zone width a1 - b of the estimate b (either sign) [length].
 
@@ -104,7 +93,7 @@ def stick_boundary_accuracy_first_order(
     ndarray or float64
         The accuracy [length].
     """
-    return 2 * da * abs(width) / a1
+    return 2 * relative_growth * abs(width)
 
 
 def disagreement_limit(

@@ -1413,21 +1413,21 @@ double asymslip_tension_relative_displacement(double x, double sigma, double E_s
 }
 
 /* Stated accuracy of the headline b (b2): (da/a1)^2 |a1 - b|. See asymslip_gen.h. */
-double asymslip_stick_boundary_accuracy(double a1, double da, double width)
+double asymslip_stick_boundary_accuracy(double relative_growth, double width)
 {
-    return pow(da, 2)*fabs(width)/pow(a1, 2);
+    return pow(relative_growth, 2)*fabs(width);
 }
 
 /* Stated accuracy of (22): 2 (da/a1)^2 |a1 - b|, twice b2's. See asymslip_gen.h. */
-double asymslip_paper_stick_boundary_accuracy(double a1, double da, double width)
+double asymslip_paper_stick_boundary_accuracy(double relative_growth, double width)
 {
-    return 2*pow(da, 2)*fabs(width)/pow(a1, 2);
+    return 2*pow(relative_growth, 2)*fabs(width);
 }
 
 /* Stated accuracy of a first-order b ((28), (40)): 2 (da/a1) |a1 - b|. See asymslip_gen.h. */
-double asymslip_stick_boundary_accuracy_first_order(double a1, double da, double width)
+double asymslip_stick_boundary_accuracy_first_order(double relative_growth, double width)
 {
-    return 2*da*fabs(width)/a1;
+    return 2*relative_growth*fabs(width);
 }
 
 /* How far an estimate may lie from b before the two disagree. See asymslip_gen.h. */

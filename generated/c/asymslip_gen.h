@@ -3083,15 +3083,13 @@ double asymslip_tension_relative_displacement(double x, double sigma, double E_s
  * Implements Eq. (28) of the paper; derived in derivations/stated_accuracy.py.
  *
  * Arguments:
- *   a1     Contact half-width a(P1) at load state 1 [length].
- *   da     Growth of the contact half-width a2 - a1 > 0, passed in directly so that
- *          callers who know it accurately keep every digit [length].
- *   width  Slip-zone width a1 - b of the estimate b (either sign) [length].
+ *   relative_growth  da/a1, the contact growth over the cycle.
+ *   width            Slip-zone width a1 - b of the estimate b (either sign) [length].
  *
  * Returns:
  *   The accuracy [length].
  */
-double asymslip_stick_boundary_accuracy(double a1, double da, double width);
+double asymslip_stick_boundary_accuracy(double relative_growth, double width);
 
 /**
  * Stated accuracy of (22): 2 (da/a1)^2 |a1 - b|, twice b2's.
@@ -3103,15 +3101,13 @@ double asymslip_stick_boundary_accuracy(double a1, double da, double width);
  * Implements Eq. (22) of the paper; derived in derivations/stated_accuracy.py.
  *
  * Arguments:
- *   a1     Contact half-width a(P1) at load state 1 [length].
- *   da     Growth of the contact half-width a2 - a1 > 0, passed in directly so that
- *          callers who know it accurately keep every digit [length].
- *   width  Slip-zone width a1 - b of the estimate b (either sign) [length].
+ *   relative_growth  da/a1, the contact growth over the cycle.
+ *   width            Slip-zone width a1 - b of the estimate b (either sign) [length].
  *
  * Returns:
  *   The accuracy [length].
  */
-double asymslip_paper_stick_boundary_accuracy(double a1, double da, double width);
+double asymslip_paper_stick_boundary_accuracy(double relative_growth, double width);
 
 /**
  * Stated accuracy of a first-order b ((28), (40)): 2 (da/a1) |a1 - b|.
@@ -3125,15 +3121,13 @@ double asymslip_paper_stick_boundary_accuracy(double a1, double da, double width
  * Implements Eqs. (28), (40) of the paper; derived in derivations/stated_accuracy.py.
  *
  * Arguments:
- *   a1     Contact half-width a(P1) at load state 1 [length].
- *   da     Growth of the contact half-width a2 - a1 > 0, passed in directly so that
- *          callers who know it accurately keep every digit [length].
- *   width  Slip-zone width a1 - b of the estimate b (either sign) [length].
+ *   relative_growth  da/a1, the contact growth over the cycle.
+ *   width            Slip-zone width a1 - b of the estimate b (either sign) [length].
  *
  * Returns:
  *   The accuracy [length].
  */
-double asymslip_stick_boundary_accuracy_first_order(double a1, double da, double width);
+double asymslip_stick_boundary_accuracy_first_order(double relative_growth, double width);
 
 /**
  * How far an estimate may lie from b before the two disagree.

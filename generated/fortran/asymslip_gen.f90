@@ -4795,25 +4795,24 @@ contains
     !! Implements Eq. (28) of the paper; derived in derivations/stated_accuracy.py.
     !!
     !! Arguments:
-    !!   a1     Contact half-width a(P1) at load state 1 [length].
-    !!   da     Growth of the contact half-width a2 - a1 > 0, passed in directly so that
-    !!          callers who know it accurately keep every digit [length].
-    !!   width  Slip-zone width a1 - b of the estimate b (either sign) [length].
+    !!   relative_growth  da/a1, the contact growth over the cycle.
+    !!   width            Slip-zone width a1 - b of the estimate b (either sign) [length].
     !!
     !! Returns:
     !!   The accuracy [length].
-    elemental function asymslip_stick_boundary_accuracy(a1, da, width) result(asymslip_result)
-        real(c_double), intent(in) :: a1, da, width
+    elemental function asymslip_stick_boundary_accuracy(relative_growth, width) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: relative_growth, width
         real(c_double) :: asymslip_result
-        asymslip_result = da**2*abs(width)/a1**2
+        asymslip_result = relative_growth**2*abs(width)
     end function asymslip_stick_boundary_accuracy
 
     !> C binding of asymslip_stick_boundary_accuracy (scalar arguments by value).
-    function asymslip_stick_boundary_accuracy_c(a1, da, width) result(asymslip_result) &
+    function asymslip_stick_boundary_accuracy_c(relative_growth, width) result(asymslip_result) &
             bind(C, name="asymslip_stick_boundary_accuracy")
-        real(c_double), value, intent(in) :: a1, da, width
+        real(c_double), value, intent(in) :: relative_growth, width
         real(c_double) :: asymslip_result
-        asymslip_result = asymslip_stick_boundary_accuracy(a1, da, width)
+        asymslip_result = asymslip_stick_boundary_accuracy(relative_growth, width)
     end function asymslip_stick_boundary_accuracy_c
 
     !> Stated accuracy of (22): 2 (da/a1)^2 |a1 - b|, twice b2's.
@@ -4825,25 +4824,25 @@ contains
     !! Implements Eq. (22) of the paper; derived in derivations/stated_accuracy.py.
     !!
     !! Arguments:
-    !!   a1     Contact half-width a(P1) at load state 1 [length].
-    !!   da     Growth of the contact half-width a2 - a1 > 0, passed in directly so that
-    !!          callers who know it accurately keep every digit [length].
-    !!   width  Slip-zone width a1 - b of the estimate b (either sign) [length].
+    !!   relative_growth  da/a1, the contact growth over the cycle.
+    !!   width            Slip-zone width a1 - b of the estimate b (either sign) [length].
     !!
     !! Returns:
     !!   The accuracy [length].
-    elemental function asymslip_paper_stick_boundary_accuracy(a1, da, width) result(asymslip_result)
-        real(c_double), intent(in) :: a1, da, width
+    elemental function asymslip_paper_stick_boundary_accuracy(relative_growth, width) &
+            result(asymslip_result)
+        real(c_double), intent(in) :: relative_growth, width
         real(c_double) :: asymslip_result
-        asymslip_result = 2*da**2*abs(width)/a1**2
+        asymslip_result = 2*relative_growth**2*abs(width)
     end function asymslip_paper_stick_boundary_accuracy
 
     !> C binding of asymslip_paper_stick_boundary_accuracy (scalar arguments by value).
-    function asymslip_paper_stick_boundary_accuracy_c(a1, da, width) result(asymslip_result) &
+    function asymslip_paper_stick_boundary_accuracy_c(relative_growth, width) &
+            result(asymslip_result) &
             bind(C, name="asymslip_paper_stick_boundary_accuracy")
-        real(c_double), value, intent(in) :: a1, da, width
+        real(c_double), value, intent(in) :: relative_growth, width
         real(c_double) :: asymslip_result
-        asymslip_result = asymslip_paper_stick_boundary_accuracy(a1, da, width)
+        asymslip_result = asymslip_paper_stick_boundary_accuracy(relative_growth, width)
     end function asymslip_paper_stick_boundary_accuracy_c
 
     !> Stated accuracy of a first-order b ((28), (40)): 2 (da/a1) |a1 - b|.
@@ -4857,26 +4856,25 @@ contains
     !! Implements Eqs. (28), (40) of the paper; derived in derivations/stated_accuracy.py.
     !!
     !! Arguments:
-    !!   a1     Contact half-width a(P1) at load state 1 [length].
-    !!   da     Growth of the contact half-width a2 - a1 > 0, passed in directly so that
-    !!          callers who know it accurately keep every digit [length].
-    !!   width  Slip-zone width a1 - b of the estimate b (either sign) [length].
+    !!   relative_growth  da/a1, the contact growth over the cycle.
+    !!   width            Slip-zone width a1 - b of the estimate b (either sign) [length].
     !!
     !! Returns:
     !!   The accuracy [length].
-    elemental function asymslip_stick_boundary_accuracy_first_order(a1, da, width) &
+    elemental function asymslip_stick_boundary_accuracy_first_order(relative_growth, width) &
             result(asymslip_result)
-        real(c_double), intent(in) :: a1, da, width
+        real(c_double), intent(in) :: relative_growth, width
         real(c_double) :: asymslip_result
-        asymslip_result = 2*da*abs(width)/a1
+        asymslip_result = 2*relative_growth*abs(width)
     end function asymslip_stick_boundary_accuracy_first_order
 
     !> C binding of asymslip_stick_boundary_accuracy_first_order (scalar arguments by value).
-    function asymslip_stick_boundary_accuracy_first_order_c(a1, da, width) result(asymslip_result) &
+    function asymslip_stick_boundary_accuracy_first_order_c(relative_growth, width) &
+            result(asymslip_result) &
             bind(C, name="asymslip_stick_boundary_accuracy_first_order")
-        real(c_double), value, intent(in) :: a1, da, width
+        real(c_double), value, intent(in) :: relative_growth, width
         real(c_double) :: asymslip_result
-        asymslip_result = asymslip_stick_boundary_accuracy_first_order(a1, da, width)
+        asymslip_result = asymslip_stick_boundary_accuracy_first_order(relative_growth, width)
     end function asymslip_stick_boundary_accuracy_first_order_c
 
     !> How far an estimate may lie from b before the two disagree.

@@ -385,7 +385,7 @@ def _own_multipliers_edge(
             shear.L_II2,
             b,
             width,  # slip_zone_width
-            kernels.stick_boundary_accuracy_first_order(a1, da, width),  # b_accuracy
+            kernels.stick_boundary_accuracy_first_order(da / a1, width),  # b_accuracy
             missing,  # b_paper
             b_first_order,
             missing,  # b_exact
