@@ -398,9 +398,9 @@ double asymslip_edge_shear_next_coefficient(
 double asymslip_slip_direction(double mu, double L_I2, double L_II2)
 {
     const double tmp0 = L_I2*mu;
-    const double tmp1 = (((L_II2 + tmp0) > 0) - ((L_II2 + tmp0) < 0));
+    const double tmp1 = ((double)((((L_II2 + tmp0) > 0)) - (((L_II2 + tmp0) < 0))));
     const double tmp2 = -L_II2 + tmp0;
-    return (1.0/2.0)*tmp1 - 1.0/2.0*fabs(tmp1) + (1.0/2.0)*fabs((((tmp2) > 0) - ((tmp2) < 0))) - 1.0/2.0*(((tmp2) > 0) - ((tmp2) < 0));
+    return (1.0/2.0)*tmp1 - 1.0/2.0*fabs(tmp1) + (1.0/2.0)*fabs(((double)((((tmp2) > 0)) - (((tmp2) < 0))))) - 1.0/2.0*((double)((((tmp2) > 0)) - (((tmp2) < 0))));
 }
 
 /* Normal load P_K whose contact is the permanent stick zone (Jaeger-Ciavarella). See asymslip_gen.h. */
@@ -546,7 +546,7 @@ double asymslip_flat_rounded_pressure(double x, double a, double c, double R, do
     const double tmp4 = 1.0/a;
     const double tmp5 = c + tmp1;
     const double tmp6 = tmp4*tmp5;
-    return fmax(0, E_star*((1.0/2.0)*a*log(pow((c*tmp2 + tmp0*tmp3)/pow(a, 2), 2*tmp0*tmp4)*pow(tmp4*(c + tmp0), tmp6)*pow(tmp4*fabs(tmp5), tmp6)) - c*log(tmp4*(tmp2 + tmp3)) + tmp2*atan2(tmp3, c))*(((tmp2) > 0) - ((tmp2) < 0))/(asymslip_pi*R));
+    return fmax(0, E_star*((1.0/2.0)*a*log(pow((c*tmp2 + tmp0*tmp3)/pow(a, 2), 2*tmp0*tmp4)*pow(tmp4*(c + tmp0), tmp6)*pow(tmp4*fabs(tmp5), tmp6)) - c*log(tmp4*(tmp2 + tmp3)) + tmp2*atan2(tmp3, c))*((double)((((tmp2) > 0)) - (((tmp2) < 0))))/(asymslip_pi*R));
 }
 
 /* Coefficient C of b(22) - a(P_K) = C dP^2 + O(dP^3) for a generic contact law. See asymslip_gen.h. */
