@@ -77,6 +77,8 @@ nitpick_ignore_regex = [
     (r"py:.*", _BUILTINS),
     # Subscripted builtins in annotations (dict[str, float]) split by the type parser.
     (r"py:.*", r"(dict|tuple|list|set|frozenset|type)\[.*|string"),
+    # The project's own test and benchmark modules are not part of the site.
+    (r"py:.*", r"tests(\..*)?"),
     # Private names (a leading underscore) are not part of the reference.
     (r"py:.*", r"(.*\.)?_[A-Za-z]\w*"),
 ]

@@ -89,13 +89,40 @@ def plain_text_lines(lines: list[str]) -> list[str]:
     return result
 
 
+_ITEM = re.compile(r"^(\s*)(\d+|[A-Za-z]|#)[.)]\s+")
+
+
+def aligned_list_items(lines: list[str]) -> list[str]:
+    """Continuation lines of a numbered item aligned with the item's text.
+
+    A generated docstring numbers its steps ``1.`` to ``29.`` and indents every continuation
+    line as for a one-digit number; from ``10.`` on, reStructuredText reads that line as the end
+    of the list.  A line indented more than the item's number but less than its text is moved to
+    the text's column, which is what the writer meant.
+    """
+    result: list[str] = []
+    item: tuple[int, int] | None = None  # (the number's column, the text's column)
+    for line in lines:
+        match = _ITEM.match(line)
+        if match:
+            item = (len(match.group(1)), match.end())
+        elif not line.strip():
+            pass
+        elif item is not None and item[0] < _indent(line) < item[1]:
+            line = " " * item[1] + line.lstrip()
+        elif item is not None and _indent(line) <= item[0]:
+            item = None
+        result.append(line)
+    return result
+
+
 def _process(app: Sphinx, what: str, name: str, obj: Any, options: Any, lines: list[str]) -> None:
     if not name.startswith(("asymslip.", "asymslip_gen.")) and name not in {
         "asymslip",
         "asymslip_gen",
     }:
         return
-    lines[:] = plain_text_lines(lines)
+    lines[:] = plain_text_lines(aligned_list_items(lines))
 
 
 def setup(app: Sphinx) -> dict[str, Any]:

@@ -12,6 +12,7 @@ error.  The error of a window's a (and likewise of its L_I) has two parts, added
   bound; exact data have only rounding scatter.
 * **truncation** -- what the neglected terms (a - x)^(5/2), ... do to the two-term fit, which
   for exact data is the whole error: F times the larger of two estimates from the data,
+
     - the *next term*: the change of a and L_I when e (a - x)^(5/2) is fitted too (the
       three-term fit's own truncation is of higher order, so this is the two-term fit's
       error to leading order), and
@@ -26,6 +27,7 @@ error.  The error of a window's a (and likewise of its L_I) has two parts, added
       reaching towards the end of the expansion's validity (the corner of a flat punch) has
       changes that shrink slower than w^3, a low observed order and a large estimate: the
       next term alone misses such cases by up to 2.3 times.
+
   Each change is freed of its own scatter (sqrt(max(change^2 - sd^2, 0)), sd the linearised
   standard deviation of the change), so that on noisy data it measures the truncation, not the
   noise.  F = :data:`TRUNCATION_SAFETY`.
