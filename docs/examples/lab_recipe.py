@@ -95,6 +95,37 @@ print(
     f"largest difference over the slip zone: shear change {check.shear_change_difference:.2%}, "
     f"slip {check.slip_difference:.2%} of the blade's largest"
 )
+# The near-edge stress amplitude (state 2 - state 1) at 24 points about each edge, from the edge
+# asymptotes and from the solvers' fields, against the two asymptotes' stated accuracy.
+for item in check.stress:
+    print(
+        f"stress amplitude ({item.source}): largest difference {item.difference:.2%} of the "
+        f"blade's largest component, stated accuracy {item.allowed:.2%}, within: "
+        f"{item.within_stated_accuracy}"
+    )
+
+# %%
+# The same on the command line
+# ----------------------------
+# ``asymslip match --verify`` with the calibration file and the flank's gap tabulated (as a
+# drawing or the finite-element mesh would give it) prints the recipe and the verification:
+# the slip-zone widths, the shear change and slip, and the near-edge stress amplitude -- with
+# the amplitude's uniform sxx (half the tension change), which the edge match does not fix.
+from asymslip.cli import main
+
+gap_x = np.linspace(-3.0, 3.0, 6001)
+gap_h = flank.profile(gap_x)
+gap = "\n".join(f"{a!r},{h!r}" for a, h in zip(gap_x.tolist(), gap_h.tolist(), strict=True))
+(folder / "flank_gap.csv").write_text("x,h\n" + gap + "\n")
+command = [
+    *f"match --law calibrated --calibration {folder / 'flank.json'} --mu {MU}".split(),
+    *"--P1 500 --Q1 40 --sigma1 250 --P2 520 --Q2 60 --sigma2 290".split(),
+    *f"--rig hertz --rig-E-star {E_STAR} --rig-R-range 5 200 --rig-max-P 5000".split(),
+    *f"--rig-max-sigma 600 --verify --verify-E-star {E_STAR} --elements 4000".split(),
+    *["--verify-profile-table", str(folder / "flank_gap.csv")],
+]
+print("$ asymslip " + " ".join(command))
+status = main(command)
 
 # %%
 # The two edges side by side, in the edge's own coordinate

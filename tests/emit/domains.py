@@ -55,8 +55,9 @@ class Draw:
         L_I2 = np.sqrt(2 / a2) * slope2 / np.pi
         L_II1 = (lam + np.pi * eta * a1 / 4) * L_I1  # (21)
         L_II2 = (lam + np.pi * eta * a2 / 4) * L_I2
-        # b from (17) (the root of the consistency condition), written here from the paper.
-        b = (a2 * (L_II2 - mu * L_I2) + a1 * (L_II1 + mu * L_I1)) / (
+        # b from (17) (the root of the consistency condition (16)), written here from the paper:
+        # ((mu L_I2 - L_II2) a2 + (mu L_I1 + L_II1) a1) / ((mu L_I2 - L_II2) + (mu L_I1 + L_II1)).
+        b = (a2 * (mu * L_I2 - L_II2) + a1 * (mu * L_I1 + L_II1)) / (
             mu * (L_I1 + L_I2) + L_II1 - L_II2
         )
         return {

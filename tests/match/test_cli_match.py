@@ -94,7 +94,29 @@ def test_verify_on_the_command_line_reports_the_solver_widths():
     assert check["rig"]["element_size"] == pytest.approx(
         check["prototype"]["element_size"], rel=0.02
     )
-    assert "not compared" in check["stress_amplitude"]
+    # Each solve's largest |q2 - q1| is LT2's peak shear change to the edge expansions' next
+    # terms, (a2 - b)/a1 (the solver against the asymptote, both contacts).
+    for side in ("prototype", "rig"):
+        solved, asymptotic = check["shear_change_peak"][side], data["peak_shear_change"][side]
+        assert abs(solved / asymptotic - 1) <= check["expansion_allowance"], side
+    stress = check["stress_amplitude"]
+    assert sorted(stress) == ["asymptote", "solver"]
+    assert stress["asymptote"]["points"] == stress["solver"]["points"] == 24
+    # The amplitude's uniform sxx is half the prototype's tension change, 0.002 (by hand).
+    assert stress["asymptote"]["uniform_sxx"]["prototype"] == pytest.approx(0.001, rel=1e-12)
+    assert stress["solver"]["within_stated_accuracy"] is True
+
+
+def test_verify_text_shows_the_near_edge_stress_amplitude_of_both_sources():
+    status, out, err = run(
+        "match", *BLADE_OPTIONS, "--rig", "hertz", "--verify", "--elements", "600"
+    )
+    assert status == 0, err
+    assert "near-edge stress amplitude" in out
+    assert "    asymptote largest |component|: prototype" in out
+    assert "    solver    largest |component|: prototype" in out
+    assert "largest |q2 - q1|: prototype" in out
+    assert "uniform sxx of the amplitude (dsigma/2" in out
 
 
 def test_a_calibrated_prototype_is_taken_as_slip_zone_takes_it(tmp_path: Path):

@@ -30,4 +30,10 @@ def test_the_blade_root_example_designs_an_exact_recipe_the_solver_confirms(tmp_
     widths = next(line for line in run.stdout.splitlines() if "solver slip-zone widths" in line)
     difference, allowed = (float(part.split()[-1].rstrip(")")) for part in widths.split(",")[-2:])
     assert abs(difference) <= allowed
+    # The near-edge stress amplitude, from both sources, within the asymptotes' accuracy.
+    stress = [line for line in run.stdout.splitlines() if line.startswith("stress amplitude (")]
+    assert len(stress) == 2 and all(line.endswith("within: True") for line in stress)
+    # The command line's --verify answer, printed by the example itself.
+    assert "Verification (reference solver):" in run.stdout
+    assert "near-edge stress amplitude (state 2 - state 1" in run.stdout
     assert (tmp_path / "lab_recipe.png").stat().st_size > 10_000

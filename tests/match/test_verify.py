@@ -9,6 +9,8 @@ more than a tolerance the test measures -- the solver's own grid noise on this c
 prototype against itself on a grid of 1.37 times as many elements, so that the element centres
 fall elsewhere relative to the edge) -- plus the expansion allowance (a2 - b)/a1, the relative
 size of the first terms the leading-order match neglects at the far end of the slip zone.
+The near-edge stress amplitude of the two agrees within the asymptotes' stated accuracies from
+both sources (:mod:`asymslip.match.near_edge_stress`).
 """
 
 from __future__ import annotations
@@ -118,3 +120,13 @@ def test_the_solver_confirms_the_rig_reproduces_the_edge(name):
     )
     assert check.shear_change_difference <= noise_q + check.expansion_allowance
     assert check.slip_difference <= noise_slip + check.expansion_allowance
+    for item in check.stress:
+        print(
+            f"  stress amplitude ({item.source}): difference {item.difference:.3g}, stated "
+            f"accuracy {item.allowed:.3g}, explained {item.explained}"
+        )
+    # The near-edge stress amplitude (state 2 - state 1) of prototype and rig: the same within
+    # the two asymptotes' stated accuracies, by the asymptotes and by the solvers' fields.
+    asymptote, solved = check.stress
+    assert asymptote.within_stated_accuracy and solved.within_stated_accuracy
+    assert solved.explained

@@ -10,6 +10,7 @@ from pathlib import Path
 
 from ..errors import InputError
 from ..match import FAMILIES, Available, MatchResult, Rig, SolverProblem, match, verify
+from ..match.near_edge_stress import DEPTHS, FARTHEST, StressComparison
 from .cycle_options import add_cycle_options, build_cycle
 from .laws import add_law_options, build_law, parse_assignments
 from .parser import number, whole_number
@@ -248,10 +249,51 @@ def format_answer(result: MatchResult) -> str:
             f"to the prototype's largest, {check.compared_points} points; the edge expansions' "
             f"next terms reach {check.expansion_allowance:.3g} there)"
         )
-        lines.append(f"  stress amplitude: {check.stress}")
+        lines.append(
+            f"  largest |q2 - q1|: prototype {_number(check.shear_change_peak.prototype)}, rig "
+            f"{_number(check.shear_change_peak.rig)}; largest |slip|: prototype "
+            f"{_number(check.slip_peak.prototype)}, rig {_number(check.slip_peak.rig)}"
+        )
+        lines.extend(_stress_lines(check.stress))
     lines.append("Warnings: " + ("none" if not result.warnings else ""))
     lines.extend(f"  - {text}" for text in result.warnings)
     return "\n".join(lines)
+
+
+def _stress_lines(comparisons: tuple[StressComparison, ...]) -> list[str]:
+    """The near-edge stress amplitude of both contacts, one line per source."""
+    if not comparisons:
+        return []
+    first = comparisons[0]
+    lines = [
+        f"  near-edge stress amplitude (state 2 - state 1; {first.points} points within "
+        f"{FARTHEST * first.unit:.3g} of each edge, {DEPTHS[0] * first.unit:.3g} deep or more; "
+        "differences relative to the prototype's largest component there):"
+    ]
+    for item in comparisons:
+        verdict = "within" if item.within_stated_accuracy else "OUTSIDE"
+        text = (
+            f"    {item.source:<9} largest |component|: prototype "
+            f"{_number(item.largest.prototype)}, rig {_number(item.largest.rig)}; "
+            f"largest difference {item.difference:.3g} ({verdict} the two "
+            f"asymptotes' stated accuracy, {item.allowed:.3g})"
+        )
+        if item.explained is not None:
+            text += (
+                "; the asymptotes' difference accounts for it"
+                if item.explained
+                else "; NOT accounted for by the asymptotes' difference"
+            )
+        lines.append(text)
+        if item.uniform_sxx is not None:
+            lines.append(
+                f"    uniform sxx of the amplitude (dsigma/2, not part of the edge match): "
+                f"prototype {_number(item.uniform_sxx.prototype)}, rig "
+                f"{_number(item.uniform_sxx.rig)}"
+            )
+        if not item.near_edge:
+            lines.append("    (some points lie beyond the asymptote's near-edge range)")
+    return lines
 
 
 def run(args: argparse.Namespace) -> int:

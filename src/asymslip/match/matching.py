@@ -7,6 +7,8 @@ from typing import Literal
 
 from numpy.typing import ArrayLike
 
+from asymslip_gen.edge_stress import edge_uniform_sxx
+
 from ..cycle import LoadCycle
 from ..errors import InputError, as_float_array
 from ..laws.base import ContactLaw
@@ -146,6 +148,11 @@ def _first_order_accuracy(result: SlipZoneResult) -> float:
     """2 (da/a1) |a1 - b| of one contact: the accuracy of a first-order width."""
     a1 = float(result.a1)
     return 2 * (float(result.a2) - a1) / a1 * abs(float(result.slip_zone_width))
+
+
+def _uniform_sxx(cycle: LoadCycle) -> float:
+    """The near-edge amplitude's uniform sxx of a cycle (EA-3)."""
+    return float(edge_uniform_sxx(float(cycle.sigma2) - float(cycle.sigma1)))
 
 
 def match(
@@ -328,6 +335,14 @@ def _assemble(
         warnings.append(
             f"the headline slip-zone widths differ by {abs(width.rig - width.prototype):.3g}, "
             f"more than the match's stated accuracy {accuracy:.3g}"
+        )
+    uniform = Pair(_uniform_sxx(prototype_cycle), _uniform_sxx(cycle_rig))
+    if abs(uniform.rig - uniform.prototype) > EXACT * max(abs(uniform.prototype), abs(uniform.rig)):
+        # The edge signature fixes eta, not the load change: dsigma = eta dP is the rig's own.
+        warnings.append(
+            "the near-edge stress amplitude's uniform sxx, dsigma/2 (EA-3: the stick zone's "
+            f"strain compatibility), is not part of the edge match: prototype "
+            f"{uniform.prototype:.4g}, rig {uniform.rig:.4g}"
         )
     if not hasattr(prototype.law, "E_star") or getattr(prototype.law, "E_star", None) != rig.E_star:
         warnings.append(

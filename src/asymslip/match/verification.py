@@ -11,8 +11,9 @@ plus two elements of each solve (plus, for an approximate match, the asymptotic 
 the two widths that the mismatch causes).  Where the asymptotic match is exact the two
 solutions still differ by the next terms of the edge expansions (4), (5), of relative size up to
 (a2 - b)/a1 at the far end of the slip zone: the ``expansion_allowance``, the larger of the two
-contacts'.  The near-edge stress amplitude is not compared: the stress field
-(``asymslip.stress``) is not part of this package yet.
+contacts'.  The near-edge stress amplitude (state 2 minus state 1) is compared from both
+sources of :mod:`asymslip.stress`, the edge asymptotes and the solvers' fields, at points about
+each contact's own edge (:mod:`.near_edge_stress`).
 
 Examples
 --------
@@ -23,25 +24,28 @@ Examples
 >>> check = verify(result, elements=300)
 >>> check.widths_agree, check.prototype.elements, check.rig.elements
 (True, 300, 193)
+>>> [(item.source, item.within_stated_accuracy) for item in check.stress]
+[('asymptote', True), ('solver', True)]
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from typing import Any
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import InputError
 from ..solver.result import Edge
-from .result import MatchResult
+from .near_edge_stress import StressComparison, asymptotic_amplitudes, solver_comparison
+from .result import MatchResult, Pair
+
+if TYPE_CHECKING:
+    from ..stress.field import StressField
 
 FloatArray = NDArray[np.float64]
-
-#: Why the stress amplitude is not compared (said in the answer).
-STRESS_NOTE = "not compared: the stress field (asymslip.stress) is not available"
 
 #: Margin of the rig's computational domain beyond its largest contact, as the solver's own.
 DOMAIN_MARGIN = 0.03
@@ -76,6 +80,8 @@ class SolvedEdge:
     s: FloatArray  # distance from the state-2 edge of each element centre
     q_diff: FloatArray  # q2 - q1 at the centres
     slip: FloatArray  # slip on loading (state 1 to 2) at the centres
+    a2: float = math.nan  # the state-2 edge, outward from the centre
+    solution: Any = field(default=None, repr=False, compare=False)  # the SolverResult
 
     def to_dict(self) -> dict[str, float | int]:
         return {
@@ -99,7 +105,17 @@ class Verification:
     slip_difference: float
     compared_points: int
     expansion_allowance: float
-    stress: str = STRESS_NOTE
+    stress: tuple[StressComparison, ...] = ()
+
+    @property
+    def shear_change_peak(self) -> Pair:
+        """The largest |q2 - q1| of each solve over its own slip zone."""
+        return Pair(_peak(self.prototype, "q_diff"), _peak(self.rig, "q_diff"))
+
+    @property
+    def slip_peak(self) -> Pair:
+        """The largest |slip| on loading of each solve over its own slip zone."""
+        return Pair(_peak(self.prototype, "slip"), _peak(self.rig, "slip"))
 
     @property
     def widths_agree(self) -> bool:
@@ -114,9 +130,14 @@ class Verification:
             "widths_agree": self.widths_agree,
             "shear_change_difference": self.shear_change_difference,
             "slip_difference": self.slip_difference,
+            "shear_change_peak": {
+                "prototype": self.shear_change_peak.prototype,
+                "rig": self.shear_change_peak.rig,
+            },
+            "slip_peak": {"prototype": self.slip_peak.prototype, "rig": self.slip_peak.rig},
             "compared_points": self.compared_points,
             "expansion_allowance": self.expansion_allowance,
-            "stress_amplitude": self.stress,
+            "stress_amplitude": {item.source: item.to_dict() for item in self.stress},
         }
 
 
@@ -150,7 +171,16 @@ def solve_edge(
         s=a2 - orientation * result.x,
         q_diff=second.shear - first.shear,
         slip=second.slip - first.slip,
+        a2=a2,
+        solution=result,
     )
+
+
+def _peak(solved: SolvedEdge, values: str) -> float:
+    """max |values| over the element centres of the solve's slip zone, 0 < s < a2 - b."""
+    inside = (solved.s > 0) & (solved.s < solved.reach)
+    chosen: FloatArray = getattr(solved, values)[inside]
+    return float(np.max(np.abs(chosen))) if chosen.size else math.nan
 
 
 def compared(prototype: SolvedEdge, rig: SolvedEdge) -> NDArray[np.bool_]:
@@ -222,6 +252,11 @@ def verify(
         result.law, result.cycle, result.mu, side, rig_elements, None, (-reach, reach)
     )
     expected = abs(result.rig_state.width - result.prototype_state.width)
+    asymptotes = asymptotic_amplitudes(result)
+    amplitudes = [
+        _solver_amplitude(solved, asymptotes.grid.global_x(solved.a2, side), asymptotes.grid.depth)
+        for solved in (solved, solved_rig)
+    ]
     return Verification(
         prototype=solved,
         rig=solved_rig,
@@ -233,7 +268,19 @@ def verify(
         expansion_allowance=max(
             _slip_zone_reach(result.prototype), _slip_zone_reach(result.rig_result)
         ),
+        stress=(asymptotes.comparison, solver_comparison(asymptotes, *amplitudes)),
     )
+
+
+def _solver_amplitude(solved: SolvedEdge, x: FloatArray, depth: FloatArray) -> StressField:
+    """The solver's amplitude, state 2 minus state 1, at the points: for a load path (a
+    prototype under a moment) its first two points, the matched cycle's states 1 and 2."""
+    from ..stress.solver_source import solver_stress
+
+    field = solver_stress(solved.solution, x, depth)
+    if field.amplitude is not None:
+        return field.amplitude
+    return field.states[1] - field.states[0]
 
 
 def _slip_zone_reach(edge: Any) -> float:
