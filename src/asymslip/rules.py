@@ -177,7 +177,7 @@ def _rule_table() -> dict[str, Rule]:
             "cycle",
             "at the {side} edge the stick boundary b = {b} lies outside the "
             "contact (0, a2]: the asymptotic solution is outside its range, eq25 = "
-            "|b - a1|/a1 = {eq25} is not small (eq24 = {eq24}, eq27 = {eq27})",
+            "|b - a1|/a1 = {eq25} is not small (eq24 = {eq24}, eq27 = {eq27}){note}",
         ),
         (
             "slip_zones_meet",

@@ -229,10 +229,10 @@ def test_loads_a_law_cannot_take_are_refused_by_name(call, words):
 
 
 def test_a_calibration_too_coarse_for_the_load_step_is_refused_with_the_reason():
-    """20 graded nodes on the flat-rounded law: the right edge is known only to several units at
-    P = 100 and 105, against an advance of about 0.1 between them, and its (17) has a negative
-    denominator.  The refusal must say that the data, not the physics, decide it, with numbers
-    that show it (the error larger than the advance)."""
+    """20 graded nodes on the flat-rounded law: the right edge is known only to a few units at
+    P = 100 and 105, against an advance of about 0.2 between them, and the b of its (17) falls
+    outside the contact.  The refusal must say that the data, not the physics, decide it, with
+    numbers that show it (the error larger than the advance)."""
     P1, Q1, P2, Q2 = CYCLE
     with pytest.raises(InputError) as refused:
         slip_zone(_law("flat-rounded", "graded", 20, 0.0, seed=21), LoadCycle(P1, Q1, P2, Q2), MU)
@@ -254,3 +254,25 @@ def test_an_error_the_variants_cannot_answer_is_infinite_not_zero():
         return 1.0
 
     assert calibrated.error_of(only_the_calibration_itself) == np.inf
+
+
+def test_a_load_whose_extrapolated_edge_is_no_number_is_refused_with_the_range():
+    """Issue 17: a(P) of an edge growing as P^1.5 (Hertz pressures of half-width 0.01 P^1.5,
+    balanced: the integral of p is P) extrapolated to P = 1e300 would be 1e448: inf, never a
+    number to use.  The refusal names the load and the calibrated loads."""
+    loads = (80.0, 90.0, 100.0, 110.0, 120.0)
+    x = np.linspace(-150.0, 150.0, 601)
+    p = []
+    for P in loads:
+        a = 0.01 * P**1.5
+        p.append(2 * P / (np.pi * a**2) * np.sqrt(np.maximum(a**2 - x**2, 0.0)))
+    traces = Traces.from_arrays(np.repeat(loads, x.size), np.tile(x, len(loads)), np.concatenate(p))
+    edge = CalibratedLaw(calibrate(traces, origin=0.0)).for_edge("right")
+    assert abs(float(edge.half_width(1e6)) / (0.01 * 1e9) - 1) < 0.01  # far, but a number
+    for call in (edge.half_width, edge.half_width_slope, lambda P: edge.half_width_growth(1e2, P)):
+        with pytest.raises(InputError) as refused:
+            call(1e300)
+        message = str(refused.value)
+        assert "P = 1e+300" in message and "calibrated loads [80, 120]" in message, message
+    with pytest.raises(InputError, match=r"P = 1e\+300 .* extrapolated L_I\(P\)"):
+        edge.normal_multiplier(1e300)

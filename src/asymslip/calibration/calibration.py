@@ -251,6 +251,7 @@ def _fit_to_dict(fit: EdgeFit, origin: float) -> dict[str, object]:
         "x_edge": fit.x_edge,
         "c": fit.c,
         "noise": fit.noise,
+        "noise_relative": fit.noise_relative,
         "last_node_used": fit.last_node_used,
         "notes": list(fit.notes),
     }
@@ -296,6 +297,12 @@ def _fit_from_dict(entry: object, side: Side, origin: float, name: str, fail) ->
         noise=_number(entry, "noise", at, non_negative=True),
         last_node_used=used,
         notes=tuple(notes),
+        # Files written before the scatter had a relative part: none.
+        noise_relative=(
+            _number(entry, "noise_relative", at, non_negative=True)
+            if "noise_relative" in entry
+            else 0.0
+        ),
     )
 
 

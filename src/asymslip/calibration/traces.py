@@ -30,7 +30,6 @@ Examples
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -40,7 +39,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..errors import InputError
-from .edge_fit import pressure_noise
+from .noise import pressure_noise
+from .xy_report import parse_xy_report
 
 FloatArray = NDArray[np.float64]
 Side = Literal["right", "left"]
@@ -235,14 +235,13 @@ def _from_fe(found: object) -> Traces:
 
 
 def read_fe_report(path: str | Path, loads: Sequence[float] | None = None) -> Traces:
-    """Read the tabular report an FE package writes for a surface path.
+    """Read the XY report an FE package writes for a surface path (Abaqus: Report > XY).
 
-    The format is whitespace-separated columns under a header line: the first column is the
-    position along the path (x or arc length), each further column the contact pressure
-    (CPRESS) at one load.  Several such blocks may follow each other (one report appended per
-    load, for instance); lines starting with ``*`` and blank lines are skipped, as are lines
-    of text between blocks.  The loads are given in the order of the pressure columns, or read
-    from headers that contain ``P=<number>``.
+    The first column is the position along the path (X: a coordinate or the true distance),
+    each further column the contact pressure (CPRESS) at one load, in one table or several
+    (see :mod:`asymslip.calibration.xy_report` for the layout Abaqus writes: headers, blank
+    lines, ``NoValue`` cells, repeated rows, appended reports).  The loads are given in the
+    order of the pressure columns, or read from headers that contain ``P=<number>``.
     """
     path = Path(path)
     return _read_report(path, _read_text(path), loads)
@@ -315,96 +314,11 @@ def _read_csv(path: Path, text: str) -> Traces:
     )
 
 
-_LOAD_IN_HEADER = re.compile(r"P\s*=\s*([-+0-9.eE]+)")
-
-
-def _numbers(line: str) -> list[float] | None:
-    try:
-        return [float(token) for token in line.split()]
-    except ValueError:
-        return None
-
-
 def _read_report(path: Path, text: str, loads: Sequence[float] | None) -> Traces:
-    """Blocks of numeric rows (x, p1, p2, ...) under header lines."""
-    blocks: list[dict] = []
-    header = ""
-    for number, line in enumerate(text.splitlines(), start=1):
-        stripped = line.strip()
-        if not stripped or stripped.startswith("*"):
-            continue
-        numbers = _numbers(stripped)
-        if numbers is None:
-            header = stripped
-            if blocks and not blocks[-1]["rows"]:
-                blocks[-1]["header"] = header
-            continue
-        if (
-            not blocks
-            or blocks[-1]["header"] != header
-            or (blocks[-1]["rows"] and blocks[-1]["width"] != len(numbers))
-        ):
-            if blocks and blocks[-1]["rows"] and blocks[-1]["header"] == header:
-                raise InputError(
-                    "traces",
-                    f"{path}: line {number}: {len(numbers)} numbers, the "
-                    f"rows above have {blocks[-1]['width']}",
-                )
-            blocks.append({"header": header, "rows": [], "values": [], "width": len(numbers)})
-        if len(numbers) < 2:
-            raise InputError(
-                "traces",
-                f"{path}: line {number}: a row needs the position and at least one pressure",
-            )
-        blocks[-1]["rows"].append(number)
-        blocks[-1]["values"].append(numbers)
-    blocks = [block for block in blocks if block["rows"]]
-    if not blocks:
-        raise InputError("traces", f"{path}: no rows of numbers (position, pressure, ...) found")
-    columns = [(block, j) for block in blocks for j in range(1, block["width"])]
-    if loads is None:
-        found: list[float] = []
-        for block in blocks:
-            # One 'P=<number>' per pressure column, in order, anywhere in the block's header.
-            named = _LOAD_IN_HEADER.findall(block["header"])
-            if len(named) != block["width"] - 1:
-                raise InputError(
-                    "traces",
-                    f"{path}: line {block['rows'][0]}: the pressure columns do not say their load "
-                    "(no 'P=<number>' per column in the header): give the loads, one per "
-                    "pressure column",
-                )
-            try:
-                found += [float(value) for value in named]
-            except ValueError:
-                raise InputError(
-                    "traces",
-                    f"{path}: line {block['rows'][0]}: the loads in the "
-                    f"header ({', '.join(named)}) are not numbers",
-                ) from None
-        loads = found
-    loads = list(loads)
-    if len(loads) != len(columns):
-        raise InputError(
-            "traces",
-            f"{path}: {len(columns)} pressure columns but {len(loads)} "
-            "loads given: give one load per pressure column",
-        )
-    P, x, p, rows = [], [], [], []
-    for (block, j), load in zip(columns, loads, strict=True):
-        table = np.array(block["values"], dtype=np.float64)
-        P.append(np.full(table.shape[0], float(load)))
-        x.append(table[:, 0])
-        p.append(table[:, j])
-        rows.append(np.array(block["rows"]))
-    return _assemble(
-        np.concatenate(P),
-        np.concatenate(x),
-        np.concatenate(p),
-        None,
-        np.concatenate(rows),
-        str(path),
-    )
+    """An XY report's tables (:mod:`.xy_report`), each pressure column one load's trace."""
+    table = parse_xy_report(str(path), text, loads)
+    traces = _assemble(table.P, table.x, table.p, None, table.rows, str(path))
+    return Traces(traces.traces, traces.source, table.notes)
 
 
 # --- checks --------------------------------------------------------------------------------------

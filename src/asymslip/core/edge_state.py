@@ -403,7 +403,11 @@ def _checked(
     a2 = state.a2
     inside = (b > 0) & (b <= a2)
     if not ops.everywhere(inside):
-        ops.require("b_range", inside, None, side=edge, b=b, eq25=eq25, eq24=eq24, eq27=eq27)
+        # A calibrated law that cannot resolve the load step says so (as for the denominator).
+        note = law.resolution_note(*ops.refused(inside, state.P1, state.P2))
+        ops.require(
+            "b_range", inside, None, side=edge, b=b, eq25=eq25, eq24=eq24, eq27=eq27, note=note
+        )
     flags = (
         disagree
         | NO_SLIP * sticks

@@ -143,14 +143,42 @@ class CalibratedEdge:
 
     # --- a(P) -------------------------------------------------------------------------------
     def half_width(self, P: ArrayLike) -> FloatArray:
-        """The edge's distance a(P) from the origin, along its outward direction."""
-        return np.exp(self._positions.evaluate(_log(P), 0)[0])
+        """The edge's distance a(P) from the origin, along its outward direction.
+
+        Raises
+        ------
+        InputError
+            For a load so far beyond the calibrated ones that the extrapolated a(P) is no
+            float (overflows to inf or underflows to 0): named with the calibrated range.
+        """
+        return self._representable(P, "a(P)", self._positions.evaluate(_log(P), 0)[0])
 
     def half_width_slope(self, P: ArrayLike) -> FloatArray:
         """a'(P) = (a/P) d(log a)/d(log P), > 0."""
         P = positive("P", P)
         s, ds = self._positions.evaluate(np.log(P))
-        return np.exp(s) * ds / P
+        return self._representable(P, "a(P)", s) * ds / P
+
+    def _representable(self, P: ArrayLike, quantity: str, log_value: FloatArray) -> FloatArray:
+        """exp(log_value), refusing the loads where it is inf or 0 (no number can be right).
+
+        An end power law of the fit extrapolated over hundreds of decades of load overflows;
+        the result would be inf (or 0) with a NumPy warning, never a value to use.
+        """
+        with np.errstate(over="ignore", under="ignore"):
+            value = np.exp(log_value)
+        bad = ~((value > 0) & np.isfinite(value))
+        if np.any(bad):
+            loads = np.broadcast_to(np.asarray(P, dtype=np.float64), value.shape)
+            load = float(loads[np.unravel_index(int(np.argmax(bad)), bad.shape)])
+            low, high = self.load_range
+            raise InputError(
+                "P",
+                f"P = {load:.6g} lies so far outside the calibrated loads [{low:.6g}, "
+                f"{high:.6g}] of the {self.side} edge that its extrapolated {quantity} is not "
+                "a representable number: give loads near the calibrated ones",
+            )
+        return value
 
     def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:
         """a(P1 + dP) - a(P1), free of cancellation however small dP/P1 is."""
@@ -160,7 +188,9 @@ class CalibratedEdge:
         if not np.all(change >= 0):
             raise InputError("dP", "must be >= 0 (the growth from P1 to P1 + dP)")
         increment = self._positions.increment(u1, np.log1p(change / P1))
-        return np.exp(self._positions.evaluate(u1, 0)[0]) * np.expm1(increment)
+        a1 = self._representable(P1, "a(P)", self._positions.evaluate(u1, 0)[0])
+        self.half_width(P1 + change)  # refuses a P2 whose a(P2) is no number
+        return a1 * np.expm1(increment)
 
     def load(self, a: ArrayLike) -> FloatArray:
         """P(a), inverting the fitted a(P) (it is strictly increasing)."""
@@ -215,14 +245,15 @@ class CalibratedEdge:
 
     # --- the multipliers --------------------------------------------------------------------
     def normal_multiplier(self, P: ArrayLike) -> FloatArray:
-        """L_I(P) of (4), fitted to the multipliers of the pressure data."""
-        return np.exp(self._multipliers.evaluate(_log(P), 0)[0])
+        """L_I(P) of (4), fitted to the multipliers of the pressure data (refused, as
+        :meth:`half_width`, where its extrapolation is no number)."""
+        return self._representable(P, "L_I(P)", self._multipliers.evaluate(_log(P), 0)[0])
 
     def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
         """dL_I/dP = (L_I/P) d(log L_I)/d(log P), for the validity measure (26)."""
         P = positive("P", P)
         s, ds = self._multipliers.evaluate(np.log(P))
-        return np.exp(s) * ds / P
+        return self._representable(P, "L_I(P)", s) * ds / P
 
     def contact_width(self, P: ArrayLike) -> FloatArray:
         """w(P) = a_right(P) + a_left(P); twice this edge's a if it is the only edge given."""
