@@ -717,6 +717,13 @@ def physics_cases() -> list[Bad]:
             r"does not exist",
         ),
         Bad(
+            "slip: exact b with bulk tension",
+            ("slip", *hertz(sigma2="0.01"), "--x", "11", "--b", "exact"),
+            "--b",
+            r"does not exist",
+        ),
+        Bad("slip --b weird", ("slip", *hertz(), "--x", "11", "--b", "weird"), "--b", "invalid"),
+        Bad(
             "traction: an edge that does not slip",
             ("traction", *hertz(Q2="0.4"), "--x", "11"),
             "--Q2",
@@ -2126,12 +2133,12 @@ def sweep_check(out: str, lam: list[float]) -> Callable[..., None]:
 
 def slip_check(points: list[float]) -> Callable[..., None]:
     """Fig. 5's cycle slips forward at the right edge: no slip in the stick zone (x < b), and
-    delta > 0 in the slip zone (the sign of q2 - q1; see ``asymslip slip --help``)."""
+    delta < 0 in the slip zone (opposite to q2 - q1 > 0; see ``asymslip slip --help``)."""
 
     def check(result: dict, folder: Path) -> None:
         assert result["x"] == points
         for x, delta in zip(result["x"], result["slip"], strict=True):
-            assert delta == 0 if x < result["b"] else delta > 0
+            assert delta == 0 if x < result["b"] else delta < 0
 
     return check
 

@@ -22,11 +22,14 @@ def test_the_traction_uses_the_headline_b_by_default():
     assert consistent.b == edge.b_paper != edge.b
 
 
-def test_the_slip_says_which_b_its_density_holds_for():
+def test_the_slip_uses_the_headline_b_by_default_and_says_when_it_does_not():
     edge = slip_zone(LAW, CYCLE, MU)
-    result = slip_displacement(LAW, CYCLE, MU, [11.2])
-    assert result.b == edge.b_paper
-    assert any("holds only for the stick boundary of (17)" in text for text in result.warnings)
+    default = slip_displacement(LAW, CYCLE, MU, [11.2])
+    assert (default.stick_boundary, default.b) == ("headline", edge.b)
+    assert not any("not at the headline b" in text for text in default.warnings)
+    consistent = slip_displacement(LAW, CYCLE, MU, [11.2], stick_boundary="consistent")
+    assert consistent.b == edge.b_paper != edge.b
+    assert any("not at the headline b" in text for text in consistent.warnings)
 
 
 @pytest.mark.parametrize("edge, x", [("left", 11.2), ("right", -11.2)])

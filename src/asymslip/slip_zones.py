@@ -12,7 +12,7 @@ when asked, so that 10^6 cycles cost no 10^6 lists of strings.
 from __future__ import annotations
 
 import math
-from typing import Literal, NamedTuple
+from typing import Any, Literal, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -100,14 +100,14 @@ def _scalar_result(
     """One cycle's edge; every number None (null in JSON) for an invalid cycle."""
     if not valid:
         state = _NOTHING
-    if type(state.a1) is float:  # the float path: Python floats already
-        a1, a2, lam, eta, L_I1, L_I2, L_II1, L_II2, b, width, accuracy = state[:11]
-    else:  # NumPy scalars, where Python's float arithmetic would have raised
-        a1, a2, lam, eta, L_I1, L_I2, L_II1, L_II2, b, width, accuracy = map(float, state[:11])
-    b_paper, b_first_order = float(state.b_paper), float(state.b_first_order)
-    b_exact, b_corrective_stick = float(state.b_exact), float(state.b_corrective_stick)
-    eq24, eq25, eq26, eq27 = state.eq24, state.eq25, state.eq26, state.eq27
-    return SlipZoneResult(
+    numbers: tuple[Any, ...] = state[:20]
+    flags = state.flags
+    if type(state.a1) is not float:  # NumPy scalars, where Python's float arithmetic raised
+        numbers = tuple(map(float, numbers))
+        flags = int(flags)
+    elif type(state.b_exact) is not float:  # a(P_K) from a law that computes on NumPy
+        numbers = (*numbers[:13], float(state.b_exact), *numbers[14:])
+    (
         a1,
         a2,
         lam,
@@ -119,18 +119,49 @@ def _scalar_result(
         b,
         width,
         accuracy,
-        # None (null in JSON) for an estimate not derived here (NaN)
-        b_paper if b_paper == b_paper else None,
-        b_first_order if b_first_order == b_first_order else None,
-        b_exact if b_exact == b_exact else None,
-        b_corrective_stick if b_corrective_stick == b_corrective_stick else None,
-        int(state.slip_direction) if valid else math.nan,
-        {"eq24": float(eq24), "eq25": float(eq25), "eq26": float(eq26), "eq27": float(eq27)},
-        int(state.flags),
-        law,
-        errors,
-        left,
+        b_paper,
+        b_first_order,
+        b_exact,
+        b_corrective_stick,
+        direction,
+        eq24,
+        eq25,
+        eq26,
+        eq27,
+    ) = numbers
+    # Built as the tuple it is (tuple.__new__), in field order: the named tuple's own __new__
+    # binds 21 arguments one by one, and one cycle is timed in microseconds.
+    return _new_result(
+        SlipZoneResult,
+        (
+            a1,
+            a2,
+            lam,
+            eta,
+            L_I1,
+            L_I2,
+            L_II1,
+            L_II2,
+            b,
+            width,
+            accuracy,
+            # None (null in JSON) for an estimate not derived here (NaN)
+            b_paper if b_paper == b_paper else None,
+            b_first_order if b_first_order == b_first_order else None,
+            b_exact if b_exact == b_exact else None,
+            b_corrective_stick if b_corrective_stick == b_corrective_stick else None,
+            int(direction) if valid else math.nan,
+            {"eq24": eq24, "eq25": eq25, "eq26": eq26, "eq27": eq27},
+            flags,
+            law,
+            errors,
+            left,
+        ),
     )
+
+
+#: A named tuple built from its fields in order, without its __new__ (see _scalar_result).
+_new_result = tuple.__new__
 
 
 def _array_result(

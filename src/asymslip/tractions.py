@@ -35,10 +35,13 @@ from .laws.base import ContactLaw, modulus_of
 StickBoundaryChoice = Literal["headline", "consistent", "exact"]
 Side = Literal["right", "left"]
 
-#: The slip sign convention, stated once (help texts and the README quote it).
+#: The slip sign convention, stated once (help texts, docstrings and the README quote it):
+#: the paper's (38) as the project fixes it -- q is the shear traction on the indenter, so
+#: friction on the indenter opposes the indenter's slip relative to the lower body.
 SLIP_CONVENTION = (
     "delta = the change from state 1 to state 2 of u_x(indenter) - u_x(lower body) at x, "
-    "along +x; in a slip zone it has the sign of q2 - q1"
+    "along +x; q being the traction on the indenter, Coulomb friction opposes the indenter's "
+    "slip, so in a slip zone delta has the sign opposite to q2 - q1"
 )
 
 #: Points within this fraction of a2 from the state-2 edge are "near the edge" (see above).
@@ -77,6 +80,7 @@ class SlipResult:
     x: list[float]
     slip: list[float]
     b: float
+    stick_boundary: str
     warnings: list[str]
 
     def to_dict(self) -> dict[str, object]:
@@ -133,6 +137,23 @@ def _other_half(points: NDArray[np.float64], outward: NDArray[np.float64], edge:
     ]
 
 
+def _stick_boundary(q: EdgeState, choice: StickBoundaryChoice) -> float:
+    """The stick boundary b of one edge for ``stick_boundary`` (see traction_difference)."""
+    if choice == "headline":
+        return float(q.b)
+    if choice == "consistent":
+        return float(q.b_consistent)  # (17)/(22): the b for which the density (15) solves (12)
+    if choice == "exact":
+        if np.isnan(float(q.b_exact)):
+            raise InputError(
+                "b",
+                "the exact stick boundary a(P_K) does not exist for this "
+                "cycle (it needs a symmetric law and eta = 0)",
+            )
+        return float(q.b_exact)
+    raise InputError("b", "must be 'headline', 'consistent' or 'exact'", choice)
+
+
 def traction_difference(
     law: ContactLaw,
     cycle: LoadCycle,
@@ -176,20 +197,7 @@ def traction_difference(
     evaluation = _one_cycle(law, cycle, mu)
     q = _edge_values(evaluation, side)
     points, outward = _positions(x, edge, float(q.a2))
-    if stick_boundary == "headline":
-        b = float(q.b)
-    elif stick_boundary == "consistent":
-        b = float(q.b_consistent)  # (17)/(22): the b for which the density (15) solves (12)
-    elif stick_boundary == "exact":
-        if np.isnan(float(q.b_exact)):
-            raise InputError(
-                "b",
-                "the exact stick boundary a(P_K) does not exist for this "
-                "cycle (it needs a symmetric law and eta = 0)",
-            )
-        b = float(q.b_exact)
-    else:
-        raise InputError("b", "must be 'headline', 'consistent' or 'exact'", stick_boundary)
+    b = _stick_boundary(q, stick_boundary)
     # Backward slip is forward slip of the reversed loads, with q_diff negated (edge_symmetry).
     direction = float(q.slip_direction)
     asymptotic = direction * shear_traction_difference(
@@ -260,16 +268,19 @@ def slip_displacement(
     x: ArrayLike,
     *,
     E_star: float | None = None,
+    stick_boundary: StickBoundaryChoice = "headline",
     edge: Side = "right",
 ) -> SlipResult:
     """Slip displacement accumulated on loading 1 -> 2 near one edge, from the density (15).
 
     Sign convention (:data:`SLIP_CONVENTION`, the one every command, file and docstring uses):
     delta(x) is the change from state 1 to state 2 of u_x(indenter) - u_x(lower body) at x,
-    along +x in the global frame.  In a slip zone it has the sign of q2 - q1 (Coulomb: the
-    sliding indenter drags the lower body along its own slip), as the reference solver's
-    ``slip.csv`` has it.  delta = 0 in the stick zone; unloading takes the same slip back, so
-    |delta| is the slip amplitude of the steady cycle (peak to peak).
+    along +x in the global frame.  q is the traction the lower body exerts on the indenter
+    (the paper's (38)), and Coulomb friction on the indenter opposes the indenter's slip
+    relative to the lower body, so in a slip zone delta has the sign opposite to q2 - q1:
+    forward slip at the right edge (q2 - q1 = mu (p2 + p1) > 0) gives delta < 0.  delta = 0
+    in the stick zone; unloading takes the same slip back, so |delta| is the slip amplitude
+    of the steady cycle (peak to peak).
 
     Parameters
     ----------
@@ -280,9 +291,25 @@ def slip_displacement(
     E_star
         Plane-strain modulus E* (the slip scales as 1/E*), for a law that does not define it
         (a table or module law); a law with its own E* is refused another.
+    stick_boundary
+        Where the slip starts: ``"headline"`` (default), the headline b of
+        :func:`asymslip.slip_zone` (b2); ``"consistent"``, (17)/(22)'s b, for which (15)
+        solves (12) exactly; ``"exact"``, a(P_K) (a symmetric law without tension).
 
-    The stick boundary is (17)'s (``b_paper``): the density (15) is derived for that b alone,
-    so ``b`` in the result is (17)'s, and a warning says so where the headline b differs.
+    Notes
+    -----
+    Accuracy of the default.  (15) solves the integral equation (12) exactly only for the b of
+    (17); evaluated with b = b2 its slip vanishes at the headline stick boundary (stated
+    accuracy (da/a1)^2 |a1 - b|) and differs from (15) with (17)'s b by the shift of the
+    stick boundary alone.  delta grows as (x - b)^(3/2) from b, so the shift changes the slip
+    near the edge by a relative (3/2) |b2 - b17| / (x - b): without bulk tension
+    |b2 - b17| is of second order, the order of b2's own correction, and so is the change
+    ((3/2) (da/a1)^2 at most); with bulk tension (17) is right to first order only (erratum
+    22-T) and the headline b is the better boundary.  Against the reference solver
+    (``tests/test_slip_displacement.py``, N = 2000, b < x < a1): on Fig. 5's cycle within
+    0.2 % of the largest slip; with tension (sigma2 = 0.2 on Fig. 5's loads) within 5.4 %
+    (5.9 % with (17)'s b), the edge asymptote's own first-order error, and zero where the
+    solver's slip is zero, where (17)'s b gives 0.7 % of the largest slip.
     """
     side = Edge.named(edge)
     evaluation = _one_cycle(law, cycle, mu)
@@ -305,13 +332,14 @@ def slip_displacement(
             )
     E_star = float(positive("E_star", E_star))
     points, outward = _positions(x, edge, float(q.a2))
+    b = _stick_boundary(q, stick_boundary)
     direction = float(q.slip_direction)
     # Along the edge's outward direction, then back to the global x (the left edge's outward
     # direction is -x, which flips the sign of a displacement measured along x).
     with np.errstate(all="ignore"):  # an overflow is refused below, not warned
         along = direction * slip_on_loading(
             outward,
-            float(q.b_consistent),
+            b,
             float(q.a1),
             mu,
             float(q.L_I1),
@@ -320,10 +348,10 @@ def slip_displacement(
             direction * float(q.L_II2),
             E_star,
         )
-        # slip_on_loading gives the lower body's displacement relative to the indenter's
-        # (derivations/section3_slip_displacement.py); delta is the indenter's relative to
-        # the lower body's, hence the minus.
-        slip = -side.sign * np.asarray(along, dtype=float) + 0.0  # + 0.0: no -0 printed
+        # The integral of (15) is delta itself in the edge's outward frame: for a forward
+        # slipping edge it is < 0 where q2 - q1 > 0, as Coulomb's law on the indenter wants
+        # (and as the reference solver's own displacements give, tests/test_slip_displacement.py).
+        slip = side.sign * np.asarray(along, dtype=float) + 0.0  # + 0.0: no -0 printed
         inverse_modulus = np.float64(1.0) / np.float64(E_star)
     if not np.isfinite(slip).all():
         if not np.isfinite(inverse_modulus):
@@ -337,15 +365,16 @@ def slip_displacement(
             "cycle", "the slip displacement overflows double precision at these positions"
         )
     warnings = warning_texts(int(q.flags), law.for_edge(side)) + _other_half(points, outward, side)
-    if float(q.b) != float(q.b_consistent):
+    if b != float(q.b):
         warnings.append(
-            f"the slip is integrated from (15), which holds only for the stick boundary of (17): "
-            f"b = {float(q.b_consistent):.12g} here, not the headline b = {float(q.b):.12g}"
+            f"the slip starts at the {stick_boundary} stick boundary b = {b:.12g}, not at the "
+            f"headline b = {float(q.b):.12g}"
         )
     return SlipResult(
         edge=side.value,
         x=points.tolist(),
         slip=slip.tolist(),
-        b=float(q.b_consistent),
+        b=b,
+        stick_boundary=stick_boundary,
         warnings=warnings,
     )

@@ -127,6 +127,7 @@ def draw_problem(
         "L_II2": L_II2,
         "b": b,
         "width": a1 - b,
+        "relative_growth": (a2 - a1) / a1,
         "dP_da1": dP_da1,
         "da_dP": 1 / dP_da1,
         "dL_I_dP": dL_I_dP,

@@ -1907,3 +1907,53 @@ register_quantity(
         ("21", "28"),
     )
 )
+
+
+# The slip direction (derivations/edge_symmetry.py, E3): forward where L_II2 > mu L_I2,
+# backward where L_II2 < -mu L_I2, none otherwise, as the module docstring states it.
+register_quantity(
+    Quantity(
+        "edge_symmetry.slip_direction",
+        ("mu", "L_I2", "L_II2"),
+        lambda mu, L_I2, L_II2: mpmath.mpf(
+            1 if L_II2 > mu * L_I2 else -1 if L_II2 < -mu * L_I2 else 0
+        ),
+        ("8", "11"),
+    )
+)
+
+# The stated accuracies (derivations/stated_accuracy.py), as its docstring states them.
+register_quantity(
+    Quantity(
+        "stated_accuracy.stick_boundary_accuracy",
+        ("relative_growth", "width"),
+        lambda relative_growth, width: relative_growth**2 * abs(width),
+        ("28",),
+    )
+)
+register_quantity(
+    Quantity(
+        "stated_accuracy.paper_stick_boundary_accuracy",
+        ("relative_growth", "width"),
+        lambda relative_growth, width: 2 * relative_growth**2 * abs(width),
+        ("22",),
+    )
+)
+register_quantity(
+    Quantity(
+        "stated_accuracy.stick_boundary_accuracy_first_order",
+        ("relative_growth", "width"),
+        lambda relative_growth, width: 2 * relative_growth * abs(width),
+        ("28", "40"),
+    )
+)
+register_quantity(
+    Quantity(
+        "stated_accuracy.disagreement_limit",
+        # Any non-negative lengths and a small rounding share: the problem's da, a2 - b.
+        ("accuracy=da", "other_accuracy=width", "a1", "rounding=relative_growth"),
+        lambda accuracy, other_accuracy, a1, rounding: accuracy + other_accuracy + rounding * a1,
+        ("22", "28", "40"),
+        where=lambda values: values["width"] >= 0,
+    )
+)

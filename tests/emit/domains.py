@@ -182,6 +182,31 @@ def _second_order_groups(draw: Draw) -> Points:
     return points
 
 
+def _slip_direction(draw: Draw) -> Points:
+    """Every direction: L_II2 from -3 mu L_I2 to 3 mu L_I2 (forward, none, backward)."""
+    points = draw.cycle()
+    points["L_II2"] = points["mu"] * points["L_I2"] * draw.uniform(-3.0, 3.0)
+    return points
+
+
+def _stated_accuracy(draw: Draw) -> Points:
+    """da/a1 of a cycle and a width a1 - b of either sign (its doc), up to twice the slip zone."""
+    points = draw.cycle()
+    points["relative_growth"] = points["da"] / points["a1"]
+    points["width"] = (points["a1"] - points["b"]) * draw.uniform(-1.0, 2.0)
+    return points
+
+
+def _disagreement_limit(draw: Draw) -> Points:
+    """Two non-negative accuracies (lengths of the order of the slip zone) and a rounding share."""
+    points = draw.cycle()
+    width = np.abs(points["a1"] - points["b"])
+    points["accuracy"] = width * draw.log_uniform(1e-9, 1.0)
+    points["other_accuracy"] = width * draw.log_uniform(1e-9, 1.0)
+    points["rounding"] = draw.log_uniform(1e-16, 1e-9)
+    return points
+
+
 def _in_slip_zone(draw: Draw) -> Points:
     """A cycle and x from below b (stick zone, where the result is 0) to just inside a2."""
     points = draw.cycle()
@@ -418,6 +443,12 @@ DOMAINS: Mapping[str, Callable[[Draw], Points]] = {
     "stick_boundary": _cycle,
     "dislocation_density": _in_slip_zone,
     "slip_on_loading": _in_slip_zone,
+    # edge_symmetry, stated_accuracy
+    "slip_direction": _slip_direction,
+    "stick_boundary_accuracy": _stated_accuracy,
+    "paper_stick_boundary_accuracy": _stated_accuracy,
+    "stick_boundary_accuracy_first_order": _stated_accuracy,
+    "disagreement_limit": _disagreement_limit,
     "contact_growth_measure": _cycle,
     "relative_slip_zone_measure": _cycle,
     "multiplier_growth_measure": _generic_slopes,

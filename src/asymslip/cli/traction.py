@@ -33,6 +33,13 @@ def _common(parser: argparse.ArgumentParser) -> None:
         default="right",
         help="which edge (default right, the paper's)",
     )
+    parser.add_argument(
+        "--b",
+        choices=["headline", "consistent", "exact"],
+        default="headline",
+        help="stick boundary: headline = slip-zone's b (b2, default), consistent = (17)/(22), "
+        "for which (15) solves (12), exact = a(P_K), the paper's choice for Fig. 5",
+    )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
 
 
@@ -47,13 +54,6 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
         "asymptote (49) is meant to hold; the cycle's warnings follow.",
     )
     _common(traction)
-    traction.add_argument(
-        "--b",
-        choices=["headline", "consistent", "exact"],
-        default="headline",
-        help="stick boundary in (49): headline = slip-zone's b (b2, default), consistent = "
-        "(17)/(22), for which (15) solves (12), exact = a(P_K), the paper's choice for Fig. 5",
-    )
     traction.set_defaults(run=run_traction)
     slip = commands.add_parser(
         "slip",
@@ -61,7 +61,9 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
         description="Slip displacement accumulated on loading from state 1 to state 2, the "
         f"integral of the dislocation density (15): {SLIP_CONVENTION}.  It is 0 in the stick "
         "zone; |delta| is the slip amplitude (peak to peak) of the steady cycle.  The slip "
-        "scales as 1/E*: a table or module law needs --E-star.",
+        "starts at the headline b by default (second-order accurate, as b itself); --b "
+        "consistent takes (17)'s.  The slip scales as 1/E*: a table or module law needs "
+        "--E-star.",
     )
     _common(slip)
     slip.set_defaults(run=run_slip)
@@ -109,12 +111,21 @@ def run_traction(args: argparse.Namespace) -> int:
 def run_slip(args: argparse.Namespace) -> int:
     law = build_law(args)
     result = slip_displacement(
-        law, build_cycle(args), args.mu, args.x, E_star=args.E_star, edge=args.edge
+        law,
+        build_cycle(args),
+        args.mu,
+        args.x,
+        E_star=args.E_star,
+        stick_boundary=args.b,
+        edge=args.edge,
     )
     if args.json:
         print(json.dumps(result.to_dict(), indent=2))
         return 0
-    print(f"slip displacement on loading near the {args.edge}-hand edge (b = {result.b:.12g})")
+    print(
+        f"slip displacement on loading near the {args.edge}-hand edge (b = {result.b:.12g}, "
+        f"{args.b} choice)"
+    )
     rows = [[f"{x:.12g}", f"{h:.12g}"] for x, h in zip(result.x, result.slip, strict=True)]
     print(_rows(["x", "slip delta"], rows))
     print(_warnings(result.warnings))

@@ -16,7 +16,10 @@ _EXPORTS = {
     "EquationCheck": ".formula",
     "EquationStep": ".derivation",
     "Formula": ".formula",
+    "Output": ".program",
+    "Program": ".program",
     "Status": ".formula",
+    "Step": ".program",
 }
 
 __all__ = sorted(_EXPORTS)

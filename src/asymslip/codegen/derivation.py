@@ -20,6 +20,7 @@ from pathlib import Path
 import sympy
 
 from .formula import Argument, EquationCheck, Formula, Status
+from .program import Output, Program, Step
 
 
 class DerivationError(AssertionError):
@@ -134,6 +135,7 @@ class Derivation:
     def __init__(self, script: str) -> None:
         self.source = f"derivations/{Path(script).name}"
         self.formulas: list[Formula] = []
+        self.programs: list[Program] = []
         self.checks: list[EquationCheck] = []
         self.module_docs: dict[str, str] = {}
 
@@ -190,3 +192,27 @@ class Derivation:
         )
         self.formulas.append(formula)
         return formula
+
+    def emit_program(
+        self,
+        *,
+        name: str,
+        args: Sequence[Argument],
+        steps: Sequence[Step],
+        outputs: Sequence[Output],
+        summary: str,
+        doc: str,
+    ) -> Program:
+        """Register a program: formulas (of any script) evaluated in one generated function
+        (:mod:`asymslip.codegen.program`)."""
+        program = Program(
+            name=name,
+            args=tuple(args),
+            steps=tuple(steps),
+            outputs=tuple(outputs),
+            summary=summary,
+            doc=doc,
+            source=self.source,
+        )
+        self.programs.append(program)
+        return program

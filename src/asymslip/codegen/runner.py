@@ -33,6 +33,9 @@ from .emit import format_sources, render_module, render_package_init
 from .formula import Formula
 from .languages import LANGUAGES
 from .loader import load_derivations_package
+from .program_emit import MODULE as PROGRAMS_MODULE
+from .program_emit import SCALAR_MODULE as SCALAR_PROGRAMS_MODULE
+from .program_emit import render_programs_module
 from .records import FILE as RECORDS_FILE
 from .records import render_records
 from .report import render_report
@@ -63,6 +66,7 @@ def run_derivations(directory: Path, *, progress: bool = True) -> DerivationRun:
         if not isinstance(derivation, Derivation):
             raise TypeError(f"{script}: derive() must return a Derivation")
         run.formulas.extend(derivation.formulas)
+        run.programs.extend(derivation.programs)
         run.checks.extend(derivation.checks)
         for module_name, doc in derivation.module_docs.items():
             if run.module_docs.get(module_name, doc) != doc:
@@ -143,6 +147,10 @@ def render_package(run: DerivationRun, reduced: Sequence[Reduced] | None = None)
         {module: [item.formula for item in items] for module, items in modules.items()}
     )
     sources[f"{SCALAR_MODULE}.py"] = render_scalar_module(reduced, run.module_docs)
+    if run.programs:
+        by_name = {item.formula.name: item for item in reduced}
+        for module, scalar in ((PROGRAMS_MODULE, False), (SCALAR_PROGRAMS_MODULE, True)):
+            sources[f"{module}.py"] = render_programs_module(run.programs, by_name, scalar)
     return format_sources(sources)
 
 

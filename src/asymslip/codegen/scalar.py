@@ -46,6 +46,13 @@ class ScalarCodePrinter(BranchFree, ReciprocalAsDivision, PythonCodePrinter):
         argument = self._print(expr.args[0])
         return f"((0.0 < {argument}) - ({argument} < 0.0))"
 
+    def _print_Abs(self, expr: sympy.Expr) -> str:
+        # abs(sign(x)) without the sign's own grouping parentheses doubled (ruff's UP034).
+        printed = self._print(expr.args[0])
+        if isinstance(expr.args[0], sympy.sign):
+            printed = printed[1:-1]
+        return f"abs({printed})"
+
 
 def _unprintable(printer: ScalarCodePrinter, reduced: Reduced) -> list[str]:
     failing = set()

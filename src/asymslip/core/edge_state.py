@@ -32,16 +32,9 @@ import math
 from typing import NamedTuple
 
 from ..edge import Edge
-from ..laws.base import ContactLaw, LawState, Number, gives_own_shear_multipliers
+from ..laws.base import ContactLaw, LawState, Number
 from ..rules import denominator_checks, finite
-from .estimates import (
-    DENOMINATOR_TOLERANCE,
-    EdgeEstimates,
-    disagreement_limits,
-    first_order_accuracy,
-    slip_direction,
-    stated_accuracy,
-)
+from .estimates import DENOMINATOR_TOLERANCE, EdgeEstimates
 from .flags import (
     BEYOND_A1,
     DISAGREE_CORRECTIVE_STICK,
@@ -125,29 +118,47 @@ def mirrored(edge: EdgeState) -> EdgeState:
     exactly (L_II = lam L_I by (21) with eta = 0); the checks and flags are the same.
     """
     a1, a2, lam, eta, L_I1, L_I2, L_II1, L_II2 = edge[:8]
-    mirror = (a1, a2, -lam, eta, L_I1, L_I2, -L_II1, -L_II2, *edge[8:15], -edge.slip_direction)
-    return EdgeState._make((*mirror, *edge[16:]))
+    return _new(
+        EdgeState,
+        (a1, a2, -lam, eta, L_I1, L_I2, -L_II1, -L_II2, *edge[8:15], -edge[15], *edge[16:]),
+    )
+
+
+def mirrored_shear(shear: Shear) -> Shear:
+    """The other edge's shear multipliers and slip direction where :func:`mirrored` applies:
+    (21) with eta = 0 is odd in lam, and so is the slip direction."""
+    L_II1, L_II2, direction = shear
+    return _new(Shear, (-L_II1, -L_II2, -direction))
 
 
 def shear_multipliers(
-    ops: Operations, law: ContactLaw, state: LawState, mu: Number, lam: Number, eta: Number
+    ops: Operations,
+    law: ContactLaw,
+    state: LawState,
+    mu: Number,
+    lam: Number,
+    eta: Number,
+    own: bool = False,
 ) -> Shear:
     """L_II1, L_II2 and the slip direction of one edge (``lam`` in its own frame).
 
-    By (21) for a symmetric contact; an edge that knows its own shear multiplier (an
+    By (21) for a symmetric contact; an edge that knows its own shear multiplier (``own``: an
     asymmetric contact's, AS3 of derivations/asymmetric_edge_multipliers.py) gives it itself.
     """
-    if gives_own_shear_multipliers(law):
-        L_II1 = law.shear_multiplier(state.P1, lam, eta)
-        L_II2 = law.shear_multiplier(state.P2, lam, eta)
-    else:
-        L_II1 = ops.kernels.shear_edge_multiplier_proportional(lam, eta, state.a1, state.L_I1)
-        L_II2 = ops.kernels.shear_edge_multiplier_proportional(lam, eta, state.a2, state.L_I2)
-    return Shear(L_II1, L_II2, slip_direction(mu, state.L_I2, L_II2))
+    if not own:  # (21), and the direction: one generated program (edge_programs.py)
+        return _new(
+            Shear,
+            ops.programs.edge_shear(mu, lam, eta, state.a1, state.a2, state.L_I1, state.L_I2),
+        )
+    L_II1: Number = law.shear_multiplier(state.P1, lam, eta)
+    L_II2: Number = law.shear_multiplier(state.P2, lam, eta)
+    if ops.scalar:  # a law on NumPy: 0-d results
+        L_II1, L_II2 = float(L_II1), float(L_II2)
+    return _new(Shear, (L_II1, L_II2, ops.kernels.slip_direction(mu, state.L_I2, L_II2)))
 
 
 def oriented(
-    ops: Operations, lam: Number, eta: Number, shear: Shear, other: Shear
+    ops: Operations, lam: Number, eta: Number, direction: Number, other_direction: Number
 ) -> tuple[Number, Number, Number]:
     """lam and eta in the edge's slip direction, and the other-edge factor of b2.
 
@@ -155,7 +166,6 @@ def oriented(
     differ in sign (the left edge's frame is mirrored); +1 too where it does not slip
     (derivations/second_order_slip_zone.py).
     """
-    direction, other_direction = shear.direction, other.direction
     # Where both edges slip (the common case) the factors are the directions themselves.
     if ops.everywhere((direction != 0) & (other_direction != 0)):
         return direction * lam, direction * eta, -direction * other_direction
@@ -176,24 +186,44 @@ def edge_state(
     shear: Shear,
     other: Shear,
     estimates: EdgeEstimates | None,
+    extrapolates: bool = True,
 ) -> EdgeState:
     """One edge from its estimates (None for an edge with its own multipliers), checked
-    against the rules of :mod:`asymslip.rules` and flagged."""
+    against the rules of :mod:`asymslip.rules` and flagged.
+
+    ``extrapolates``: False for a law known everywhere (no load of it is extrapolated), so
+    that its ``extrapolated`` is not asked.
+    """
     if estimates is None:
-        return _own_multipliers_edge(ops, law, state, mu, lam, eta, dP, edge, shear)
-    a1, da, P1 = state.a1, state.da, state.P1
-    slips = shear.direction != 0
+        return _own_multipliers_edge(ops, law, state, mu, lam, eta, dP, edge, shear, extrapolates)
+    a1, P1 = state.a1, state.P1
+    direction = shear[2]
+    slips = direction != 0
     # (22), the paper's headline, and the headline b2, as widths a1 - b (no cancellation);
     # where the edge does not slip: no slip zone, b = a1, and P_K = P1 (no permanent stick).
-    paper_width, width, P_K = estimates.paper_width, estimates.width, estimates.P_K
-    b_first_order = estimates.b_first_order
-    b_corrective_stick = a1 - estimates.corrective_stick_width
-    eq27 = estimates.eq27
+    (
+        paper_width,
+        denominator,
+        b_first_order,
+        width,
+        corrective_stick_width,
+        P_K,
+        eq24,
+        eq26,
+        eq27,
+        accuracy,
+        paper_limit,
+        first_limit,
+        stick_limit,
+        exact_limit,
+    ) = estimates
+    b_corrective_stick = a1 - corrective_stick_width
     if not ops.everywhere(slips):
         paper_width, width = ops.where(slips, paper_width, 0.0), ops.where(slips, width, 0.0)
         P_K, eq27 = ops.where(slips, P_K, P1), ops.where(slips, eq27, 0.0)
         b_first_order = ops.where(slips, b_first_order, a1)
         b_corrective_stick = ops.where(slips, b_corrective_stick, a1)
+        accuracy = ops.where(slips, accuracy, 0.0)
     b = a1 - width
     # Jaeger-Ciavarella: b = a(P_K) is exact for a symmetric law without bulk tension.
     exact = (eta == 0) & law.symmetric
@@ -202,14 +232,10 @@ def edge_state(
         b_exact = ops.where(exact, at_P_K, ops.missing(a1))
     else:
         b_exact = ops.missing(a1)
-    accuracy = stated_accuracy(a1, da, width)
     b_paper = a1 - paper_width
     # A flag is its bit times its condition: an int for one cycle, an array for many.
-    paper_limit, first_limit, stick_limit, exact_limit = disagreement_limits(
-        a1, da, width, accuracy
-    )
     disagree: Flags = WITH_TENSION * (eta != 0) | slips * (
-        OTHER_EDGE_STICKS * (other.direction == 0)
+        OTHER_EDGE_STICKS * (other[2] == 0)
         | _EXACT_BEYOND_A1 * (b_exact > a1)
         | DISAGREE_PAPER * (abs(b_paper - b) > paper_limit)
         | DISAGREE_FIRST_ORDER * (abs(b_first_order - b) > first_limit)
@@ -217,8 +243,7 @@ def edge_state(
         | DISAGREE_EXACT * (abs(b_exact - b) > exact_limit)
     )
     eq25 = abs(width) / a1
-    measures = (estimates.eq24, eq25, estimates.eq26, eq27)
-    checked = _checked(
+    b_paper, b_first_order, b_corrective_stick, flags = _checked(
         ops,
         law,
         state,
@@ -227,39 +252,55 @@ def edge_state(
         eta,
         edge,
         shear,
-        estimates.denominator,
+        denominator,
         b,
         width,
-        measures,
-        (b_paper, b_first_order, b_corrective_stick),
-        disagree,
-    )
-    # Positional, in the order of the fields: a record of 23 built by keyword costs three
-    # times as much, and one cycle is timed in microseconds.
-    return EdgeState(
-        a1,
-        state.a2,  # a2
-        lam,
-        eta,
-        state.L_I1,  # L_I1
-        state.L_I2,  # L_I2
-        shear.L_II1,  # L_II1
-        shear.L_II2,  # L_II2
-        b,
-        width,  # slip_zone_width
-        accuracy,  # b_accuracy
-        checked[0],  # b_paper
-        checked[1],  # b_first_order
-        b_exact,
-        checked[2],  # b_corrective_stick
-        shear.direction,  # slip_direction
-        estimates.eq24,  # eq24
+        eq24,
         eq25,
-        estimates.eq26,  # eq26
+        eq26,
         eq27,
-        P_K,
-        b_paper,  # b_consistent  ; (17)/(22): the b for which (15) solves (12)
-        checked[3],  # flags
+        b_paper,
+        b_first_order,
+        b_corrective_stick,
+        disagree | _extrapolation_flags(law, state) if extrapolates else disagree,
+    )
+    # Built as the tuple it is, in the order of the fields (tuple.__new__): a record of 23
+    # built through its __new__ binds 23 arguments one by one, and one cycle is timed in
+    # microseconds.
+    return _new(
+        EdgeState,
+        (
+            a1,
+            state.a2,
+            lam,
+            eta,
+            state.L_I1,
+            state.L_I2,
+            shear[0],  # L_II1
+            shear[1],  # L_II2
+            b,
+            width,  # slip_zone_width
+            accuracy,  # b_accuracy
+            b_paper,
+            b_first_order,
+            b_exact,
+            b_corrective_stick,
+            direction,  # slip_direction
+            eq24,
+            eq25,
+            eq26,
+            eq27,
+            P_K,
+            a1 - paper_width,  # b_consistent: (17)/(22), the b for which (15) solves (12)
+            flags,
+        ),
+    )
+
+
+def _extrapolation_flags(law: ContactLaw, state: LawState) -> Flags:
+    """The flags of the loads where the law is extrapolated (a table law beyond its data)."""
+    return EXTRAPOLATED_P1 * law.extrapolated(state.P1) | EXTRAPOLATED_P2 * law.extrapolated(
+        state.P2
     )
 
 
@@ -273,6 +314,7 @@ def _own_multipliers_edge(
     dP: Number,
     edge: Edge,
     shear: Shear,
+    extrapolates: bool,
 ) -> EdgeState:
     """An edge whose multipliers are its own (an asymmetric or calibrated contact).
 
@@ -308,7 +350,7 @@ def _own_multipliers_edge(
         kernels.slip_zone_growth_measure_from_multipliers(mu, L_I1, L_II1, a1, dP, worst_slope),
         0.0,
     )
-    checked = _checked(
+    _, b_first_order, _, flags = _checked(
         ops,
         law,
         state,
@@ -320,34 +362,43 @@ def _own_multipliers_edge(
         denominator,
         b,
         width,
-        (eq24, eq25, eq26, eq27),
-        (missing, ops.where(slips, first_order, a1), missing),
-        OWN_MULTIPLIERS_TENSION * (slips & (eta != 0)),
-    )
-    return EdgeState(
-        a1,
-        state.a2,  # a2
-        lam,
-        eta,
-        L_I1,
-        L_I2,
-        shear.L_II1,  # L_II1
-        shear.L_II2,  # L_II2
-        b,
-        width,  # slip_zone_width
-        first_order_accuracy(a1, da, width),  # b_accuracy
-        missing,  # b_paper
-        checked[1],  # b_first_order
-        missing,  # b_exact
-        missing,  # b_corrective_stick
-        shear.direction,  # slip_direction
         eq24,
         eq25,
         eq26,
         eq27,
-        missing,  # P_K
-        b,  # b_consistent  ; b is (17) in the edge's own multipliers
-        checked[3],  # flags
+        missing,
+        ops.where(slips, first_order, a1),
+        missing,
+        OWN_MULTIPLIERS_TENSION * (slips & (eta != 0))
+        | (_extrapolation_flags(law, state) if extrapolates else 0),
+    )
+    return _new(
+        EdgeState,
+        (
+            a1,
+            state.a2,
+            lam,
+            eta,
+            L_I1,
+            L_I2,
+            shear.L_II1,
+            shear.L_II2,
+            b,
+            width,  # slip_zone_width
+            kernels.stick_boundary_accuracy_first_order(da / a1, width),  # b_accuracy
+            missing,  # b_paper
+            b_first_order,
+            missing,  # b_exact
+            missing,  # b_corrective_stick
+            shear.direction,  # slip_direction
+            eq24,
+            eq25,
+            eq26,
+            eq27,
+            missing,  # P_K
+            b,  # b_consistent: b is (17) in the edge's own multipliers
+            flags,
+        ),
     )
 
 
@@ -368,39 +419,43 @@ def _checked(
     denominator: Number,
     b: Number,
     width: Number,
-    measures: tuple[Number, Number, Number, Number],
-    estimates: tuple[Number, Number, Number],
-    disagree: Flags,
+    eq24: Number,
+    eq25: Number,
+    eq26: Number,
+    eq27: Number,
+    b_paper: Number,
+    b_first_order: Number,
+    b_corrective_stick: Number,
+    flags: Flags,
 ) -> _Checked:
     """The rules the asymptotic solution must meet at this edge, and the warnings.
 
-    ``measures`` are eq24-eq27; ``estimates`` b_paper, b_first_order and b_corrective_stick,
-    each left out (NaN) where it falls outside the contact, and with it its disagreement flag
-    in ``disagree``.
+    ``eq24``-``eq27`` are the validity measures; ``b_paper``, ``b_first_order`` and
+    ``b_corrective_stick`` are each left out (NaN) where they fall outside the contact, and
+    with each its disagreement flag in ``flags`` (the flags found so far).
     """
-    sticks, slips = shear.direction == 0, shear.direction != 0
-    scale = 2 * mu * (state.L_I1 + state.L_I2) + abs(shear.L_II1) + abs(shear.L_II2)
+    L_II1, L_II2, direction = shear
+    sticks, slips = direction == 0, direction != 0
+    scale = 2 * mu * (state.L_I1 + state.L_I2) + abs(L_II1) + abs(L_II2)
     admits = sticks | (denominator > DENOMINATOR_TOLERANCE * scale)
     if not ops.everywhere(admits):
         note = law.resolution_note(*ops.refused(admits, state.P1, state.P2))
         # Named by the load change to blame (the tension's or the shear force's), not mu.
         for key, ok in denominator_checks(admits, mu, lam, eta, state.L_I1, state.L_I2):
             ops.require(key, ok, None, side=edge, denominator=denominator, mu=mu, note=note)
-    eq24, eq25, eq26, eq27 = measures
     # Non-finite results first: a b that overflowed is not "outside the contact".
-    first_order = estimates[1]
-    total = b + width + first_order + shear.L_II1 + shear.L_II2 + eq24 + eq25 + eq26 + eq27
-    if not ops.everywhere(finite(total)):
+    total = b + width + b_first_order + L_II1 + L_II2 + eq24 + eq25 + eq26 + eq27
+    if not ops.everywhere(total - total == 0):  # finite
         for key, value in (
             ("b", b),
             ("slip_zone_width", width),
-            ("b_first_order", first_order),
-            ("L_II1", shear.L_II1),
-            ("L_II2", shear.L_II2),
-            *zip(MEASURE_FLAGS, measures, strict=True),
+            ("b_first_order", b_first_order),
+            ("L_II1", L_II1),
+            ("L_II2", L_II2),
+            *zip(MEASURE_FLAGS, (eq24, eq25, eq26, eq27), strict=True),
         ):
             ops.require("result_finite", finite(value), None, side=edge, law=law.name, quantity=key)
-    a2 = state.a2
+    a1, a2 = state.a1, state.a2
     inside = (b > 0) & (b <= a2)
     if not ops.everywhere(inside):
         # A calibrated law that cannot resolve the load step says so (as for the denominator).
@@ -409,19 +464,16 @@ def _checked(
             "b_range", inside, None, side=edge, b=b, eq25=eq25, eq24=eq24, eq27=eq27, note=note
         )
     flags = (
-        disagree
+        flags
         | NO_SLIP * sticks
         | EQ24_LARGE * (eq24 > VALIDITY_THRESHOLD)
         | EQ25_LARGE * (eq25 > VALIDITY_THRESHOLD)
         | EQ26_LARGE * (eq26 > VALIDITY_THRESHOLD)
         | EQ27_LARGE * (eq27 > VALIDITY_THRESHOLD)
-        | EXTRAPOLATED_P1 * law.extrapolated(state.P1)
-        | EXTRAPOLATED_P2 * law.extrapolated(state.P2)
-        | _B_BEYOND_A1 * (slips & (b > state.a1))
+        | _B_BEYOND_A1 * (slips & (b > a1))
     )
     # An estimate outside the contact (0, a2] is no answer: left out (NaN), and so is its
     # disagreement with b (NaN, not derived here, is no estimate to leave out).
-    b_paper, b_first_order, b_corrective_stick = estimates
     if not ops.everywhere(
         ((b_paper > 0) & (b_paper <= a2) | (b_paper != b_paper))
         & ((b_first_order > 0) & (b_first_order <= a2) | (b_first_order != b_first_order))
@@ -430,7 +482,7 @@ def _checked(
             | (b_corrective_stick != b_corrective_stick)
         )
     ):
-        kept = list(estimates)
+        kept = [b_paper, b_first_order, b_corrective_stick]
         for index, (key, (_, disagreement)) in enumerate(ESTIMATES_CHECKED.items()):
             value = kept[index]
             inside = ((value > 0) & (value <= a2)) | (value != value)
@@ -438,10 +490,13 @@ def _checked(
             flags = ops.keep_flags(inside, flags, (flags & ~disagreement) | OUTSIDE_FLAGS[key])
         b_paper, b_first_order, b_corrective_stick = kept
     # A stick boundary beyond a1 where the edge slips: no slip zone inside a1 (in words).
-    a1 = state.a1
     flags = flags | slips * (
         _PAPER_BEYOND_A1 * (b_paper > a1)
         | _FIRST_BEYOND_A1 * (b_first_order > a1)
         | _STICK_BEYOND_A1 * (b_corrective_stick > a1)
     )
     return b_paper, b_first_order, b_corrective_stick, flags
+
+
+#: A named tuple built from its fields in order, without its __new__ (see :func:`edge_state`).
+_new = tuple.__new__

@@ -1,4 +1,4 @@
-"""The paper's estimates at one edge of a cycle: each generated kernel called once.
+"""The paper's estimates at one edge of a cycle: one call of the generated edge program.
 
 Everything is in the edge's own frame and slip direction (``lam``, ``eta`` oriented so that the
 edge slips forward; see :mod:`asymslip.core.edge_state`); what an edge that does not slip
@@ -21,21 +21,28 @@ from __future__ import annotations
 import sys
 from typing import NamedTuple
 
+from asymslip_gen.edge_symmetry import slip_direction
+
 from ..laws.base import LawState, Number
-from .flags import (
-    DISAGREE_CORRECTIVE_STICK,
-    DISAGREE_EXACT,
-    DISAGREE_FIRST_ORDER,
-    DISAGREE_PAPER,
-)
 from .operations import Operations
+
+__all__ = [
+    "DENOMINATOR_TOLERANCE",
+    "DISAGREEMENT_ROUNDING",
+    "EdgeEstimates",
+    "edge_estimates",
+    "slip_direction",
+]
 
 #: (17)'s denominator counts as zero below this many units in the last place of its terms.
 DENOMINATOR_TOLERANCE = 64 * sys.float_info.epsilon
+#: Two estimates of b this close, relative to a1, do not disagree (a few units in the last
+#: place of the slip-zone width's arithmetic; ``disagreement_limit`` of stated_accuracy.py).
+DISAGREEMENT_ROUNDING = 1e-12
 
 
 class EdgeEstimates(NamedTuple):
-    """Every estimate of one forward-slipping edge, as the generated kernels give them."""
+    """Every estimate of one forward-slipping edge, as the generated program gives them."""
 
     #: a1 - b by (22), cancellation-free (25).
     paper_width: Number
@@ -53,6 +60,14 @@ class EdgeEstimates(NamedTuple):
     eq24: Number
     eq26: Number
     eq27: Number
+    #: The stated accuracy of b2, (da/a1)^2 |a1 - b| (derivations/stated_accuracy.py).
+    accuracy: Number
+    #: How far (22), (28), (40) and a(P_K) may lie from b2 before they disagree: the two
+    #: stated accuracies added, and the rounding allowance.
+    paper_limit: Number
+    first_order_limit: Number
+    corrective_stick_limit: Number
+    exact_limit: Number
 
 
 def edge_estimates(
@@ -66,6 +81,10 @@ def edge_estimates(
 ) -> EdgeEstimates:
     """Every estimate of one edge, ``lam`` and ``eta`` oriented so that the edge slips forward.
 
+    One call of the generated program ``edge_estimates`` (``derivations/edge_programs.py``):
+    the formulas of (22), (28), (40), (33), b2, (24)-(27) and the stated accuracies, in one
+    text printed for NumPy and for Python floats.
+
     Parameters
     ----------
     ops
@@ -78,86 +97,28 @@ def edge_estimates(
         +1 when the other edge slips the same way in the global frame or does not slip, -1
         when it slips the opposite way (``derivations/second_order_slip_zone.py``).
     """
-    kernels = ops.kernels
-    a1, a2, da, L_I1, L_I2 = state.a1, state.a2, state.da, state.L_I1, state.L_I2
-    a_slope1 = 1.0 / state.load_slope1
-    worst_slope = ops.maximum(a_slope1, 1.0 / state.load_slope2)
-    worst_multiplier_slope = ops.maximum(abs(state.L_I_slope1), abs(state.L_I_slope2))
-    # b2 in the dimensionless groups of its derivation (derivations/second_order_slip_zone.py):
-    # each is of order one where the width is representable, though its dimensional terms
-    # (a1^3 eta^2 dL_I/dP dP, mu^2 ...) overflow for loads of 1e300 or mu = 1e-300.
-    root = a1**1.5
-    return EdgeEstimates(  # positional, in field order: a third of the cost of keywords
-        kernels.slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2),
-        kernels.stick_boundary_denominator(mu, lam, eta, a1, a2, L_I1, L_I2),
-        a1 * kernels.stick_ratio_first_order(mu, lam, eta, a1, dP, a_slope1),
-        a1
-        * kernels.slip_zone_width_second_order_dimensionless(
-            lam / mu,
-            eta * a1 / mu,
-            a_slope1 * dP / a1,
-            L_I1 * root / dP,
-            state.L_I_slope1 * root,
+    return _new(
+        EdgeEstimates,
+        ops.programs.edge_estimates(
+            mu,
+            lam,
+            eta,
+            state.a1,
+            state.a2,
+            state.da,
+            state.L_I1,
+            state.L_I2,
+            state.P1,
+            dP,
+            state.load_slope1,
+            state.load_slope2,
+            state.L_I_slope1,
+            state.L_I_slope2,
             other_edge,
+            DISAGREEMENT_ROUNDING,
         ),
-        kernels.corrective_stick_slip_zone_width(mu, lam, eta, a1, da, L_I1, dP),
-        kernels.permanent_stick_load(state.P1, dP, lam, mu),
-        kernels.contact_growth_measure(dP, worst_slope, a1),
-        kernels.multiplier_growth_measure(dP, worst_multiplier_slope, L_I1),
-        kernels.slip_zone_growth_measure(mu, lam, eta, a1, dP, worst_slope),
     )
 
 
-def stated_accuracy(a1: Number, da: Number, width: Number) -> Number:
-    """How far b (b2) may lie from the true stick boundary: (da/a1)^2 |a1 - b|.
-
-    Measured |C| <= 0.78 against the exact steady-state conditions, within 1.2 solver
-    elements (README, "How far to trust b").
-    """
-    growth = da / a1
-    return growth * growth * abs(width)
-
-
-def first_order_accuracy(a1: Number, da: Number, width: Number) -> Number:
-    """The stated accuracy of a first-order estimate ((28), (40), and (17) in an edge's own
-    multipliers): 2 (da/a1) |a1 - b|."""
-    return 2 * (da / a1) * abs(width)
-
-
-#: The estimates checked against b, in the order of :func:`disagreement_limits`, each with the
-#: warning flag it sets where it disagrees.
-DISAGREEMENTS = (
-    ("b_paper", DISAGREE_PAPER),
-    ("b_first_order", DISAGREE_FIRST_ORDER),
-    ("b_corrective_stick", DISAGREE_CORRECTIVE_STICK),
-    ("b_exact", DISAGREE_EXACT),
-)
-
-
-def disagreement_limits(
-    a1: Number, da: Number, width: Number, accuracy: Number
-) -> tuple[Number, Number, Number, Number]:
-    """How far each estimate of :data:`DISAGREEMENTS` may lie from b before they disagree.
-
-    The two stated accuracies added -- a second-order formula within twice b's, a first-order
-    one within 2 (da/a1) |a1 - b|, a(P_K) exact -- and 1e-12 a1 for rounding.
-    """
-    rounding = 1e-12 * a1
-    first_order_limit = first_order_accuracy(a1, da, width) + accuracy + rounding
-    return (
-        2 * accuracy + accuracy + rounding,
-        first_order_limit,
-        first_order_limit,
-        accuracy + rounding,
-    )
-
-
-def slip_direction(mu: Number, L_I2: Number, L_II2: Number) -> Number:
-    """+1 (forward), -1 (backward) or 0 (no slip) on loading at an edge.
-
-    Next to the state-2 edge (a1 < x < a2) the state-1 traction is zero, so loading slips there
-    iff |L_II2| > mu L_I2 (derivations/edge_symmetry.py).
-    """
-    capacity = mu * L_I2
-    direction: Number = 1.0 * (L_II2 > capacity) - 1.0 * (L_II2 < -capacity)
-    return direction
+#: A named tuple built from its fields in order, without its __new__.
+_new = tuple.__new__

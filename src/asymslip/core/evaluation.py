@@ -48,8 +48,8 @@ from ..laws.base import (
     LawState,
     Number,
     computes_on_floats,
-    gives_own_shear_multipliers,
     is_law,
+    law_traits,
 )
 from ..rules import Verdict, check_friction, check_partial_slip, finite
 from .edge_state import (
@@ -57,6 +57,7 @@ from .edge_state import (
     Shear,
     edge_state,
     mirrored,
+    mirrored_shear,
     missing_edge,
     oriented,
     shear_multipliers,
@@ -207,23 +208,36 @@ def _both_edges(
     left_law = right_law if symmetric else law.for_edge(Edge.LEFT)
     right_state = _law_state(ops, right_law, P1, dP)
     left_state = right_state if symmetric else _law_state(ops, left_law, P1, dP)
+    right_traits = law_traits(right_law)
+    left_traits = right_traits if symmetric else law_traits(left_law)
     # The left edge is the right edge of the mirrored cycle: lam -> -lam, eta kept.
-    right_shear = shear_multipliers(ops, right_law, right_state, mu, lam, eta)
-    left_shear = shear_multipliers(ops, left_law, left_state, mu, -lam, eta)
-    right, slopes = _edge(
+    right_shear = shear_multipliers(
+        ops, right_law, right_state, mu, lam, eta, right_traits.own_shear_multipliers
+    )
+    # A symmetric contact without bulk tension whose right edge slips is its own mirror image
+    # (derivations/edge_symmetry.py): the left edge slips the other way in its own frame, is
+    # asked exactly what the right edge was (the same oriented lam and other-edge factor), and
+    # is the right edge with lam, L_II and the direction negated -- not computed again.
+    mirror = (
+        symmetric
+        and not right_traits.own_shear_multipliers
+        and ops.everywhere((eta == 0) & (right_shear[2] != 0))
+    )
+    if mirror:
+        left_shear = mirrored_shear(right_shear)
+    else:
+        left_shear = shear_multipliers(
+            ops, left_law, left_state, mu, -lam, eta, left_traits.own_shear_multipliers
+        )
+    right = _edge(
         ops, right_law, right_state, mu, lam, eta, dP, Edge.RIGHT, right_shear, left_shear
     )
-    # One symmetric cycle without tension whose edges slip opposite ways in their own frames
-    # (the same oriented slopes): the left edge is the right one mirrored.
-    if ops.scalar and symmetric and eta == 0 and lam != 0 and slopes is not None:
-        left_slopes = oriented(ops, -lam, eta, left_shear, right_shear)
-        if left_slopes == slopes:
-            left = mirrored(right)
-            _check_meeting(ops, right, left)
-            return {Edge.RIGHT: right, Edge.LEFT: left}
-    left, _ = _edge(
-        ops, left_law, left_state, mu, -lam, eta, dP, Edge.LEFT, left_shear, right_shear
-    )
+    if mirror:
+        left = mirrored(right)
+    else:
+        left = _edge(
+            ops, left_law, left_state, mu, -lam, eta, dP, Edge.LEFT, left_shear, right_shear
+        )
     _check_meeting(ops, right, left)
     return {Edge.RIGHT: right, Edge.LEFT: left}
 
@@ -248,14 +262,16 @@ def _edge(
     edge: Edge,
     shear: Shear,
     other: Shear,
-) -> tuple[EdgeState, tuple[Number, Number, Number] | None]:
-    """One edge through the pipeline, with the oriented slopes its estimates were asked for
-    (None for an edge with its own multipliers, which has no such estimates)."""
-    if gives_own_shear_multipliers(law):
-        return edge_state(ops, law, state, mu, lam, eta, dP, edge, shear, other, None), None
-    slopes = lam_o, eta_o, other_edge = oriented(ops, lam, eta, shear, other)
+) -> EdgeState:
+    """One edge through the pipeline."""
+    own, extrapolates = law_traits(law)
+    if own:  # an edge with its own multipliers: no estimates of (21)'s
+        return edge_state(ops, law, state, mu, lam, eta, dP, edge, shear, other, None, extrapolates)
+    lam_o, eta_o, other_edge = oriented(ops, lam, eta, shear[2], other[2])
     estimates = edge_estimates(ops, mu, lam_o, eta_o, state, dP, other_edge)
-    return edge_state(ops, law, state, mu, lam, eta, dP, edge, shear, other, estimates), slopes
+    return edge_state(
+        ops, law, state, mu, lam, eta, dP, edge, shear, other, estimates, extrapolates
+    )
 
 
 def _check_meeting(ops: Operations, right: EdgeState, left: EdgeState) -> None:

@@ -27,7 +27,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 import asymslip_gen
+from asymslip_gen import programs as array_programs
 from asymslip_gen import scalar as scalar_kernels
+from asymslip_gen import scalar_programs
 
 from ..laws.base import Number
 from ..rules import Verdict
@@ -61,6 +63,9 @@ class Operations(Protocol):
 
     #: The generated kernels: ``asymslip_gen`` (arrays) or ``asymslip_gen.scalar`` (floats).
     kernels: ModuleType
+    #: The generated programs (several kernels in one call): ``asymslip_gen.programs`` or
+    #: ``asymslip_gen.scalar_programs``.
+    programs: ModuleType
     #: True for one cycle on Python floats.
     scalar: bool
 
@@ -88,6 +93,7 @@ class FloatOperations:
     first broken rule raised as :class:`RuleBroken`."""
 
     kernels: ModuleType = scalar_kernels
+    programs: ModuleType = scalar_programs
     scalar: bool = True
 
     def where(self, condition: Condition, yes: Number, no: Number) -> Number:
@@ -121,6 +127,7 @@ class ArrayOperations:
     element's first broken rule marked in ``verdict``."""
 
     kernels: ModuleType = asymslip_gen
+    programs: ModuleType = array_programs
     scalar: bool = False
 
     def __init__(self, verdict: Verdict) -> None:

@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import abc
 from dataclasses import dataclass
-from typing import Any, ClassVar, Literal, Protocol, TypeAlias, runtime_checkable
+from typing import Any, ClassVar, Literal, NamedTuple, Protocol, TypeAlias, runtime_checkable
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -391,20 +391,39 @@ def is_law(law: object) -> bool:
 _LAWS: dict[type, bool] = {}
 
 
-def gives_own_shear_multipliers(law: object) -> bool:
-    """True when an edge's law gives its own L_II (:meth:`ContactLaw.shear_multiplier`)."""
+class LawTraits(NamedTuple):
+    """What the slip-zone core asks of an edge's law class, decided once per class."""
+
+    #: The law gives its edges' own L_II (:meth:`ContactLaw.shear_multiplier`).
+    own_shear_multipliers: bool
+    #: The law may be extrapolated at a load (:meth:`ContactLaw.extrapolated` overridden, or
+    #: a law known per edge): False for a closed-form law, whose ``extrapolated`` is never
+    #: asked.
+    extrapolates: bool
+
+
+def law_traits(law: object) -> LawTraits:
+    """The :class:`LawTraits` of ``law``'s class (an ABC's and a protocol's isinstance cost
+    microseconds, so each class is examined once)."""
     kind = type(law)
-    own = _OWN_SHEAR_MULTIPLIERS.get(kind)
-    if own is None:  # once per class: an ABC's and a protocol's isinstance cost microseconds
+    traits = _TRAITS.get(kind)
+    if traits is None:
         if issubclass(kind, ContactLaw):
             own = kind.own_shear_multipliers
+            extrapolates = kind.extrapolated is not ContactLaw.extrapolated
         else:
             own = isinstance(law, _GivesShearMultiplier)
-        _OWN_SHEAR_MULTIPLIERS[kind] = own
-    return own
+            extrapolates = True
+        traits = _TRAITS[kind] = LawTraits(own, extrapolates)
+    return traits
 
 
-_OWN_SHEAR_MULTIPLIERS: dict[type, bool] = {}
+_TRAITS: dict[type, LawTraits] = {}
+
+
+def gives_own_shear_multipliers(law: object) -> bool:
+    """True when an edge's law gives its own L_II (:meth:`ContactLaw.shear_multiplier`)."""
+    return law_traits(law).own_shear_multipliers
 
 
 def modulus_of(law: object) -> float | None:

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
-import asymslip_gen.hertz
+from asymslip_gen import programs, scalar_programs
 from asymslip_gen import scalar as scalar_kernels
 from asymslip_gen.hertz import (
     hertz_half_width,
@@ -81,45 +81,24 @@ class HertzLaw(ContactLaw):
         return hertz_half_width_growth(P1, dP, self.R, self.E_star)
 
     def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
-        """Closed forms (29)-(31): no root solve, a2 - a1 without cancellation."""
-        # One cycle on Python floats: the math kernels (NumPy scalars take the NumPy ones).
-        scalar = type(P1) is float and type(dP) is float
-        if not scalar:
-            P1, dP = np.broadcast_arrays(
-                np.asarray(P1, dtype=np.float64), np.asarray(dP, dtype=np.float64)
-            )
-        R, E_star = self.R, self.E_star
-        if scalar:  # inside the core's errstate; one cycle skips the cost of its own
-            return self._closed_form_state(P1, dP, R, E_star, True)
-        with np.errstate(over="ignore"):  # overflow is marked by the rules, not warned
-            return self._closed_form_state(P1, dP, R, E_star, False)
+        """Closed forms (29)-(31): no root solve, a2 - a1 without cancellation.
 
-    @staticmethod
-    def _closed_form_state(
-        P1: FloatArray, dP: FloatArray, R: float, E_star: float, scalar: bool
-    ) -> LawState:
-        kernels = scalar_kernels if scalar else asymslip_gen.hertz
-        P2 = P1 + dP
-        a1 = kernels.hertz_half_width(P1, R, E_star)
-        da = kernels.hertz_half_width_growth(P1, dP, R, E_star)
-        a2 = a1 + da
-        # Every load P > 0 has a half-width; an overflow is caught by the finiteness rule.
-        found = True if scalar else np.ones(np.shape(a1), dtype=bool)
-        return LawState(
-            P1,
-            P2,
-            a1,
-            a2,
-            da,
-            kernels.hertz_normal_edge_multiplier(P1, R, E_star),
-            kernels.hertz_normal_edge_multiplier(P2, R, E_star),
-            kernels.hertz_load_slope(a1, R, E_star),
-            kernels.hertz_load_slope(a2, R, E_star),
-            kernels.hertz_normal_edge_multiplier_slope(P1, R, E_star),
-            kernels.hertz_normal_edge_multiplier_slope(P2, R, E_star),
-            found,
-            found,
+        One call of the generated program ``hertz_cycle_state`` (``derivations/
+        edge_programs.py``): on Python floats for one cycle (the ``math`` kernels), on NumPy
+        arrays for many.
+        """
+        R, E_star = self.R, self.E_star
+        if type(P1) is float and type(dP) is float:  # inside the core's errstate
+            P2, a1, a2, da, *rest = scalar_programs.hertz_cycle_state(P1, dP, R, E_star)
+            return LawState(P1, P2, a1, a2, da, *rest, True, True)
+        P1, dP = np.broadcast_arrays(
+            np.asarray(P1, dtype=np.float64), np.asarray(dP, dtype=np.float64)
         )
+        with np.errstate(over="ignore"):  # overflow is marked by the rules, not warned
+            P2, a1, a2, da, *rest = programs.hertz_cycle_state(P1, dP, R, E_star)
+        # Every load P > 0 has a half-width; an overflow is caught by the finiteness rule.
+        found = np.ones(np.shape(a1), dtype=bool)
+        return LawState(P1, P2, a1, a2, da, *rest, found, found)
 
     def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
         return hertz_normal_edge_multiplier(self.load(a), self.R, self.E_star)

@@ -40,6 +40,11 @@ class CGeneratedPrinter(BranchFree, C99CodePrinter):
     def _print_Pi(self, expr: sympy.Expr) -> str:
         return PI_NAME
 
+    def _print_sign(self, expr: sympy.Expr) -> str:
+        # SymPy's C sign is an int expression; fabs of an int is an error under -Werror.
+        argument = self._print(expr.args[0])
+        return f"((double)(((({argument}) > 0)) - ((({argument}) < 0))))"
+
 
 def _comment_safe(text: str) -> str:
     """Prose inside a C comment: "E*/2" would end the comment, so "*/" gets a space."""
