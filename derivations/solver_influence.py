@@ -36,8 +36,7 @@ that (29) reads a^2 = 4 P R/(pi E*)):
   dw/dx = -(2/(pi E*)) int p(t)/(x - t) dt;
 * q(x) is the shear traction the indenter exerts on the lower body (along +x), Q = int q dx;
   the indenter carries -q.  The relative tangential displacement s = u_x2 - u_x1 (the
-  indenter relative to the lower body: the project's slip) has ds/dx = +(2/(pi E*)) int
-  q(t)/(x - t) dt;
+  indenter relative to the lower body) has ds/dx = +(2/(pi E*)) int q(t)/(x - t) dt;
 * the differential bulk tension sigma = sigma_2 - sigma_1 (the indenter's bulk tension minus
   the lower body's) adds ds/dx = sigma/(2 E*).
 
@@ -54,7 +53,11 @@ lower body pulls its surface outward, the indenter holds it back with a traction
 x > 0, and K_II = Q/(pi sqrt(2a)) - (sigma_L/4) sqrt(a/2).  The paper's (20), (21) and (38),
 and the asymptotic formulas derived from them, carry +sigma: the sign of sigma above, the
 indenter's bulk tension minus the lower body's (equivalently, a tension of the lower body with
-q taken as the traction on the indenter).
+q taken as the traction on the indenter).  The project's convention is the second reading: the
+solver (``asymslip.solver.conventions``) takes body 1 to be the indenter, so that q is the
+traction on the indenter, sigma the lower body's bulk tension minus the indenter's, and the
+slip it reports is delta = u_x(indenter) - u_x(lower body) = -s, opposite in sign to the change
+of q in a slip zone.
 
 Integrating the point-force relations over one element (u = x_i - t, k = (x_i - x_j)/h an
 integer): the displacement of a log kernel, made definite by a reference length ell,

@@ -15,7 +15,6 @@ import numpy as np
 import pytest
 
 from asymslip import HertzLaw, LoadCycle, slip_zone
-from asymslip.solver.conventions import CONVENTIONS
 from asymslip.tractions import slip_displacement, traction_difference
 from tests.transcription.section2 import eq15
 
@@ -50,11 +49,6 @@ def slip_by_quadrature(x: float, edge, b: float) -> float:
 TENSION = LoadCycle(100.0, 0.0, 105.0, 1.0, 0.0, 0.2)  # Fig. 5's loads, sigma2 = 0.2, no doubt
 ELEMENTS = 2000
 
-#: The reference solver on main reported -delta (the sign of q2 - q1) until branch solver's
-#: fix; its conventions say which it reports, so these comparisons hold on either side of
-#: that merge.  The sign itself is checked against the solver in the test that follows.
-SOLVER_REPORTS_DELTA = "opposite to q2 - q1" in CONVENTIONS["slip"]
-
 
 @functools.cache
 def solver_delta(cycle: LoadCycle):
@@ -64,7 +58,7 @@ def solver_delta(cycle: LoadCycle):
     solved = solve(LAW, cycle, MU, elements=ELEMENTS)
     loaded = solved.states[1]
     assert loaded.label == "2"
-    return solved.x, loaded.slip if SOLVER_REPORTS_DELTA else -loaded.slip
+    return solved.x, loaded.slip  # delta, as asymslip.solver.conventions states
 
 
 @pytest.mark.parametrize("choice", ["headline", "consistent"])
@@ -115,11 +109,6 @@ def test_both_edges_slip_the_same_way_in_the_global_frame_when_the_shear_force_g
     assert right < 0 and left == pytest.approx(right, rel=1e-14)  # symmetric contact, eta = 0
 
 
-@pytest.mark.xfail(
-    not SOLVER_REPORTS_DELTA,
-    strict=True,
-    reason="the solver reports -delta until branch solver's sign fix is merged",
-)
 def test_the_slip_is_the_reference_solvers_slip_csv_in_sign_and_size():
     # The solver's slip.csv column slip_2: u_x(indenter) - u_x(lower body) accumulated from
     # state 1 to state 2 (asymslip.solver.conventions), the same convention.

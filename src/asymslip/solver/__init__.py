@@ -33,12 +33,13 @@ max_cycles=20, domain=None) -> SolverResult``
 
 Conventions (:mod:`asymslip.solver.conventions`, every output states them in these words):
 x from the contact centre (the profile's origin), b and a measured outward from it (right
-edge: x; left edge: -x), as ``slip-zone``; q the shear traction exerted by the indenter on the
-lower body's surface, along +x (int q dx = Q); the slip the change of u_x(indenter) -
-u_x(lower body), along +x, since point 1 of the steady period -- in a slip zone it has the sign
-of q2 - q1; sigma the differential bulk tension with the sign of the paper's (20) and (38)
-(Q and sigma both raise K_II at the right edge), which with q so defined is the indenter's
-bulk tension minus the lower body's (``derivations/solver_influence.py``).
+edge: x; left edge: -x), as ``slip-zone``; q the shear traction exerted on the indenter by the
+lower body, along +x (int q dx = Q, the shear force on the indenter; the lower body carries
+-q); the slip delta the change of u_x(indenter) - u_x(lower body), along +x, since point 1 of
+the steady period -- in a slip zone it has the sign opposite to q2 - q1 (friction on the
+indenter opposes its slip); sigma the differential bulk tension with the sign of the paper's
+(20) and (38) (Q and sigma both raise K_II at the right edge): the lower body's bulk tension
+minus the indenter's (``derivations/solver_influence.py``).
 
 Examples
 --------

@@ -56,7 +56,8 @@ class InfluenceOperators:
 
     ``gap`` is W(i - j), the opening of the gap per unit pressure (positive definite);
     ``slip`` is S(i - j), the relative tangential displacement u_x2 - u_x1 per unit shear
-    traction on the upper body; S = -W, and the tangential problem minimises with -S.  The
+    traction on body 1, the indenter (so minus the slip delta: conventions); S = -W, and the
+    tangential problem minimises with -S.  The
     reference length of the logarithm is the grid's length, which keeps both definite.
     """
 
@@ -64,10 +65,15 @@ class InfluenceOperators:
         self.grid = grid
         self.E_star = E_star
         h, ell = grid.width, grid.length
-        self.gap = ToeplitzOperator(lambda k: gap_opening_influence(k, h, ell, E_star), grid.count)
+        # The kernels are typed to return a scalar for scalar input; k is an array here.
+        self.gap = ToeplitzOperator(
+            lambda k: np.asarray(gap_opening_influence(k, h, ell, E_star), dtype=np.float64),
+            grid.count,
+        )
         # The tangential problem's Hessian is -S, positive definite.
         self.slip_stiffness = ToeplitzOperator(
-            lambda k: -relative_slip_influence(k, h, ell, E_star), grid.count
+            lambda k: -np.asarray(relative_slip_influence(k, h, ell, E_star), dtype=np.float64),
+            grid.count,
         )
 
     def relative_slip(self, shear: FloatArray) -> FloatArray:

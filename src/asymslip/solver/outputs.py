@@ -4,16 +4,17 @@ Files (each written beside and renamed into place by :func:`asymslip.files.atomi
 so an interrupted run leaves no truncated file):
 
 ``tractions.csv``
-    x, then for each path point k: ``p_k`` (pressure), ``q_k`` (shear traction exerted by the
-    indenter on the lower body, along +x), ``state_k`` (0 stick, +1/-1 slipping along +x/-x,
-    blank out of contact); for the paper's cycle also ``q_diff`` = q_2 - q_1 (46).
+    x, then for each path point k: ``p_k`` (pressure), ``q_k`` (shear traction exerted on the
+    indenter by the lower body, along +x), ``state_k`` (0 stick, +1/-1 slipping with q_k =
+    +mu p_k / -mu p_k, blank out of contact); for the paper's cycle also ``q_diff`` = q_2 - q_1
+    (46).
 ``slip.csv``
     x, ``slip_k`` (the change of u_x(indenter) - u_x(lower body) since point 1 of the steady
-    period: for the paper's cycle ``slip_2`` is the slip from state 1 to state 2, of the sign
-    of q_2 - q_1 in a slip zone), ``slip_range`` (peak to peak over the period) and
+    period: for the paper's cycle ``slip_2`` is the slip delta from state 1 to state 2, of the
+    sign opposite to q_2 - q_1 in a slip zone), ``slip_range`` (peak to peak over the period) and
     ``slip_amplitude`` (half of it).
 ``energy.csv``
-    x, ``energy``: frictional energy dissipated per period per unit area, int q ds.
+    x, ``energy``: frictional energy dissipated per period per unit area, -int q d(delta).
 ``solver.png``
     the three, one panel each (matplotlib, the ``plot`` extra, imported only here).
 
@@ -135,12 +136,12 @@ def _draw(result: SolverResult, target: Any) -> None:
             position = edge.b if side == "right" else -edge.b
             for axes in (traction, slip, energy):
                 axes.axvline(position, color="0.8", linewidth=0.8, zorder=0)
-    traction.set_ylabel("q: indenter on lower body")
+    traction.set_ylabel("q: on the indenter")
     slip.set_ylabel("slip: u_x(indenter) - u_x(lower)")
     energy.set_ylabel("energy per period")
     energy.set_xlabel(
         "x from the contact centre (grey: permanent stick boundaries); slip since point 1, "
-        "of the sign of q2 - q1 in a slip zone",
+        "opposite in sign to q2 - q1 in a slip zone",
         fontsize="small",
     )
     traction.legend(fontsize="small", frameon=False, ncol=2)

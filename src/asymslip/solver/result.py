@@ -6,10 +6,11 @@ contact centre of a symmetric profile) along the edge's outward direction -- the
 x, minus the left edge's x.  A boundary's error is a bound of at least one element width
 (:mod:`asymslip.solver.boundaries`).
 
-Slip direction of an edge (+1, -1 or 0), as in ``slip-zone``: +1 when the edge slips outward
-(the traction q on the lower body, and the slip, the indenter's motion relative to it, point
-away from the contact centre) -- forward slip; -1 inward; 0 when the edge does not slip
-(conventions: :mod:`asymslip.solver.conventions`).  It is the
+Slip direction of an edge (+1, -1 or 0), as in ``slip-zone``: +1 when the traction q on the
+indenter points away from the contact centre in the edge's slip zone (so the indenter slips
+toward the centre relative to the lower body: the slip delta points inward) -- forward slip;
+-1 the other way; 0 when the edge does not slip (conventions:
+:mod:`asymslip.solver.conventions`).  It is the
 direction of the element just outside the permanent stick zone at the point of largest P
 (state 2 of the paper's cycle, i.e. on loading); 0 when that element does not slip there,
 as when only the annulus a1 < |x| < a2 slips (|lambda| < mu, eta = 0).  Each state also
@@ -70,7 +71,7 @@ class StateResult:
     shear: FloatArray
     contact: NDArray[np.bool_]
     slip_sign: NDArray[np.int8]  # +1/-1 slipping, 0 stuck or out of contact
-    slip: FloatArray  # slip accumulated since the period's first point
+    slip: FloatArray  # delta accumulated since the period's first point (conventions)
     approach: float  # rigid approach delta of the normal problem
     tilt: float  # rigid tilt theta (the gap is h(x) - delta - theta x + opening)
     right: EdgeState

@@ -134,7 +134,9 @@ def build_result(
     normals = {id(record.normal): record.normal for record in records}.values()
     in_contact_always = np.logical_and.reduce([normal.contact for normal in normals])
     slips = np.zeros(count, dtype=bool)
-    # The relative slip accumulated from point 1, its extremes over the period, the energy.
+    # The slip delta accumulated from point 1, its extremes over the period, the energy.  The
+    # steps record the derivation's s = u_x(body 2) - u_x(body 1), body 1 carrying q: here the
+    # indenter (conventions), so delta = u_x(indenter) - u_x(lower body) = -s.
     slip = np.zeros(count)
     highest = np.zeros(count)
     lowest = np.zeros(count)
@@ -144,7 +146,7 @@ def build_result(
     for i, record in enumerate(records):
         moved = record.slip
         slips[moved.index[moved.sign != 0]] = True
-        slip[moved.index] += moved.increment
+        slip[moved.index] -= moved.increment
         highest[moved.index] = np.maximum(highest[moved.index], slip[moved.index])
         lowest[moved.index] = np.minimum(lowest[moved.index], slip[moved.index])
         energy[moved.index] += moved.energy

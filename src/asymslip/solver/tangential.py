@@ -1,10 +1,11 @@
 """One load step of the tangential problem: stick, slip and the shear tractions.
 
-Conventions (:mod:`asymslip.solver.conventions`, derived in ``derivations/solver_influence.py``):
-q(x) is the shear traction the indenter exerts on the lower body, along +x, Q = int q dx;
-s = u_x(indenter) - u_x(lower body) is their relative tangential displacement, whose change
-is the slip; sigma is the indenter's bulk tension minus the lower body's (the sign of the
-paper's (38)).  Then
+Conventions (:mod:`asymslip.solver.conventions`, derived in ``derivations/solver_influence.py``
+for a body 1 carrying q and a body 2 carrying -q, here the indenter and the lower body): q(x)
+is the shear traction the lower body exerts on the indenter, along +x, Q = int q dx;
+s = u_x(lower body) - u_x(indenter) is their relative tangential displacement (minus the
+reported slip delta, which :mod:`.steady` accumulates); sigma is the lower body's bulk tension
+minus the indenter's (the sign of the paper's (38)).  Then
 
     s_i = (S q)_i + sigma x_i/(2 E*) + c,
 
@@ -12,7 +13,7 @@ with S = -W the generated slip influence matrix and c a rigid shift.  Over one l
 with the pressure p of the step's end, Coulomb's law on every element in contact reads
 
     stick:  Delta s_i = 0,          |q_i| <= mu p_i,
-    slip:   q_i = +-mu p_i,         Delta s_i of the same sign as q_i,
+    slip:   q_i = +-mu p_i,         Delta s_i of the same sign as q_i (Delta delta_i opposite),
 
 with sum q_i h_el = Q.  These are the optimality conditions of the strictly convex programme
 
