@@ -51,9 +51,25 @@ def sweep_command(cases: Path, out: Path, *options: str) -> list[str]:
     ]
 
 
+def _as_in_a_terminal() -> None:
+    """The child's SIGINT as a terminal gives it (Ctrl-C raises KeyboardInterrupt).
+
+    A job started in the background by a non-interactive shell -- as CI may run this suite --
+    inherits SIGINT *ignored*, and Python then installs no KeyboardInterrupt handler: the sweep,
+    rightly, runs to its end.  The test is about what Ctrl-C does, so it sets the default.
+    """
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def start_sweep(cases: Path, out: Path) -> subprocess.Popen[str]:
     command = sweep_command(cases, out, "--chunk-rows", "2000")
-    return subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    return subprocess.Popen(
+        command,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        preexec_fn=_as_in_a_terminal,
+    )
 
 
 def partials(folder: Path) -> list[Path]:
