@@ -37,7 +37,17 @@ from .roots import (
 
 
 @dataclass(frozen=True)
-class FlatRoundedLaw(ContactLaw):
+class _FlatRoundedParameters:
+    """The checked parameters of :class:`FlatRoundedLaw`: set once, by the generated
+    constructor."""
+
+    c: float
+    R: float
+    E_star: float
+
+
+@dataclass(frozen=True, init=False)
+class FlatRoundedLaw(_FlatRoundedParameters, ContactLaw):
     """Flat face of half-width c with corners of radius R, on a half-plane of modulus E*.
 
     P(a) = E* (a^2 psi - c sqrt(a^2 - c^2)) / (2R), psi = arccos(c/a): any load P > 0 gives
@@ -69,17 +79,13 @@ class FlatRoundedLaw(ContactLaw):
     0.05
     """
 
-    c: float
-    R: float
-    E_star: float
     name = "flat-rounded"
 
-    def __post_init__(self) -> None:
-        flat = law_parameter("c", self.c)
+    def __init__(self, c: float, R: float, E_star: float) -> None:
+        # Checked and made Python floats before the frozen record is built: nothing set twice.
+        flat = law_parameter("c", c)
         require(flat >= 0, "c", "must be >= 0 (the half-width of the flat face)", flat)
-        object.__setattr__(self, "c", flat)
-        object.__setattr__(self, "R", positive_parameter("R", self.R))
-        object.__setattr__(self, "E_star", positive_parameter("E_star", self.E_star))
+        super().__init__(flat, positive_parameter("R", R), positive_parameter("E_star", E_star))
 
     def load(self, a: ArrayLike) -> FloatArray:
         """P(a); zero for a <= c."""

@@ -26,7 +26,15 @@ from .parameters import positive_parameter
 
 
 @dataclass(frozen=True)
-class HertzLaw(ContactLaw):
+class _HertzParameters:
+    """The checked parameters of :class:`HertzLaw`: set once, by the generated constructor."""
+
+    R: float
+    E_star: float
+
+
+@dataclass(frozen=True, init=False)
+class HertzLaw(_HertzParameters, ContactLaw):
     """Cylinder of radius R on a half-plane, plane-strain modulus E*: a^2 = 4 P R / (pi E*).
 
     Parameters
@@ -49,14 +57,12 @@ class HertzLaw(ContactLaw):
     11.283792
     """
 
-    R: float
-    E_star: float
     name = "hertz"
     floats_only = True  # one cycle: the math kernels throughout
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "R", positive_parameter("R", self.R))
-        object.__setattr__(self, "E_star", positive_parameter("E_star", self.E_star))
+    def __init__(self, R: float, E_star: float) -> None:
+        # Checked and made Python floats before the frozen record is built: nothing set twice.
+        super().__init__(positive_parameter("R", R), positive_parameter("E_star", E_star))
 
     def load(self, a: ArrayLike) -> FloatArray:
         return hertz_load(a, self.R, self.E_star)

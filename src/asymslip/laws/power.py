@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -60,7 +61,16 @@ def _hyp2f1():
 
 
 @dataclass(frozen=True)
-class PowerLaw(ContactLaw):
+class _PowerParameters:
+    """The checked parameters of :class:`PowerLaw`: set once, by the generated constructor."""
+
+    A: float
+    n: float
+    E_star: float
+
+
+@dataclass(frozen=True, init=False)
+class PowerLaw(_PowerParameters, ContactLaw):
     """Punch of profile h = A |x|^n (n >= 1) on a half-plane: P = K(n) E* A a^n.
 
     n = 1 is the wedge (A = the tangent of its base angle), n = 2 with A = 1/(2R) the cylinder
@@ -89,14 +99,12 @@ class PowerLaw(ContactLaw):
     11.283792
     """
 
-    A: float
-    n: float
-    E_star: float
     name = "power"
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "A", positive_parameter("A", self.A))
-        exponent = law_parameter("n", self.n)
+    def __init__(self, A: float, n: float, E_star: float) -> None:
+        # Checked and made Python floats before the frozen record is built: nothing set twice.
+        coefficient = positive_parameter("A", A)
+        exponent = law_parameter("n", n)
         require(exponent >= 1, "n", "must be >= 1 (n < 1 is not an incomplete contact)", exponent)
         try:
             shape_factor(exponent)
@@ -106,15 +114,16 @@ class PowerLaw(ContactLaw):
                 "is too large: the factor K(n) of P = K E* A a^n overflows double precision",
                 float(exponent),
             ) from None
-        object.__setattr__(self, "n", exponent)
-        object.__setattr__(self, "E_star", positive_parameter("E_star", self.E_star))
+        super().__init__(coefficient, exponent, positive_parameter("E_star", E_star))
 
-    @property
+    # Constants of the law, computed once per law (cached_property writes the instance's
+    # __dict__ itself: the frozen record is not mutated).
+    @cached_property
     def shape_factor(self) -> float:
         """K(n) of P = K E* A a^n."""
         return shape_factor(self.n)
 
-    @property
+    @cached_property
     def _parameters(self) -> tuple[np.float64, np.float64, np.float64, np.float64]:
         # NumPy scalars, not Python floats: a kernel's A**(3/2) of a huge A is then inf (which
         # the rules refuse, naming the load) instead of Python's OverflowError.
