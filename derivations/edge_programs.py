@@ -22,7 +22,6 @@ from asymslip.codegen import Argument, Derivation, Output, Step
 
 from ._glossary import L_I1, L_I2, MEANINGS, P1, a1, a2, arguments, da, dP, eta, lam, mu
 from .contact_law_hertz import E_star, R
-from .second_order_slip_zone import OTHER_EDGE
 from .stated_accuracy import ROUNDING
 
 
@@ -42,9 +41,14 @@ P2 = sympy.Symbol("P2", positive=True)
     ratio_first_order,
     root,
     width_ratio,
+    direction,
+    other_direction,
+    own_lam,
+    own_eta,
+    first_limit,
 ) = _symbols(
     "load_slope1 load_slope2 L_I_slope1 L_I_slope2 a_slope1 a_slope2 ratio_first_order root "
-    "width_ratio"
+    "width_ratio direction other_direction own_lam own_eta first_limit"
 )
 
 SLOPES = (
@@ -78,15 +82,33 @@ def _edge_shear(d: Derivation) -> None:
 
 def _edge_estimates(d: Derivation) -> None:
     estimate_args = (
-        *arguments(mu, lam, eta, a1, a2, da, L_I1, L_I2, P1, dP),
+        *arguments(mu),
+        Argument(own_lam, "Load-path slope lambda = dQ/dP (18) in the edge's own frame."),
+        Argument(own_eta, "Load-path slope eta = dsigma/dP (18) [1/length]."),
+        *arguments(a1, a2, da, L_I1, L_I2, P1, dP),
         *SLOPES,
-        OTHER_EDGE,
+        Argument(direction, "The edge's slip direction in its own frame: +1, -1 or 0."),
+        Argument(
+            other_direction,
+            "The other edge's slip direction in its own frame (the mirrored one): +1, -1 or 0.",
+        ),
         ROUNDING,
     )
-    lam_over_mu, eta_a1_mu, growth, multiplier, multiplier_slope = _symbols(
-        "lam_mu eta_a1_mu growth multiplier multiplier_slope"
+    lam_over_mu, eta_a1_mu, growth, multiplier, multiplier_slope, orientation = _symbols(
+        "lam_mu eta_a1_mu growth multiplier multiplier_slope orientation"
     )
     steps = (
+        # lam and eta in the edge's slip direction (edge_symmetry E2: backward slip is forward
+        # slip with (lam, eta) -> (-lam, -eta)); an edge that does not slip keeps them as they
+        # are (what it reports instead is the core's business): the direction, or 1 for 0.
+        Step("orientation", expr=direction + 1 - sympy.Abs(direction)),
+        Step("lam", expr=orientation * own_lam),
+        Step("eta", expr=orientation * own_eta),
+        # The other-edge factor of b2 (second_order_slip_zone.OTHER_EDGE): +1 where the other
+        # edge slips the same way in the global frame -- its own-frame direction of the other
+        # sign, the left edge's frame being mirrored -- or does not slip; -1 where it slips the
+        # opposite way.
+        Step("other_edge", expr=-direction * other_direction + 1 - sympy.Abs(other_direction)),
         Step("a_slope1", expr=1 / load_slope1),  # a'(P) = 1/(dP/da)
         Step("a_slope2", expr=1 / load_slope2),
         # (24), (27): the contact growth over the cycle, at its larger slope; (26) likewise.
@@ -152,6 +174,8 @@ def _edge_estimates(d: Derivation) -> None:
             "disagreement_limit",
             ("accuracy", "first_accuracy", "a1", "rounding"),
         ),
+        # (40) is first order too: its limit is (28)'s.
+        Step("stick_limit", expr=first_limit),
         Step("exact_accuracy", expr=sympy.Integer(0)),  # a(P_K) is exact
         Step(
             "exact_limit",
@@ -176,14 +200,14 @@ def _edge_estimates(d: Derivation) -> None:
             Output("accuracy", f"The stated accuracy of b2 {LENGTH}."),
             Output("paper_limit", f"How far (22) may lie from b2 before they disagree {LENGTH}."),
             Output("first_limit", f"How far (28) may lie from b2 before they disagree {LENGTH}."),
-            Output("first_limit", f"How far (40) may lie from b2 before they disagree {LENGTH}."),
+            Output("stick_limit", f"How far (40) may lie from b2 before they disagree {LENGTH}."),
             Output("exact_limit", f"How far a(P_K) may lie from b2 before they disagree {LENGTH}."),
         ),
         summary="Every estimate of b at one edge, its validity measures and stated accuracies.",
-        doc="For an edge of a symmetric contact slipping forward: lam and eta oriented so that "
-        "it does (edge_symmetry E2), other_edge the other edge's relative slip direction "
-        "(+1 also where it does not slip).  What an edge that does not slip reports instead is "
-        "the slip-zone core's business.",
+        doc="For an edge of a symmetric contact, lam and eta in its own frame: the program "
+        "orients them so that the edge slips forward (edge_symmetry E2) and finds the other "
+        "edge's factor of b2 from the two directions.  What an edge that does not slip reports "
+        "instead is the slip-zone core's business.",
     )
 
 

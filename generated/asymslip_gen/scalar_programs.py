@@ -97,8 +97,8 @@ def edge_shear(
 
 def edge_estimates(
     mu: float,
-    lam: float,
-    eta: float,
+    own_lam: float,
+    own_eta: float,
     a1: float,
     a2: float,
     da: float,
@@ -110,15 +110,16 @@ def edge_estimates(
     load_slope2: float,
     L_I_slope1: float,
     L_I_slope2: float,
-    other_edge: float,
+    direction: float,
+    other_direction: float,
     rounding: float,
 ) -> tuple[float, ...]:
     """Every estimate of b at one edge, its validity measures and stated accuracies.
 
-    For an edge of a symmetric contact slipping forward: lam and eta oriented so that it does
-    (edge_symmetry E2), other_edge the other edge's relative slip direction (+1 also where it
-    does not slip).  What an edge that does not slip reports instead is the slip-zone core's
-    business.
+    For an edge of a symmetric contact, lam and eta in its own frame: the program orients them
+    so that the edge slips forward (edge_symmetry E2) and finds the other edge's factor of b2
+    from the two directions.  What an edge that does not slip reports instead is the slip-zone
+    core's business.
 
     Implements Eqs. (22), (25), (17), (28), (51), (19), (39), (40), (33), (24), (26), (27) of
     the paper through the formulas it evaluates; registered in ``derivations/edge_programs.py``.
@@ -127,10 +128,10 @@ def edge_estimates(
     ----------
     mu : float
         Coefficient of friction, mu > 0.
-    lam : float
-        Load-path slope lambda = dQ/dP (18), either sign.
-    eta : float
-        Load-path slope eta = dsigma/dP (18), either sign [1/length].
+    own_lam : float
+        Load-path slope lambda = dQ/dP (18) in the edge's own frame.
+    own_eta : float
+        Load-path slope eta = dsigma/dP (18) [1/length].
     a1 : float
         Contact half-width a(P1) at load state 1 [length].
     a2 : float
@@ -154,12 +155,10 @@ def edge_estimates(
         Slope L_I'(P) of the normal edge multiplier at state 1.
     L_I_slope2 : float
         Slope L_I'(P) of the normal edge multiplier at state 2.
-    other_edge : float
-        +1 when the other edge of the contact slips in the same direction as this one (the same
-        sign of q2 - q1 there), -1 when it slips the opposite way.  For an other edge that does
-        not slip use +1: that branch joins the -1 branch continuously where the other edge
-        starts to slip the opposite way, but in between it is not derived (see the module
-        notes).
+    direction : float
+        The edge's slip direction in its own frame: +1, -1 or 0.
+    other_direction : float
+        The other edge's slip direction in its own frame (the mirrored one): +1, -1 or 0.
     rounding : float
         Rounding allowance relative to a1 (the core passes 1e-12): two estimates a few units in
         the last place apart do not disagree.
@@ -190,7 +189,7 @@ def edge_estimates(
         How far (22) may lie from b2 before they disagree [length].
     first_limit : float
         How far (28) may lie from b2 before they disagree [length].
-    first_limit : float
+    stick_limit : float
         How far (40) may lie from b2 before they disagree [length].
     exact_limit : float
         How far a(P_K) may lie from b2 before they disagree [length].
@@ -199,53 +198,62 @@ def edge_estimates(
     -----
     The steps, each a formula's own generated lines or a glue expression:
 
-    1. a_slope1 = 1/load_slope1
-    2. a_slope2 = 1/load_slope2
-    3. worst_slope = Max(a_slope1, a_slope2)
-    4. worst_multiplier_slope = Max(Abs(L_I_slope1), Abs(L_I_slope2))
-    5. paper_width = slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2) (22), (25): Width a1
+    1. orientation = direction - Abs(direction) + 1
+    2. lam = orientation*own_lam
+    3. eta = orientation*own_eta
+    4. other_edge = -direction*other_direction - Abs(other_direction) + 1
+    5. a_slope1 = 1/load_slope1
+    6. a_slope2 = 1/load_slope2
+    7. worst_slope = Max(a_slope1, a_slope2)
+    8. worst_multiplier_slope = Max(Abs(L_I_slope1), Abs(L_I_slope2))
+    9. paper_width = slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2) (22), (25): Width a1
        - b of the slip zone inside the load-state-1 contact.
-    6. denominator = stick_boundary_denominator(mu, lam, eta, a1, a2, L_I1, L_I2) (17),
+    10. denominator = stick_boundary_denominator(mu, lam, eta, a1, a2, L_I1, L_I2) (17),
        (22): Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) on a proportional path.
-    7. ratio_first_order = stick_ratio_first_order(mu, lam, eta, a1, dP, a_slope1) (28),
+    11. ratio_first_order = stick_ratio_first_order(mu, lam, eta, a1, dP, a_slope1) (28),
        (51): First-order stick-boundary ratio b / a1 in the load change dP.
-    8. b_first_order = a1*ratio_first_order
-    9. lam_mu = lam/mu
-    10. eta_a1_mu = a1*eta/mu
-    11. growth = a_slope1*dP/a1
-    12. root = a1**(3/2)
-    13. multiplier = L_I1*root/dP
-    14. multiplier_slope = L_I_slope1*root
-    15. width_ratio = slip_zone_width_second_order_dimensionless(lam_mu, eta_a1_mu, growth,
+    12. b_first_order = a1*ratio_first_order
+    13. lam_mu = lam/mu
+    14. eta_a1_mu = a1*eta/mu
+    15. growth = a_slope1*dP/a1
+    16. root = a1**(3/2)
+    17. multiplier = L_I1*root/dP
+    18. multiplier_slope = L_I_slope1*root
+    19. width_ratio = slip_zone_width_second_order_dimensionless(lam_mu, eta_a1_mu, growth,
        multiplier, multiplier_slope, other_edge) (19), (22), (28): (a1 - b)/a1 to second
        order, in dimensionless groups that cannot overflow.
-    16. width = a1*width_ratio
-    17. corrective_stick_width = corrective_stick_slip_zone_width(mu, lam, eta, a1, da,
+    20. width = a1*width_ratio
+    21. corrective_stick_width = corrective_stick_slip_zone_width(mu, lam, eta, a1, da,
        L_I1, dP) (39), (40): Slip-zone width d1 = a1 - b of the corrective-stick asymptote
        [12].
-    18. P_K = permanent_stick_load(P1, dP, lam, mu) (33): Normal load P_K whose contact is
+    22. P_K = permanent_stick_load(P1, dP, lam, mu) (33): Normal load P_K whose contact is
        the permanent stick zone (Jaeger-Ciavarella).
-    19. eq24 = contact_growth_measure(dP, worst_slope, a1) (24): Measure (24) of the contact
+    23. eq24 = contact_growth_measure(dP, worst_slope, a1) (24): Measure (24) of the contact
        growth, dP a'(P) / a1.
-    20. eq26 = multiplier_growth_measure(dP, worst_multiplier_slope, L_I1) (26): Measure
+    24. eq26 = multiplier_growth_measure(dP, worst_multiplier_slope, L_I1) (26): Measure
        (26) of the growth of L_I over the cycle, dP |L_I'(P)| / L_I1.
-    21. eq27 = slip_zone_growth_measure(mu, lam, eta, a1, dP, worst_slope) (27): Necessary-
+    25. eq27 = slip_zone_growth_measure(mu, lam, eta, a1, dP, worst_slope) (27): Necessary-
        condition measure (27), twice the first-order |b - a1| / a1.
-    22. relative_growth = da/a1
-    23. accuracy = stick_boundary_accuracy(relative_growth, width) (28): Stated accuracy of
+    26. relative_growth = da/a1
+    27. accuracy = stick_boundary_accuracy(relative_growth, width) (28): Stated accuracy of
        the headline b (b2): (da/a1)^2 |a1 - b|.
-    24. paper_accuracy = paper_stick_boundary_accuracy(relative_growth, width) (22): Stated
+    28. paper_accuracy = paper_stick_boundary_accuracy(relative_growth, width) (22): Stated
        accuracy of (22): 2 (da/a1)^2 |a1 - b|, twice b2's.
-    25. first_accuracy = stick_boundary_accuracy_first_order(relative_growth, width) (28),
+    29. first_accuracy = stick_boundary_accuracy_first_order(relative_growth, width) (28),
        (40): Stated accuracy of a first-order b ((28), (40)): 2 (da/a1) |a1 - b|.
-    26. paper_limit = disagreement_limit(accuracy, paper_accuracy, a1, rounding) (22), (28),
+    30. paper_limit = disagreement_limit(accuracy, paper_accuracy, a1, rounding) (22), (28),
        (40): How far an estimate may lie from b before the two disagree.
-    27. first_limit = disagreement_limit(accuracy, first_accuracy, a1, rounding) (22), (28),
+    31. first_limit = disagreement_limit(accuracy, first_accuracy, a1, rounding) (22), (28),
        (40): How far an estimate may lie from b before the two disagree.
-    28. exact_accuracy = 0
-    29. exact_limit = disagreement_limit(accuracy, exact_accuracy, a1, rounding) (22), (28),
+    32. stick_limit = first_limit
+    33. exact_accuracy = 0
+    34. exact_limit = disagreement_limit(accuracy, exact_accuracy, a1, rounding) (22), (28),
        (40): How far an estimate may lie from b before the two disagree.
     """
+    orientation = direction - abs(direction) + 1
+    lam = orientation * own_lam
+    eta = orientation * own_eta
+    other_edge = -direction * other_direction - abs(other_direction) + 1
     a_slope1 = 1 / load_slope1
     a_slope2 = 1 / load_slope2
     worst_slope = max(a_slope1, a_slope2)
@@ -333,6 +341,7 @@ def edge_estimates(
     paper_limit = a1 * rounding + accuracy + other_accuracy
     other_accuracy = first_accuracy
     first_limit = a1 * rounding + accuracy + other_accuracy
+    stick_limit = first_limit
     exact_accuracy = 0
     other_accuracy = exact_accuracy
     exact_limit = a1 * rounding + accuracy + other_accuracy
@@ -349,7 +358,7 @@ def edge_estimates(
         accuracy,
         paper_limit,
         first_limit,
-        first_limit,
+        stick_limit,
         exact_limit,
     )
 

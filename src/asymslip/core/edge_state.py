@@ -124,13 +124,6 @@ def mirrored(edge: EdgeState) -> EdgeState:
     )
 
 
-def mirrored_shear(shear: Shear) -> Shear:
-    """The other edge's shear multipliers and slip direction where :func:`mirrored` applies:
-    (21) with eta = 0 is odd in lam, and so is the slip direction."""
-    L_II1, L_II2, direction = shear
-    return _new(Shear, (-L_II1, -L_II2, -direction))
-
-
 def shear_multipliers(
     ops: Operations,
     law: ContactLaw,
@@ -157,23 +150,6 @@ def shear_multipliers(
     return _new(Shear, (L_II1, L_II2, ops.kernels.slip_direction(mu, state.L_I2, L_II2)))
 
 
-def oriented(
-    ops: Operations, lam: Number, eta: Number, direction: Number, other_direction: Number
-) -> tuple[Number, Number, Number]:
-    """lam and eta in the edge's slip direction, and the other-edge factor of b2.
-
-    The other edge slips the same way in the global frame when the two own-frame directions
-    differ in sign (the left edge's frame is mirrored); +1 too where it does not slip
-    (derivations/second_order_slip_zone.py).
-    """
-    # Where both edges slip (the common case) the factors are the directions themselves.
-    if ops.everywhere((direction != 0) & (other_direction != 0)):
-        return direction * lam, direction * eta, -direction * other_direction
-    orientation = ops.where(direction != 0, direction, 1.0)
-    other_edge = ops.where(other_direction == 0, 1.0, -direction * other_direction)
-    return orientation * lam, orientation * eta, other_edge
-
-
 def edge_state(
     ops: Operations,
     law: ContactLaw,
@@ -184,15 +160,16 @@ def edge_state(
     dP: Number,
     edge: Edge,
     shear: Shear,
-    other: Shear,
+    other_direction: Number,
     estimates: EdgeEstimates | None,
     extrapolates: bool = True,
 ) -> EdgeState:
     """One edge from its estimates (None for an edge with its own multipliers), checked
     against the rules of :mod:`asymslip.rules` and flagged.
 
-    ``extrapolates``: False for a law known everywhere (no load of it is extrapolated), so
-    that its ``extrapolated`` is not asked.
+    ``other_direction``: the other edge's slip direction in its own frame (0: it sticks, which
+    the edge's warnings say).  ``extrapolates``: False for a law known everywhere (no load of
+    it is extrapolated), so that its ``extrapolated`` is not asked.
     """
     if estimates is None:
         return _own_multipliers_edge(ops, law, state, mu, lam, eta, dP, edge, shear, extrapolates)
@@ -227,7 +204,9 @@ def edge_state(
     b = a1 - width
     # Jaeger-Ciavarella: b = a(P_K) is exact for a symmetric law without bulk tension.
     exact = (eta == 0) & law.symmetric
-    if ops.somewhere(exact):
+    if ops.everywhere(exact):  # one cycle, or arrays without tension: a(P_K) throughout
+        b_exact = law.half_width_near(P_K, P1, a1)
+    elif ops.somewhere(exact):
         at_P_K = law.half_width_near(ops.where(exact, P_K, P1), P1, a1)
         b_exact = ops.where(exact, at_P_K, ops.missing(a1))
     else:
@@ -235,7 +214,7 @@ def edge_state(
     b_paper = a1 - paper_width
     # A flag is its bit times its condition: an int for one cycle, an array for many.
     disagree: Flags = WITH_TENSION * (eta != 0) | slips * (
-        OTHER_EDGE_STICKS * (other[2] == 0)
+        OTHER_EDGE_STICKS * (other_direction == 0)
         | _EXACT_BEYOND_A1 * (b_exact > a1)
         | DISAGREE_PAPER * (abs(b_paper - b) > paper_limit)
         | DISAGREE_FIRST_ORDER * (abs(b_first_order - b) > first_limit)
