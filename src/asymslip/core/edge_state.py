@@ -34,7 +34,7 @@ from typing import NamedTuple
 from ..edge import Edge
 from ..laws.base import ContactLaw, LawState, Number
 from ..rules import denominator_checks, finite
-from .estimates import DENOMINATOR_TOLERANCE, EdgeEstimates
+from .estimates import DENOMINATOR_TOLERANCE, DISAGREEMENT_ROUNDING, EdgeEstimates
 from .flags import (
     BEYOND_A1,
     DISAGREE_CORRECTIVE_STICK,
@@ -117,11 +117,18 @@ def mirrored(edge: EdgeState) -> EdgeState:
     Every number is the same but lam, L_II1, L_II2 and the slip direction, which change sign
     exactly (L_II = lam L_I by (21) with eta = 0); the checks and flags are the same.
     """
-    a1, a2, lam, eta, L_I1, L_I2, L_II1, L_II2 = edge[:8]
-    return _new(
-        EdgeState,
-        (a1, a2, -lam, eta, L_I1, L_I2, -L_II1, -L_II2, *edge[8:15], -edge[15], *edge[16:]),
-    )
+    values = list(edge)
+    values[_LAM] = -values[_LAM]
+    values[_L_II1] = -values[_L_II1]
+    values[_L_II2] = -values[_L_II2]
+    values[_DIRECTION] = -values[_DIRECTION]
+    return _new(EdgeState, values)
+
+
+#: Where :func:`mirrored` changes sign, by position in :class:`EdgeState`.
+_LAM, _L_II1, _L_II2, _DIRECTION = (
+    EdgeState._fields.index(name) for name in ("lam", "L_II1", "L_II2", "slip_direction")
+)
 
 
 def shear_multipliers(
@@ -148,6 +155,40 @@ def shear_multipliers(
     if ops.scalar:  # a law on NumPy: 0-d results
         L_II1, L_II2 = float(L_II1), float(L_II2)
     return _new(Shear, (L_II1, L_II2, ops.kernels.slip_direction(mu, state.L_I2, L_II2)))
+
+
+def both_edges_estimates(
+    ops: Operations, mu: Number, lam: Number, eta: Number, state: LawState, dP: Number
+) -> tuple[Shear, Shear, EdgeEstimates, EdgeEstimates]:
+    """Both edges of a symmetric contact whose left edge is not the right one mirrored (bulk
+    tension): each edge's shear multipliers, slip direction and estimates, in its own frame.
+
+    One call of the generated program ``both_edges`` (``derivations/edge_programs.py``): the
+    steps of ``edge_shear`` and ``edge_estimates`` for each edge, the law's quantities once.
+    """
+    values = ops.programs.both_edges(
+        mu,
+        lam,
+        eta,
+        state.a1,
+        state.a2,
+        state.da,
+        state.L_I1,
+        state.L_I2,
+        state.P1,
+        dP,
+        state.load_slope1,
+        state.load_slope2,
+        state.L_I_slope1,
+        state.L_I_slope2,
+        DISAGREEMENT_ROUNDING,
+    )
+    return (
+        _new(Shear, values[:3]),
+        _new(Shear, values[3:6]),
+        _new(EdgeEstimates, values[6:20]),
+        _new(EdgeEstimates, values[20:]),
+    )
 
 
 def edge_state(

@@ -56,6 +56,7 @@ from ..rules import Verdict, check_friction, check_partial_slip, finite
 from .edge_state import (
     EdgeState,
     Shear,
+    both_edges_estimates,
     edge_state,
     mirrored,
     missing_edge,
@@ -229,6 +230,45 @@ def _both_edges(
     left_state = right_state if symmetric else _law_state(ops, left_law, P1, dP)
     right_traits = law_traits(right_law)
     left_traits = right_traits if symmetric else law_traits(left_law)
+    own = right_traits.own_shear_multipliers
+    if symmetric and not own and not ops.everywhere(eta == 0):
+        # Bulk tension: the left edge is no mirror image; both edges in one program, the
+        # law's quantities shared (the left edge is the right edge of the mirrored cycle:
+        # lam -> -lam, eta kept).
+        right_shear, left_shear, right_estimates, left_estimates = both_edges_estimates(
+            ops, mu, lam, eta, right_state, dP
+        )
+        extrapolates = right_traits.extrapolates
+        right = edge_state(
+            ops,
+            right_law,
+            right_state,
+            mu,
+            lam,
+            eta,
+            dP,
+            Edge.RIGHT,
+            right_shear,
+            left_shear[2],
+            right_estimates,
+            extrapolates,
+        )
+        left = edge_state(
+            ops,
+            left_law,
+            left_state,
+            mu,
+            -lam,
+            eta,
+            dP,
+            Edge.LEFT,
+            left_shear,
+            right_shear[2],
+            left_estimates,
+            extrapolates,
+        )
+        _check_meeting(ops, right, left)
+        return right, left
     # The left edge is the right edge of the mirrored cycle: lam -> -lam, eta kept.
     right_shear = shear_multipliers(
         ops, right_law, right_state, mu, lam, eta, right_traits.own_shear_multipliers
@@ -237,11 +277,7 @@ def _both_edges(
     # (derivations/edge_symmetry.py): the left edge slips the other way in its own frame, is
     # asked exactly what the right edge was (the same oriented lam and other-edge factor), and
     # is the right edge with lam, L_II and the direction negated -- not computed again.
-    if (
-        symmetric
-        and not right_traits.own_shear_multipliers
-        and ops.everywhere((eta == 0) & (right_shear[2] != 0))
-    ):
+    if symmetric and not own and ops.everywhere(right_shear[2] != 0):  # eta = 0 here
         right = _edge(
             ops,
             right_law,
