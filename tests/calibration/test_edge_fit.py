@@ -17,7 +17,10 @@ from asymslip.calibration.edge_fit import EdgeFitError, fit_edge, nodal_points
 from tests.calibration import census
 from tests.calibration.helpers import LAWS, REFERENCE_LOAD, mesh, noisy
 
-CASES = list(itertools.product(LAWS, ["uniform", "graded"], [20, 200], [0.0, 0.01]))
+# Exact traces: their error is deterministic and every fit's reported error must cover it.  With
+# scatter the reported error is a 95 % bound, which one draw in twenty exceeds by design: the
+# slow census tests below check its coverage over many draws.
+CASES = list(itertools.product(LAWS, ["uniform", "graded"], [20, 200], [0.0]))
 
 
 def _fit_both_edges(law, x, p, P):

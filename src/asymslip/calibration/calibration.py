@@ -38,6 +38,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -228,7 +229,12 @@ def _refuse_constant(name: str) -> float:
 
 
 def _number(
-    entry: dict, key: str, fail, *, positive: bool = False, non_negative: bool = False
+    entry: dict[str, object],
+    key: str,
+    fail: Callable[[str], InputError],
+    *,
+    positive: bool = False,
+    non_negative: bool = False,
 ) -> float:
     value = entry.get(key)
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
@@ -257,7 +263,9 @@ def _fit_to_dict(fit: EdgeFit, origin: float) -> dict[str, object]:
     }
 
 
-def _fit_from_dict(entry: object, side: Side, origin: float, name: str, fail) -> EdgeFit:
+def _fit_from_dict(
+    entry: object, side: Side, origin: float, name: str, fail: Callable[[str], InputError]
+) -> EdgeFit:
     if not isinstance(entry, dict):
         raise fail(f"{name} must be an object")
 
@@ -386,9 +394,8 @@ def calibrate(
                     "contact",
                     origin,
                 )
-    warnings = [
-        _advance_warning(side, edge, origin) for side, edge in (("right", right), ("left", left))
-    ]
+    edges: tuple[tuple[Side, tuple[EdgeFit, ...]], ...] = (("right", right), ("left", left))
+    warnings = [_advance_warning(side, edge, origin) for side, edge in edges]
     if symmetric:
         side = "right" if right else "left"
         warnings.append(
