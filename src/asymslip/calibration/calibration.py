@@ -48,7 +48,7 @@ from numpy.typing import NDArray
 from ..errors import InputError
 from ..files.atomic import atomic_write
 from ..laws.calibrated import CalibratedLaw
-from .edge_fit import EdgeFit, EdgeFitError, fit_edge
+from .edge_fit import FE_ALLOWANCE_A, FE_ALLOWANCE_L, EdgeFit, EdgeFitError, fit_edge
 from .traces import SIDES, Side, Traces
 
 FloatArray = NDArray[np.float64]
@@ -404,6 +404,9 @@ def calibrate(
         )
     balances = load_balance(traces, fits)
     warnings += _balance_warnings(balances)
+    notes = traces.notes
+    if any(trace.unit == "node" for trace in traces.traces):
+        notes += (FE_ALLOWANCE_NOTE,)
     calibration = Calibration(
         right,
         left,
@@ -411,10 +414,19 @@ def calibrate(
         traces.source,
         symmetric,
         tuple(w for w in warnings if w),
-        traces.notes,
+        notes,
         tuple(balances),
     )
     return replace(calibration, warnings=calibration.warnings + _edge_balance_warning(calibration))
+
+
+#: The rule for the errors of fits to an FE solution's nodal pressures, stated with the result.
+FE_ALLOWANCE_NOTE = (
+    "FE nodal pressures: each error includes, in quadrature, an allowance for the FE's own "
+    f"discretisation error of {FE_ALLOWANCE_A:g} element at the edge (a) and "
+    f"{FE_ALLOWANCE_L:g} h/a of L_I (h the spacing at the edge, a the half-width), fixed a "
+    "priori: one FE run cannot show it; a run on a mesh twice as fine or coarse can"
+)
 
 
 #: A load balance (the integral of p dx over P) further from 1 than this is a warning ...
