@@ -43,8 +43,8 @@ error.  The error of a window's a (and likewise of its L_I) has two parts, added
 * the minimisation's own resolution (:func:`.edge_model.resolution`) is added to a's error.
 
 Measured on the census of :mod:`tests.calibration.census` (every built-in law; uniform and
-graded meshes of 20 to 200 nodes; exact and with 1 % scatter): see the README's calibration
-section for the distribution of true over reported errors.
+graded meshes of 20 to 200 nodes; exact and with 1 % scatter): see the calibration guide
+(docs/guide/calibration.md) for the distribution of true over reported errors.
 
 Runtime needs NumPy only.
 
