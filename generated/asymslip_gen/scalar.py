@@ -194,7 +194,11 @@ def shear_edge_multiplier_asymmetric(lam: float, eta: float, w: float, da_dP: fl
     float
         L_II [force/length^(5/2)].
     """
-    return (1 / 4) * (math.pi * eta * w + 8 * lam) / (math.pi * da_dP * math.sqrt(w))
+    return (
+        (1 / 4)
+        * (3.141592653589793 * eta * w + 8.0 * lam)
+        / (3.141592653589793 * da_dP * math.sqrt(w))
+    )
 
 
 def normal_edge_multiplier_asymmetric(w: float, dP_da: float, dMc_da: float) -> float:
@@ -222,7 +226,7 @@ def normal_edge_multiplier_asymmetric(w: float, dP_da: float, dMc_da: float) -> 
     float
         L_I [force/length^(5/2)].
     """
-    return 2 * (4 * dMc_da + dP_da * w) / (math.pi * w ** (3 / 2))
+    return 2.0 * (4.0 * dMc_da + dP_da * w) / (3.141592653589793 * w ** (3 / 2))
 
 
 def edge_moment_factor(w: float, L_I: float, da_dP: float) -> float:
@@ -251,7 +255,7 @@ def edge_moment_factor(w: float, L_I: float, da_dP: float) -> float:
     float
         f, dimensionless.
     """
-    return (1 / 2) * math.pi * L_I * da_dP * math.sqrt(w)
+    return (1 / 2) * 3.141592653589793 * L_I * da_dP * math.sqrt(w)
 
 
 def edge_multiplier_balance(
@@ -284,7 +288,12 @@ def edge_multiplier_balance(
     float
         Dimensionless; 1 for consistent data.
     """
-    return (1 / 4) * math.pi * math.sqrt(w) * (L_I_left * da_dP_left + L_I_right * da_dP_right)
+    return (
+        (1 / 4)
+        * 3.141592653589793
+        * math.sqrt(w)
+        * (L_I_left * da_dP_left + L_I_right * da_dP_right)
+    )
 
 
 def stick_boundary_proportional(
@@ -321,7 +330,7 @@ def stick_boundary_proportional(
     float
         Stick boundary b, same units as a1.
     """
-    tmp0 = (1 / 4) * math.pi * eta
+    tmp0 = (1 / 4) * 3.141592653589793 * eta
     tmp1 = L_I1 * (a1 * tmp0 + lam + mu)
     tmp2 = L_I2 * (a2 * tmp0 + lam - mu)
     return (a1 * tmp1 - a2 * tmp2) / (tmp1 - tmp2)
@@ -361,7 +370,7 @@ def stick_boundary_denominator(
     float
         C1 + C2 [force/length^(5/2)].
     """
-    tmp0 = (1 / 4) * math.pi * eta
+    tmp0 = (1 / 4) * 3.141592653589793 * eta
     return L_I1 * (a1 * tmp0 + lam + mu) - L_I2 * (a2 * tmp0 + lam - mu)
 
 
@@ -471,7 +480,7 @@ def slip_zone_width(
     float
         a1 - b, same units as a1.
     """
-    tmp0 = (1 / 4) * math.pi * eta
+    tmp0 = (1 / 4) * 3.141592653589793 * eta
     tmp1 = a1 * tmp0 + lam
     tmp2 = L_I2 * (da * tmp0 - mu + tmp1)
     return da * tmp2 / (L_I1 * (mu + tmp1) - tmp2)
@@ -567,10 +576,10 @@ def dislocation_density(
     """
     tmp0 = -x
     tmp1 = L_I1 * mu + L_II1
-    tmp2 = 2 / E_star
-    return tmp1 * tmp2 * math.sqrt(max(0, -a1 - tmp0)) - tmp2 * (
+    tmp2 = 2.0 / E_star
+    return tmp1 * tmp2 * math.sqrt(max(0.0, -a1 - tmp0)) - tmp2 * (
         L_I2 * mu - L_II2 + tmp1
-    ) * math.sqrt(max(0, -b - tmp0))
+    ) * math.sqrt(max(0.0, -b - tmp0))
 
 
 def shear_intensity_rate(lam: float, eta: float, a: float) -> float:
@@ -596,9 +605,9 @@ def shear_intensity_rate(lam: float, eta: float, a: float) -> float:
     float
         Delta K_II / Delta P [1/length^(3/2)].
     """
-    tmp0 = math.sqrt(2)
+    tmp0 = math.sqrt(2.0)
     tmp1 = math.sqrt(a)
-    return (1 / 8) * eta * tmp0 * tmp1 + (1 / 2) * lam * tmp0 / (math.pi * tmp1)
+    return (1 / 8) * eta * tmp0 * tmp1 + (1 / 2) * lam * tmp0 / (3.141592653589793 * tmp1)
 
 
 def corrective_stick_slip_zone_width(
@@ -638,10 +647,10 @@ def corrective_stick_slip_zone_width(
     float
         a1 - b, same units as a1.
     """
-    tmp0 = math.sqrt(2)
+    tmp0 = math.sqrt(2.0)
     tmp1 = math.sqrt(a1)
     return -1 / 2 * da + dP * (
-        (1 / 8) * eta * tmp0 * tmp1 + (1 / 2) * lam * tmp0 / (math.pi * tmp1)
+        (1 / 8) * eta * tmp0 * tmp1 + (1 / 2) * lam * tmp0 / (3.141592653589793 * tmp1)
     ) / (L_I1 * mu)
 
 
@@ -680,16 +689,17 @@ def hertz_stick_boundary_corrective_stick(
         b [length].
     """
     tmp0 = math.sqrt(P1)
-    tmp1 = math.sqrt(math.pi)
-    tmp2 = 1 / math.sqrt(E_star)
+    tmp1 = math.sqrt(3.141592653589793)
+    tmp2 = 1.0 / math.sqrt(E_star)
     tmp3 = math.sqrt(R)
     tmp4 = tmp2 * tmp3 / tmp1
-    tmp5 = 2 * tmp4
+    tmp5 = 2.0 * tmp4
     tmp6 = tmp0 * tmp5
-    tmp7 = 2 * eta * tmp0 * tmp1 * tmp2 * tmp3 + 4 * lam
+    tmp7 = 2.0 * eta * tmp0 * tmp1 * tmp2 * tmp3 + 4.0 * lam
     tmp8 = dP / (tmp5 * math.sqrt(P1 + dP) + tmp6)
     return tmp6 - 1 / 8 * tmp4 * tmp8 * (
-        4 * tmp0 * tmp4 * (-4 * mu + tmp7) + 4 * R * tmp7 * tmp8 / (math.pi * E_star)
+        4.0 * tmp0 * tmp4 * (-4.0 * mu + tmp7)
+        + 4.0 * R * tmp7 * tmp8 / (3.141592653589793 * E_star)
     ) / (mu * tmp0)
 
 
@@ -729,18 +739,21 @@ def hertz_slip_zone_width_corrective_stick(
         a1 - b [length].
     """
     tmp0 = math.sqrt(P1)
-    tmp1 = math.sqrt(math.pi)
-    tmp2 = 1 / math.sqrt(E_star)
+    tmp1 = math.sqrt(3.141592653589793)
+    tmp2 = 1.0 / math.sqrt(E_star)
     tmp3 = math.sqrt(R)
-    tmp4 = 2 * eta * tmp0 * tmp1 * tmp2 * tmp3 + 4 * lam
+    tmp4 = 2.0 * eta * tmp0 * tmp1 * tmp2 * tmp3 + 4.0 * lam
     tmp5 = tmp2 * tmp3 / tmp1
-    tmp6 = 2 * tmp5
+    tmp6 = 2.0 * tmp5
     tmp7 = dP / (tmp0 * tmp6 + tmp6 * math.sqrt(P1 + dP))
     return (
         (1 / 8)
         * tmp5
         * tmp7
-        * (4 * tmp0 * tmp5 * (-4 * mu + tmp4) + 4 * R * tmp4 * tmp7 / (math.pi * E_star))
+        * (
+            4.0 * tmp0 * tmp5 * (-4.0 * mu + tmp4)
+            + 4.0 * R * tmp4 * tmp7 / (3.141592653589793 * E_star)
+        )
         / (mu * tmp0)
     )
 
@@ -769,7 +782,7 @@ def tension_share(eta: float, a1: float, mu: float) -> float:
     float
         tau (dimensionless).
     """
-    return (1 / 4) * math.pi * a1 * eta / mu
+    return (1 / 4) * 3.141592653589793 * a1 * eta / mu
 
 
 def tension_slope_for_share(tau: float, a1: float, mu: float) -> float:
@@ -796,7 +809,7 @@ def tension_slope_for_share(tau: float, a1: float, mu: float) -> float:
     float
         eta [1/length].
     """
-    return 4 * mu * tau / (math.pi * a1)
+    return 4.0 * mu * tau / (3.141592653589793 * a1)
 
 
 def normal_edge_multiplier(a: float, dP_da: float) -> float:
@@ -820,7 +833,7 @@ def normal_edge_multiplier(a: float, dP_da: float) -> float:
     float
         L_I [force/length^(5/2)].
     """
-    return math.sqrt(2) * dP_da / (math.pi * math.sqrt(a))
+    return math.sqrt(2.0) * dP_da / (3.141592653589793 * math.sqrt(a))
 
 
 def shear_edge_multiplier(a: float, dQ_da: float, dsigma_da: float) -> float:
@@ -846,7 +859,11 @@ def shear_edge_multiplier(a: float, dQ_da: float, dsigma_da: float) -> float:
     float
         L_II [force/length^(5/2)].
     """
-    return math.sqrt(2) * ((1 / 4) * math.pi * a * dsigma_da + dQ_da) / (math.pi * math.sqrt(a))
+    return (
+        math.sqrt(2.0)
+        * ((1 / 4) * 3.141592653589793 * a * dsigma_da + dQ_da)
+        / (3.141592653589793 * math.sqrt(a))
+    )
 
 
 def shear_edge_multiplier_proportional(lam: float, eta: float, a: float, L_I: float) -> float:
@@ -874,7 +891,7 @@ def shear_edge_multiplier_proportional(lam: float, eta: float, a: float, L_I: fl
     float
         L_II [force/length^(5/2)].
     """
-    return L_I * ((1 / 4) * math.pi * a * eta + lam)
+    return L_I * ((1 / 4) * 3.141592653589793 * a * eta + lam)
 
 
 def edge_eigenfield_pressure_sxx(
@@ -921,7 +938,7 @@ def edge_eigenfield_pressure_sxx(
     float
         sxx per unit load amplitude [force/length^2 per force/length^(2 + lam)].
     """
-    tmp0 = 1 / math.sin(math.pi * lam_e)
+    tmp0 = 1 / math.sin(3.141592653589793 * lam_e)
     return -cos_lam1 * lam_e * rho_lam * sin_angle * tmp0 + rho_lam * sin_lam * tmp0
 
 
@@ -969,7 +986,7 @@ def edge_eigenfield_pressure_syy(
     float
         syy per unit load amplitude [force/length^2 per force/length^(2 + lam)].
     """
-    tmp0 = rho_lam / math.sin(math.pi * lam_e)
+    tmp0 = rho_lam / math.sin(3.141592653589793 * lam_e)
     return cos_lam1 * lam_e * sin_angle * tmp0 + sin_lam * tmp0
 
 
@@ -1017,7 +1034,7 @@ def edge_eigenfield_pressure_sxy(
     float
         sxy per unit load amplitude [force/length^2 per force/length^(2 + lam)].
     """
-    return -lam_e * rho_lam * sin_angle * sin_lam1 / math.sin(math.pi * lam_e)
+    return -lam_e * rho_lam * sin_angle * sin_lam1 / math.sin(3.141592653589793 * lam_e)
 
 
 def edge_eigenfield_shear_sxx(
@@ -1064,8 +1081,8 @@ def edge_eigenfield_shear_sxx(
     float
         sxx per unit load amplitude [force/length^2 per force/length^(2 + lam)].
     """
-    tmp0 = rho_lam / math.sin(math.pi * lam_e)
-    return 2 * cos_lam * tmp0 + lam_e * sin_angle * sin_lam1 * tmp0
+    tmp0 = rho_lam / math.sin(3.141592653589793 * lam_e)
+    return 2.0 * cos_lam * tmp0 + lam_e * sin_angle * sin_lam1 * tmp0
 
 
 def edge_eigenfield_shear_syy(
@@ -1112,7 +1129,7 @@ def edge_eigenfield_shear_syy(
     float
         syy per unit load amplitude [force/length^2 per force/length^(2 + lam)].
     """
-    return -lam_e * rho_lam * sin_angle * sin_lam1 / math.sin(math.pi * lam_e)
+    return -lam_e * rho_lam * sin_angle * sin_lam1 / math.sin(3.141592653589793 * lam_e)
 
 
 def edge_eigenfield_shear_sxy(
@@ -1159,7 +1176,7 @@ def edge_eigenfield_shear_sxy(
     float
         sxy per unit load amplitude [force/length^2 per force/length^(2 + lam)].
     """
-    tmp0 = 1 / math.sin(math.pi * lam_e)
+    tmp0 = 1 / math.sin(3.141592653589793 * lam_e)
     return -cos_lam1 * lam_e * rho_lam * sin_angle * tmp0 + rho_lam * sin_lam * tmp0
 
 
@@ -1296,7 +1313,7 @@ def edge_pressure_next_coefficient(a: float, L_I: float, dL_I_da: float) -> floa
     float
         M_I [force/length^(7/2)].
     """
-    return -1 / 12 * (-L_I + 8 * a * dL_I_da) / a
+    return -1 / 12 * (-L_I + 8.0 * a * dL_I_da) / a
 
 
 def edge_shear_next_coefficient(
@@ -1331,12 +1348,12 @@ def edge_shear_next_coefficient(
     float
         M_II [force/length^(7/2)].
     """
-    tmp0 = math.pi * eta
+    tmp0 = 3.141592653589793 * eta
     return (
         -(
             (11 / 48) * L_I * a * tmp0
             - 1 / 12 * L_I * lam
-            + (1 / 6) * a**2 * dL_I_da * tmp0
+            + (1 / 6) * a**2.0 * dL_I_da * tmp0
             + (2 / 3) * a * dL_I_da * lam
         )
         / a
@@ -1443,10 +1460,10 @@ def hertz_stick_boundary_exact(
         b [length].
     """
     return (
-        2
+        2.0
         * math.sqrt(R)
         * math.sqrt(P1 - 1 / 2 * dP * (lam - mu) / mu)
-        / (math.sqrt(math.pi) * math.sqrt(E_star))
+        / (math.sqrt(3.141592653589793) * math.sqrt(E_star))
     )
 
 
@@ -1486,13 +1503,17 @@ def hertz_slip_zone_width_exact(
     float
         a1 - b [length].
     """
-    tmp0 = 2 * math.sqrt(R) / (math.sqrt(math.pi) * math.sqrt(E_star))
+    tmp0 = 2.0 * math.sqrt(R) / (math.sqrt(3.141592653589793) * math.sqrt(E_star))
     tmp1 = dP * (lam - mu) / mu
     return (
-        2
+        2.0
         * R
         * tmp1
-        / (math.pi * E_star * (math.sqrt(P1) * tmp0 + tmp0 * math.sqrt(P1 - 1 / 2 * tmp1)))
+        / (
+            3.141592653589793
+            * E_star
+            * (math.sqrt(P1) * tmp0 + tmp0 * math.sqrt(P1 - 1 / 2 * tmp1))
+        )
     )
 
 
@@ -1520,7 +1541,7 @@ def flat_rounded_profile(x: float, c: float, R: float) -> float:
     float
         h [length].
     """
-    return (1 / 2) * max(0, -c + abs(x)) ** 2 / R
+    return (1 / 2) * max(0.0, -c + abs(x)) ** 2.0 / R
 
 
 def flat_rounded_load(a: float, c: float, R: float, E_star: float) -> float:
@@ -1550,8 +1571,8 @@ def flat_rounded_load(a: float, c: float, R: float, E_star: float) -> float:
     float
         P [force/length].
     """
-    tmp0 = math.sqrt(max(0, (a - c) * (a + c)))
-    return (1 / 2) * E_star * (a**2 * math.atan2(tmp0, c) - c * tmp0) / R
+    tmp0 = math.sqrt(max(0.0, (a - c) * (a + c)))
+    return (1 / 2) * E_star * (a**2.0 * math.atan2(tmp0, c) - c * tmp0) / R
 
 
 def flat_rounded_load_slope(a: float, c: float, R: float, E_star: float) -> float:
@@ -1578,7 +1599,7 @@ def flat_rounded_load_slope(a: float, c: float, R: float, E_star: float) -> floa
     float
         dP/da [force/length^2].
     """
-    return E_star * a * math.atan2(math.sqrt(max(0, (a - c) * (a + c))), c) / R
+    return E_star * a * math.atan2(math.sqrt(max(0.0, (a - c) * (a + c))), c) / R
 
 
 def flat_rounded_normal_edge_multiplier(a: float, c: float, R: float, E_star: float) -> float:
@@ -1606,11 +1627,11 @@ def flat_rounded_normal_edge_multiplier(a: float, c: float, R: float, E_star: fl
         L_I [force/length^(5/2)].
     """
     return (
-        math.sqrt(2)
+        math.sqrt(2.0)
         * E_star
         * math.sqrt(a)
-        * math.atan2(math.sqrt(max(0, (a - c) * (a + c))), c)
-        / (math.pi * R)
+        * math.atan2(math.sqrt(max(0.0, (a - c) * (a + c))), c)
+        / (3.141592653589793 * R)
     )
 
 
@@ -1639,9 +1660,13 @@ def flat_rounded_normal_edge_multiplier_slope(a: float, c: float, R: float, E_st
     float
         dL_I/dP [1/length^(3/2)].
     """
-    tmp0 = math.sqrt(max(0, (a - c) * (a + c)))
+    tmp0 = math.sqrt(max(0.0, (a - c) * (a + c)))
     tmp1 = math.atan2(tmp0, c)
-    return math.sqrt(2) * (c + (1 / 2) * tmp0 * tmp1) / (math.pi * a ** (3 / 2) * tmp0 * tmp1)
+    return (
+        math.sqrt(2.0)
+        * (c + (1 / 2) * tmp0 * tmp1)
+        / (3.141592653589793 * a ** (3 / 2) * tmp0 * tmp1)
+    )
 
 
 def flat_rounded_chord(a: float, c: float) -> float:
@@ -1664,7 +1689,7 @@ def flat_rounded_chord(a: float, c: float) -> float:
     float
         D [length].
     """
-    return math.sqrt(max(0, (a - c) * (a + c)))
+    return math.sqrt(max(0.0, (a - c) * (a + c)))
 
 
 def flat_rounded_corner_angle(D: float, c: float) -> float:
@@ -1722,7 +1747,7 @@ def flat_rounded_load_at_angle(
     float
         As flat_rounded_load.
     """
-    return (1 / 2) * E_star * (-D * c + a**2 * psi) / R
+    return (1 / 2) * E_star * (-D * c + a**2.0 * psi) / R
 
 
 def flat_rounded_load_slope_at_angle(
@@ -1786,7 +1811,7 @@ def flat_rounded_normal_edge_multiplier_at_angle(
     float
         As flat_rounded_normal_edge_multiplier.
     """
-    return math.sqrt(2) * E_star * math.sqrt(a) * psi / (math.pi * R)
+    return math.sqrt(2.0) * E_star * math.sqrt(a) * psi / (3.141592653589793 * R)
 
 
 def flat_rounded_normal_edge_multiplier_slope_at_angle(
@@ -1820,7 +1845,7 @@ def flat_rounded_normal_edge_multiplier_slope_at_angle(
     float
         As flat_rounded_normal_edge_multiplier_slope.
     """
-    return math.sqrt(2) * ((1 / 2) * D * psi + c) / (math.pi * D * a ** (3 / 2) * psi)
+    return math.sqrt(2.0) * ((1 / 2) * D * psi + c) / (3.141592653589793 * D * a ** (3 / 2) * psi)
 
 
 def flat_rounded_pressure(x: float, a: float, c: float, R: float, E_star: float) -> float:
@@ -1857,19 +1882,19 @@ def flat_rounded_pressure(x: float, a: float, c: float, R: float, E_star: float)
     """
     tmp0 = min(a, abs(x))
     tmp1 = -tmp0
-    tmp2 = math.sqrt(max(0, (a + tmp0) * (a + tmp1)))
-    tmp3 = math.sqrt(max(0, (a - c) * (a + c)))
+    tmp2 = math.sqrt(max(0.0, (a + tmp0) * (a + tmp1)))
+    tmp3 = math.sqrt(max(0.0, (a - c) * (a + c)))
     tmp4 = 1 / a
     tmp5 = c + tmp1
     tmp6 = tmp4 * tmp5
     return max(
-        0,
+        0.0,
         E_star
         * (
             (1 / 2)
             * a
             * math.log(
-                ((c * tmp2 + tmp0 * tmp3) / a**2) ** (2 * tmp0 * tmp4)
+                ((c * tmp2 + tmp0 * tmp3) / a**2.0) ** (2.0 * tmp0 * tmp4)
                 * (tmp4 * (c + tmp0)) ** tmp6
                 * (tmp4 * abs(tmp5)) ** tmp6
             )
@@ -1877,7 +1902,7 @@ def flat_rounded_pressure(x: float, a: float, c: float, R: float, E_star: float)
             + tmp2 * math.atan2(tmp3, c)
         )
         * ((0.0 < tmp2) - (tmp2 < 0.0))
-        / (math.pi * R),
+        / (3.141592653589793 * R),
     )
 
 
@@ -1912,7 +1937,7 @@ def second_order_stick_boundary_gap(
     float
         C [length^3/force^2].
     """
-    return (1 / 8) * (lam - mu) * (lam + mu) * (a1 * d2a_dP2 + da_dP**2) / (a1 * mu**2)
+    return (1 / 8) * (lam - mu) * (lam + mu) * (a1 * d2a_dP2 + da_dP**2.0) / (a1 * mu**2.0)
 
 
 def second_order_stick_boundary_gap_from_multiplier(
@@ -1953,8 +1978,8 @@ def second_order_stick_boundary_gap_from_multiplier(
         * da_dP
         * (lam - mu)
         * (lam + mu)
-        * (-L_I1 * da_dP + 2 * a1 * dL_I_dP)
-        / (L_I1 * a1 * mu**2)
+        * (-L_I1 * da_dP + 2.0 * a1 * dL_I_dP)
+        / (L_I1 * a1 * mu**2.0)
     )
 
 
@@ -1998,23 +2023,23 @@ def half_plane_element_sxx(
     float
         sxx [force/length^2].
     """
-    tmp0 = 1 / math.pi
+    tmp0 = 1 / 3.141592653589793
     tmp1 = 1 / (-t0 + t1)
     tmp2 = -y
     tmp3 = -x
     tmp4 = -t0 - tmp3
     tmp5 = -t1 - tmp3
-    tmp6 = 3 * y
-    tmp7 = y**2
-    tmp8 = tmp4**2
+    tmp6 = 3.0 * y
+    tmp7 = y**2.0
+    tmp8 = tmp4**2.0
     tmp9 = tmp7 + tmp8
-    tmp10 = tmp5**2
+    tmp10 = tmp5**2.0
     tmp11 = tmp10 + tmp7
     tmp12 = p0 * y
-    tmp13 = y**4
-    tmp14 = y**3
+    tmp13 = y**4.0
+    tmp14 = y**3.0
     tmp15 = q1 * tmp7
-    tmp16 = 2 * tmp10
+    tmp16 = 2.0 * tmp10
     return (
         -tmp0
         * tmp1
@@ -2029,15 +2054,15 @@ def half_plane_element_sxx(
             -p0 * tmp14 * tmp4
             + p1 * tmp14 * tmp5
             + p1 * tmp5 * tmp8 * y
-            + 3 * q0 * tmp10 * tmp7
-            + 2 * q0 * tmp10 * tmp8
-            + 3 * q0 * tmp13
-            + 2 * q0 * tmp7 * tmp8
-            - 3 * q1 * tmp13
+            + 3.0 * q0 * tmp10 * tmp7
+            + 2.0 * q0 * tmp10 * tmp8
+            + 3.0 * q0 * tmp13
+            + 2.0 * q0 * tmp7 * tmp8
+            - 3.0 * q1 * tmp13
             - q1 * tmp16 * tmp8
             - tmp10 * tmp12 * tmp4
             - tmp15 * tmp16
-            - 3 * tmp15 * tmp8
+            - 3.0 * tmp15 * tmp8
         )
         / (tmp11 * tmp9)
     )
@@ -2083,16 +2108,16 @@ def half_plane_element_syy(
     float
         syy [force/length^2].
     """
-    tmp0 = 1 / math.pi
+    tmp0 = 1 / 3.141592653589793
     tmp1 = -y
     tmp2 = -x
     tmp3 = -t0 - tmp2
     tmp4 = -t1 - tmp2
     tmp5 = q1 * y
-    tmp6 = y**2
-    tmp7 = tmp3**2
-    tmp8 = tmp4**2
-    tmp9 = y**3
+    tmp6 = y**2.0
+    tmp7 = tmp3**2.0
+    tmp8 = tmp4**2.0
+    tmp9 = y**3.0
     tmp10 = p0 * tmp3
     return tmp0 * y * (
         p1 * tmp4 * tmp6
@@ -2148,20 +2173,20 @@ def half_plane_element_sxy(
     float
         sxy [force/length^2].
     """
-    tmp0 = y**2
+    tmp0 = y**2.0
     tmp1 = -x
     tmp2 = -t0 - tmp1
-    tmp3 = tmp2**2
+    tmp3 = tmp2**2.0
     tmp4 = tmp0 + tmp3
     tmp5 = -t1 - tmp1
-    tmp6 = tmp5**2
+    tmp6 = tmp5**2.0
     tmp7 = tmp0 + tmp6
-    tmp8 = 1 / math.pi
+    tmp8 = 1 / 3.141592653589793
     tmp9 = tmp8 / (-t0 + t1)
     tmp10 = -y
     tmp11 = p0 * y
     tmp12 = p1 * y
-    tmp13 = y**3
+    tmp13 = y**3.0
     tmp14 = q0 * tmp2
     tmp15 = q1 * tmp5
     return (
@@ -2207,7 +2232,7 @@ def half_plane_node_log_distance(u: float, y: float) -> float:
     float
         L [log of a length].
     """
-    return (1 / 2) * math.log(u**2 + y**2)
+    return (1 / 2) * math.log(u**2.0 + y**2.0)
 
 
 def half_plane_node_angle(u: float, y: float) -> float:
@@ -2415,8 +2440,8 @@ def half_plane_potential_sxx(
     float
         sxx [force/length^2].
     """
-    tmp0 = 1 / math.pi
-    return -P_im * tmp0 - 2 * Q_re * tmp0 + dP_re * tmp0 * y - dQ_im * tmp0 * y
+    tmp0 = 1 / 3.141592653589793
+    return -P_im * tmp0 - 2.0 * Q_re * tmp0 + dP_re * tmp0 * y - dQ_im * tmp0 * y
 
 
 def half_plane_potential_syy(
@@ -2462,7 +2487,7 @@ def half_plane_potential_syy(
     float
         syy [force/length^2].
     """
-    tmp0 = 1 / math.pi
+    tmp0 = 1 / 3.141592653589793
     return -P_im * tmp0 - dP_re * tmp0 * y + dQ_im * tmp0 * y
 
 
@@ -2509,7 +2534,7 @@ def half_plane_potential_sxy(
     float
         sxy [force/length^2].
     """
-    tmp0 = 1 / math.pi
+    tmp0 = 1 / 3.141592653589793
     tmp1 = tmp0 * y
     return -Q_im * tmp0 + dP_im * tmp1 + dQ_re * tmp1
 
@@ -2548,12 +2573,12 @@ def semi_ellipse_pressure_sxx(x: float, y: float, a: float) -> float:
     tmp5 = math.sqrt(math.sin(tmp2) * math.sin(tmp4))
     tmp6 = (1 / 2) * tmp2 + (1 / 2) * tmp4
     tmp7 = math.sin(tmp6)
-    tmp8 = y**2
+    tmp8 = y**2.0
     return (
         tmp5 * tmp7 * y
         - tmp5 * x * math.cos(tmp6)
-        + tmp7 * (tmp1**2 + tmp8) ** (1 / 4) * (tmp3**2 + tmp8) ** (1 / 4)
-        + 2 * y
+        + tmp7 * (tmp1**2.0 + tmp8) ** (1 / 4) * (tmp3**2.0 + tmp8) ** (1 / 4)
+        + 2.0 * y
     )
 
 
@@ -2590,12 +2615,12 @@ def semi_ellipse_pressure_syy(x: float, y: float, a: float) -> float:
     tmp4 = math.atan2(tmp0, tmp3)
     tmp5 = math.sqrt(math.sin(tmp2) * math.sin(tmp4))
     tmp6 = (1 / 2) * tmp2 + (1 / 2) * tmp4
-    tmp7 = y**2
+    tmp7 = y**2.0
     tmp8 = math.sin(tmp6)
     return (
         -tmp5 * tmp8 * y
         + tmp5 * x * math.cos(tmp6)
-        + tmp8 * (tmp1**2 + tmp7) ** (1 / 4) * (tmp3**2 + tmp7) ** (1 / 4)
+        + tmp8 * (tmp1**2.0 + tmp7) ** (1 / 4) * (tmp3**2.0 + tmp7) ** (1 / 4)
     )
 
 
@@ -2668,12 +2693,12 @@ def semi_ellipse_shear_sxx(x: float, y: float, a: float) -> float:
     tmp5 = math.sqrt(math.sin(tmp2) * math.sin(tmp4))
     tmp6 = (1 / 2) * tmp2 + (1 / 2) * tmp4
     tmp7 = math.cos(tmp6)
-    tmp8 = y**2
+    tmp8 = y**2.0
     return (
         -tmp5 * tmp7 * y
         - tmp5 * x * math.sin(tmp6)
-        + 2 * tmp7 * (tmp1**2 + tmp8) ** (1 / 4) * (tmp3**2 + tmp8) ** (1 / 4)
-        - 2 * x
+        + 2.0 * tmp7 * (tmp1**2.0 + tmp8) ** (1 / 4) * (tmp3**2.0 + tmp8) ** (1 / 4)
+        - 2.0 * x
     )
 
 
@@ -2747,12 +2772,12 @@ def semi_ellipse_shear_sxy(x: float, y: float, a: float) -> float:
     tmp5 = math.sqrt(math.sin(tmp2) * math.sin(tmp4))
     tmp6 = (1 / 2) * tmp2 + (1 / 2) * tmp4
     tmp7 = math.sin(tmp6)
-    tmp8 = y**2
+    tmp8 = y**2.0
     return (
         tmp5 * tmp7 * y
         - tmp5 * x * math.cos(tmp6)
-        + tmp7 * (tmp1**2 + tmp8) ** (1 / 4) * (tmp3**2 + tmp8) ** (1 / 4)
-        + 2 * y
+        + tmp7 * (tmp1**2.0 + tmp8) ** (1 / 4) * (tmp3**2.0 + tmp8) ** (1 / 4)
+        + 2.0 * y
     )
 
 
@@ -2775,7 +2800,7 @@ def half_plane_node_series_factor(k: float) -> float:
     float
         The factor (dimensionless).
     """
-    return (-1) ** k / (k * (k - 1))
+    return (-1.0) ** k / (k * (k - 1.0))
 
 
 def hertz_profile(x: float, R: float) -> float:
@@ -2799,7 +2824,7 @@ def hertz_profile(x: float, R: float) -> float:
     float
         h [length].
     """
-    return (1 / 2) * x**2 / R
+    return (1 / 2) * x**2.0 / R
 
 
 def hertz_load(a: float, R: float, E_star: float) -> float:
@@ -2824,7 +2849,7 @@ def hertz_load(a: float, R: float, E_star: float) -> float:
     float
         P [force/length].
     """
-    return (1 / 4) * math.pi * E_star * a**2 / R
+    return (1 / 4) * 3.141592653589793 * E_star * a**2.0 / R
 
 
 def hertz_load_slope(a: float, R: float, E_star: float) -> float:
@@ -2849,7 +2874,7 @@ def hertz_load_slope(a: float, R: float, E_star: float) -> float:
     float
         dP/da [force/length^2].
     """
-    return (1 / 2) * math.pi * E_star * a / R
+    return (1 / 2) * 3.141592653589793 * E_star * a / R
 
 
 def hertz_half_width(P: float, R: float, E_star: float) -> float:
@@ -2873,7 +2898,7 @@ def hertz_half_width(P: float, R: float, E_star: float) -> float:
     float
         a [length].
     """
-    return 2 * math.sqrt(P) * math.sqrt(R) / (math.sqrt(math.pi) * math.sqrt(E_star))
+    return 2.0 * math.sqrt(P) * math.sqrt(R) / (math.sqrt(3.141592653589793) * math.sqrt(E_star))
 
 
 def hertz_normal_edge_multiplier(P: float, R: float, E_star: float) -> float:
@@ -2898,7 +2923,7 @@ def hertz_normal_edge_multiplier(P: float, R: float, E_star: float) -> float:
     float
         L_I [force/length^(5/2)].
     """
-    return E_star ** (3 / 4) * P ** (1 / 4) / (math.pi ** (1 / 4) * R ** (3 / 4))
+    return E_star ** (3 / 4) * P ** (1 / 4) / (3.141592653589793 ** (1 / 4) * R ** (3 / 4))
 
 
 def hertz_normal_edge_multiplier_slope(P: float, R: float, E_star: float) -> float:
@@ -2923,7 +2948,9 @@ def hertz_normal_edge_multiplier_slope(P: float, R: float, E_star: float) -> flo
     float
         dL_I/dP.
     """
-    return (1 / 4) * E_star ** (3 / 4) / (math.pi ** (1 / 4) * P ** (3 / 4) * R ** (3 / 4))
+    return (
+        (1 / 4) * E_star ** (3 / 4) / (3.141592653589793 ** (1 / 4) * P ** (3 / 4) * R ** (3 / 4))
+    )
 
 
 def hertz_half_width_growth(P1: float, dP: float, R: float, E_star: float) -> float:
@@ -2951,8 +2978,13 @@ def hertz_half_width_growth(P1: float, dP: float, R: float, E_star: float) -> fl
     float
         a2 - a1 [length].
     """
-    tmp0 = 2 * math.sqrt(R) / (math.sqrt(math.pi) * math.sqrt(E_star))
-    return 4 * R * dP / (math.pi * E_star * (math.sqrt(P1) * tmp0 + tmp0 * math.sqrt(P1 + dP)))
+    tmp0 = 2.0 * math.sqrt(R) / (math.sqrt(3.141592653589793) * math.sqrt(E_star))
+    return (
+        4.0
+        * R
+        * dP
+        / (3.141592653589793 * E_star * (math.sqrt(P1) * tmp0 + tmp0 * math.sqrt(P1 + dP)))
+    )
 
 
 def peak_shear_change(mu: float, L_I1: float, L_I2: float, w: float, da: float) -> float:
@@ -3008,7 +3040,7 @@ def hertz_matched_half_width(L_I1: float, L_I2: float, da: float) -> float:
     float
         a1 [length].
     """
-    return -(L_I1**2) * da / ((L_I1 - L_I2) * (L_I1 + L_I2))
+    return -(L_I1**2.0) * da / ((L_I1 - L_I2) * (L_I1 + L_I2))
 
 
 def hertz_matched_radius(E_star: float, L_I1: float, a1: float) -> float:
@@ -3033,7 +3065,7 @@ def hertz_matched_radius(E_star: float, L_I1: float, a1: float) -> float:
     float
         R [length].
     """
-    return (1 / 2) * math.sqrt(2) * E_star * math.sqrt(a1) / L_I1
+    return (1 / 2) * math.sqrt(2.0) * E_star * math.sqrt(a1) / L_I1
 
 
 def matched_tension_slope(da: float, L_I1: float, L_I2: float, L_II1: float, L_II2: float) -> float:
@@ -3063,7 +3095,7 @@ def matched_tension_slope(da: float, L_I1: float, L_I2: float, L_II1: float, L_I
     float
         eta [1/length].
     """
-    return 4 * (L_I1 * L_II2 - L_I2 * L_II1) / (math.pi * L_I1 * L_I2 * da)
+    return 4.0 * (L_I1 * L_II2 - L_I2 * L_II1) / (3.141592653589793 * L_I1 * L_I2 * da)
 
 
 def matched_shear_slope(
@@ -3127,11 +3159,11 @@ def flat_rounded_matched_radius(a: float, c: float, E_star: float, L_I: float) -
         R [length].
     """
     return (
-        math.sqrt(2)
+        math.sqrt(2.0)
         * E_star
         * math.sqrt(a)
-        * math.atan2(math.sqrt(max(0, (a - c) * (a + c))), c)
-        / (math.pi * L_I)
+        * math.atan2(math.sqrt(max(0.0, (a - c) * (a + c))), c)
+        / (3.141592653589793 * L_I)
     )
 
 
@@ -3161,8 +3193,8 @@ def flat_rounded_multiplier_ratio(a1: float, a2: float, c: float) -> float:
     tmp0 = -c
     return (
         math.sqrt(a2)
-        * math.atan2(math.sqrt(max(0, (a2 + c) * (a2 + tmp0))), c)
-        / (math.sqrt(a1) * math.atan2(math.sqrt(max(0, (a1 + c) * (a1 + tmp0))), c))
+        * math.atan2(math.sqrt(max(0.0, (a2 + c) * (a2 + tmp0))), c)
+        / (math.sqrt(a1) * math.atan2(math.sqrt(max(0.0, (a1 + c) * (a1 + tmp0))), c))
     )
 
 
@@ -3201,10 +3233,10 @@ def hertz_slip_zone_width_first_order(
     float
         a1 - b [length].
     """
-    tmp0 = math.sqrt(math.pi)
+    tmp0 = math.sqrt(3.141592653589793)
     tmp1 = math.sqrt(P1)
     tmp2 = math.sqrt(R)
-    tmp3 = 2 * math.sqrt(E_star)
+    tmp3 = 2.0 * math.sqrt(E_star)
     return (
         (1 / 4)
         * dP
@@ -3237,7 +3269,7 @@ def corrective_slip_discrepancy_third_order(lam: float, mu: float) -> float:
     float
         Dimensionless coefficient.
     """
-    return (1 / 256) * lam * (lam - mu) * (lam + mu) / mu**3
+    return (1 / 256) * lam * (lam - mu) * (lam + mu) / mu**3.0
 
 
 def corrective_stick_discrepancy_second_order(lam: float, mu: float) -> float:
@@ -3262,8 +3294,8 @@ def corrective_stick_discrepancy_second_order(lam: float, mu: float) -> float:
     float
         Dimensionless coefficient.
     """
-    tmp0 = mu**2
-    return (1 / 32) * (lam**2 - 2 * lam * mu - tmp0) / tmp0
+    tmp0 = mu**2.0
+    return (1 / 32) * (lam**2.0 - 2.0 * lam * mu - tmp0) / tmp0
 
 
 def corrective_stick_discrepancy_third_order(lam: float, mu: float) -> float:
@@ -3287,8 +3319,8 @@ def corrective_stick_discrepancy_third_order(lam: float, mu: float) -> float:
     float
         Dimensionless coefficient.
     """
-    tmp0 = mu**3
-    return (1 / 128) * (lam**3 - 3 * lam**2 * mu + 3 * lam * mu**2 + 3 * tmp0) / tmp0
+    tmp0 = mu**3.0
+    return (1 / 128) * (lam**3.0 - 3.0 * lam**2.0 * mu + 3.0 * lam * mu**2.0 + 3.0 * tmp0) / tmp0
 
 
 def plane_normal_stress(sxx: float, syy: float, sxy: float, theta: float) -> float:
@@ -3318,7 +3350,7 @@ def plane_normal_stress(sxx: float, syy: float, sxy: float, theta: float) -> flo
     """
     tmp0 = math.cos(theta)
     tmp1 = math.sin(theta)
-    return sxx * tmp0**2 + 2 * sxy * tmp0 * tmp1 + syy * tmp1**2
+    return sxx * tmp0**2.0 + 2.0 * sxy * tmp0 * tmp1 + syy * tmp1**2.0
 
 
 def plane_shear_stress(sxx: float, syy: float, sxy: float, theta: float) -> float:
@@ -3348,7 +3380,7 @@ def plane_shear_stress(sxx: float, syy: float, sxy: float, theta: float) -> floa
     """
     tmp0 = math.sin(theta)
     tmp1 = math.cos(theta)
-    return -sxx * tmp0 * tmp1 - sxy * tmp0**2 + sxy * tmp1**2 + syy * tmp0 * tmp1
+    return -sxx * tmp0 * tmp1 - sxy * tmp0**2.0 + sxy * tmp1**2.0 + syy * tmp0 * tmp1
 
 
 def plane_normal_strain(
@@ -3384,20 +3416,20 @@ def plane_normal_strain(
     """
     tmp0 = 1 / E
     tmp1 = math.cos(theta)
-    tmp2 = tmp1**2
+    tmp2 = tmp1**2.0
     tmp3 = math.sin(theta)
-    tmp4 = tmp3**2
+    tmp4 = tmp3**2.0
     tmp5 = sxx * tmp0
     tmp6 = tmp4 * tmp5
     tmp7 = syy * tmp0
     tmp8 = tmp2 * tmp7
-    tmp9 = nu**2
+    tmp9 = nu**2.0
     return (
-        2 * nu * sxy * tmp0 * tmp1 * tmp3
+        2.0 * nu * sxy * tmp0 * tmp1 * tmp3
         - nu * tmp6
         - nu * tmp8
         + sxx * tmp0 * tmp2
-        + 2 * sxy * tmp0 * tmp1 * tmp3
+        + 2.0 * sxy * tmp0 * tmp1 * tmp3
         + syy * tmp0 * tmp4
         - tmp2 * tmp5 * tmp9
         - tmp4 * tmp7 * tmp9
@@ -3439,18 +3471,18 @@ def plane_shear_strain(
     """
     tmp0 = math.sin(theta)
     tmp1 = 1 / E
-    tmp2 = 2 * tmp1
-    tmp3 = sxy * tmp0**2 * tmp2
+    tmp2 = 2.0 * tmp1
+    tmp3 = sxy * tmp0**2.0 * tmp2
     tmp4 = math.cos(theta)
-    tmp5 = tmp4**2
+    tmp5 = tmp4**2.0
     tmp6 = sxx * tmp0 * tmp2 * tmp4
     return (
-        2 * nu * sxy * tmp1 * tmp5
-        + 2 * nu * syy * tmp0 * tmp1 * tmp4
+        2.0 * nu * sxy * tmp1 * tmp5
+        + 2.0 * nu * syy * tmp0 * tmp1 * tmp4
         - nu * tmp3
         - nu * tmp6
-        + 2 * sxy * tmp1 * tmp5
-        + 2 * syy * tmp0 * tmp1 * tmp4
+        + 2.0 * sxy * tmp1 * tmp5
+        + 2.0 * syy * tmp0 * tmp1 * tmp4
         - tmp3
         - tmp6
     )
@@ -3505,7 +3537,7 @@ def fatemi_socie_parameter(gamma_a: float, sigma_n_max: float, k: float, sigma_y
     float
         dimensionless.
     """
-    return gamma_a * (k * sigma_n_max / sigma_y + 1)
+    return gamma_a * (k * sigma_n_max / sigma_y + 1.0)
 
 
 def smith_watson_topper_parameter(sigma_n_max: float, eps_a: float) -> float:
@@ -3529,7 +3561,7 @@ def smith_watson_topper_parameter(sigma_n_max: float, eps_a: float) -> float:
     float
         [force/length^2].
     """
-    return eps_a * max(0, sigma_n_max)
+    return eps_a * max(0.0, sigma_n_max)
 
 
 def ruiz_frictional_work(tau: float, delta: float) -> float:
@@ -3577,7 +3609,7 @@ def ruiz_parameter(sigma_T: float, tau: float, delta: float) -> float:
     float
         [force^2/length^3].
     """
-    return delta * tau * max(0, sigma_T)
+    return delta * tau * max(0.0, sigma_T)
 
 
 def power_law_profile(x: float, n: float, A: float) -> float:
@@ -3763,11 +3795,11 @@ def power_law_normal_edge_multiplier(
     """
     tmp0 = 1 / n
     return (
-        math.sqrt(2)
-        * P ** (1 - 3 / 2 * tmp0)
+        math.sqrt(2.0)
+        * P ** (1.0 - 3 / 2 * tmp0)
         * n
-        * (math.sqrt(A) * math.sqrt(E_star) * math.sqrt(K)) ** (3 * tmp0)
-        / math.pi
+        * (math.sqrt(A) * math.sqrt(E_star) * math.sqrt(K)) ** (3.0 * tmp0)
+        / 3.141592653589793
     )
 
 
@@ -3801,10 +3833,10 @@ def power_law_normal_edge_multiplier_slope(
         dL_I/dP [1/length^(3/2)].
     """
     return (
-        math.sqrt(2)
+        math.sqrt(2.0)
         * (A ** (3 / 2) * E_star ** (3 / 2) * K ** (3 / 2) / P ** (3 / 2)) ** (1 / n)
         * (n - 3 / 2)
-        / math.pi
+        / 3.141592653589793
     )
 
 
@@ -3830,7 +3862,7 @@ def power_law_hypergeometric_argument(x: float, a: float) -> float:
         z in [0, 1].
     """
     tmp0 = abs(x)
-    return max(0, (a - tmp0) * (a + tmp0)) / a**2
+    return max(0.0, (a - tmp0) * (a + tmp0)) / a**2.0
 
 
 def power_law_pressure(
@@ -3873,11 +3905,11 @@ def power_law_pressure(
         A
         * E_star
         * K
-        * a ** (n - 2)
+        * a ** (n - 2.0)
         * hypergeometric
         * n
-        * math.sqrt(max(0, (a - tmp0) * (a + tmp0)))
-        / math.pi
+        * math.sqrt(max(0.0, (a - tmp0) * (a + tmp0)))
+        / 3.141592653589793
     )
 
 
@@ -3912,8 +3944,8 @@ def wedge_pressure(x: float, a: float, A: float, E_star: float) -> float:
     return (
         A
         * E_star
-        * math.log1p((max(0, tmp1) + math.sqrt(max(0, tmp1 * (a + tmp0)))) / tmp0)
-        / math.pi
+        * math.log1p((max(0.0, tmp1) + math.sqrt(max(0.0, tmp1 * (a + tmp0)))) / tmp0)
+        / 3.141592653589793
     )
 
 
@@ -3967,35 +3999,35 @@ def slip_zone_width_second_order(
     float
         a1 - b, same units as a1.
     """
-    tmp0 = math.pi * eta
+    tmp0 = 3.141592653589793 * eta
     tmp1 = a1 * tmp0
-    tmp2 = mu**2
+    tmp2 = mu**2.0
     tmp3 = a1 * d2a_dP2
-    tmp4 = lam**2
-    tmp5 = 64 * tmp3
-    tmp6 = da_dP**2
-    tmp7 = 16 * tmp6
+    tmp4 = lam**2.0
+    tmp5 = 64.0 * tmp3
+    tmp6 = da_dP**2.0
+    tmp7 = 16.0 * tmp6
     tmp8 = tmp4 * tmp7
     tmp9 = tmp2 * tmp7
     tmp10 = tmp1 * tmp6
     tmp11 = lam * tmp10
-    tmp12 = 32 * mu
-    tmp13 = a1**2
+    tmp12 = 32.0 * mu
+    tmp13 = a1**2.0
     tmp14 = d2a_dP2 * tmp0 * tmp13
-    tmp15 = math.pi**2 * eta**2
+    tmp15 = 3.141592653589793**2.0 * eta**2.0
     tmp16 = tmp13 * tmp15 * tmp6
-    return (1 / 8) * dP * da_dP * (4 * lam - 4 * mu + tmp1) / mu - 1 / 512 * dP**2 * (
-        4 * a1**3 * d2a_dP2 * tmp15
-        - 128 * lam * mu * tmp3
-        + 32 * lam * tmp14
-        + 8 * other_edge * tmp11
+    return (1 / 8) * dP * da_dP * (4.0 * lam - 4.0 * mu + tmp1) / mu - 1 / 512 * dP**2.0 * (
+        4.0 * a1**3.0 * d2a_dP2 * tmp15
+        - 128.0 * lam * mu * tmp3
+        + 32.0 * lam * tmp14
+        + 8.0 * other_edge * tmp11
         - other_edge * tmp16
         - other_edge * tmp8
         + other_edge * tmp9
         - tmp10 * tmp12
-        + 24 * tmp11
+        + 24.0 * tmp11
         - tmp12 * tmp14
-        + 5 * tmp16
+        + 5.0 * tmp16
         + tmp2 * tmp5
         + tmp4 * tmp5
         + tmp8
@@ -4049,40 +4081,40 @@ def stick_boundary_second_order(
     float
         b, same units as a1.
     """
-    tmp0 = math.pi * eta
+    tmp0 = 3.141592653589793 * eta
     tmp1 = a1 * tmp0
-    tmp2 = mu**2
+    tmp2 = mu**2.0
     tmp3 = a1 * d2a_dP2
-    tmp4 = lam**2
-    tmp5 = 64 * tmp3
-    tmp6 = da_dP**2
-    tmp7 = 16 * tmp6
+    tmp4 = lam**2.0
+    tmp5 = 64.0 * tmp3
+    tmp6 = da_dP**2.0
+    tmp7 = 16.0 * tmp6
     tmp8 = tmp4 * tmp7
     tmp9 = tmp2 * tmp7
     tmp10 = tmp1 * tmp6
     tmp11 = lam * tmp10
-    tmp12 = 32 * mu
-    tmp13 = a1**2
+    tmp12 = 32.0 * mu
+    tmp13 = a1**2.0
     tmp14 = d2a_dP2 * tmp0 * tmp13
-    tmp15 = math.pi**2 * eta**2
+    tmp15 = 3.141592653589793**2.0 * eta**2.0
     tmp16 = tmp13 * tmp15 * tmp6
     return (
         a1
-        - 1 / 8 * dP * da_dP * (4 * lam - 4 * mu + tmp1) / mu
+        - 1 / 8 * dP * da_dP * (4.0 * lam - 4.0 * mu + tmp1) / mu
         + (1 / 512)
-        * dP**2
+        * dP**2.0
         * (
-            4 * a1**3 * d2a_dP2 * tmp15
-            - 128 * lam * mu * tmp3
-            + 32 * lam * tmp14
-            + 8 * other_edge * tmp11
+            4.0 * a1**3.0 * d2a_dP2 * tmp15
+            - 128.0 * lam * mu * tmp3
+            + 32.0 * lam * tmp14
+            + 8.0 * other_edge * tmp11
             - other_edge * tmp16
             - other_edge * tmp8
             + other_edge * tmp9
             - tmp10 * tmp12
-            + 24 * tmp11
+            + 24.0 * tmp11
             - tmp12 * tmp14
-            + 5 * tmp16
+            + 5.0 * tmp16
             + tmp2 * tmp5
             + tmp4 * tmp5
             + tmp8
@@ -4132,23 +4164,23 @@ def slip_zone_width_second_coefficient(
     tmp0 = (1 / 8) * d2a_dP2
     tmp1 = 1 / mu
     tmp2 = 1 / a1
-    tmp3 = da_dP**2
+    tmp3 = da_dP**2.0
     tmp4 = (1 / 32) * tmp2 * tmp3
-    tmp5 = lam**2
-    tmp6 = mu ** (-2)
+    tmp5 = lam**2.0
+    tmp6 = mu ** (-2.0)
     tmp7 = tmp5 * tmp6
     tmp8 = a1 * tmp6
-    tmp9 = math.pi * eta * lam * tmp3 * tmp6
-    tmp10 = math.pi**2
-    tmp11 = eta**2
+    tmp9 = 3.141592653589793 * eta * lam * tmp3 * tmp6
+    tmp10 = 3.141592653589793**2.0
+    tmp11 = eta**2.0
     tmp12 = tmp10 * tmp11
     return (
-        -1 / 128 * a1**2 * d2a_dP2 * tmp12 * tmp6
-        + (1 / 16) * math.pi * a1 * d2a_dP2 * eta * tmp1
+        -1 / 128 * a1**2.0 * d2a_dP2 * tmp12 * tmp6
+        + (1 / 16) * 3.141592653589793 * a1 * d2a_dP2 * eta * tmp1
         + (1 / 512) * a1 * other_edge * tmp10 * tmp11 * tmp3 * tmp6
-        - 1 / 16 * math.pi * d2a_dP2 * eta * lam * tmp8
+        - 1 / 16 * 3.141592653589793 * d2a_dP2 * eta * lam * tmp8
         + (1 / 4) * d2a_dP2 * lam * tmp1
-        + (1 / 16) * math.pi * eta * tmp1 * tmp3
+        + (1 / 16) * 3.141592653589793 * eta * tmp1 * tmp3
         + (1 / 32) * other_edge * tmp2 * tmp3 * tmp5 * tmp6
         - other_edge * tmp4
         - 1 / 64 * other_edge * tmp9
@@ -4199,33 +4231,33 @@ def paper_stick_boundary_error(
     float
         E [length^3/force^2].
     """
-    tmp0 = mu**2
-    tmp1 = lam**2
-    tmp2 = 64 * a1 * d2a_dP2
-    tmp3 = da_dP**2
-    tmp4 = 48 * tmp3
+    tmp0 = mu**2.0
+    tmp1 = lam**2.0
+    tmp2 = 64.0 * a1 * d2a_dP2
+    tmp3 = da_dP**2.0
+    tmp4 = 48.0 * tmp3
     tmp5 = other_edge * tmp3
-    tmp6 = 16 * tmp5
-    tmp7 = math.pi * eta * lam
+    tmp6 = 16.0 * tmp5
+    tmp7 = 3.141592653589793 * eta * lam
     tmp8 = a1 * tmp7
-    tmp9 = a1**2
-    tmp10 = math.pi**2 * eta**2
+    tmp9 = a1**2.0
+    tmp10 = 3.141592653589793**2.0 * eta**2.0
     tmp11 = tmp10 * tmp9
     return (
         (1 / 512)
         * (
-            4 * a1**3 * d2a_dP2 * tmp10
-            + 32 * d2a_dP2 * tmp7 * tmp9
+            4.0 * a1**3.0 * d2a_dP2 * tmp10
+            + 32.0 * d2a_dP2 * tmp7 * tmp9
             - tmp0 * tmp2
             - tmp0 * tmp4
             - tmp0 * tmp6
             + tmp1 * tmp2
             + tmp1 * tmp4
             + tmp1 * tmp6
-            - 9 * tmp11 * tmp3
+            - 9.0 * tmp11 * tmp3
             + tmp11 * tmp5
-            - 24 * tmp3 * tmp8
-            - 8 * tmp5 * tmp8
+            - 24.0 * tmp3 * tmp8
+            - 8.0 * tmp5 * tmp8
         )
         / (a1 * tmp0)
     )
@@ -4281,51 +4313,51 @@ def slip_zone_width_second_order_from_multiplier(
     float
         a1 - b, same units as a1.
     """
-    tmp0 = mu**2
-    tmp1 = 256 * a1
+    tmp0 = mu**2.0
+    tmp1 = 256.0 * a1
     tmp2 = lam * mu
     tmp3 = L_I1 * tmp0
     tmp4 = dP * da_dP
     tmp5 = L_I1 * tmp4
     tmp6 = dL_I_dP * dP
     tmp7 = a1 * tmp6
-    tmp8 = lam**2
-    tmp9 = 16 * tmp5
+    tmp8 = lam**2.0
+    tmp9 = 16.0 * tmp5
     tmp10 = tmp8 * tmp9
     tmp11 = tmp3 * tmp4
-    tmp12 = 64 * tmp7
-    tmp13 = a1**2
-    tmp14 = math.pi * eta
+    tmp12 = 64.0 * tmp7
+    tmp13 = a1**2.0
+    tmp14 = 3.141592653589793 * eta
     tmp15 = tmp13 * tmp14
     tmp16 = mu * tmp15
     tmp17 = a1 * tmp14
-    tmp18 = 8 * lam * tmp17 * tmp5
-    tmp19 = 32 * tmp6
-    tmp20 = math.pi**2 * eta**2
+    tmp18 = 8.0 * lam * tmp17 * tmp5
+    tmp19 = 32.0 * tmp6
+    tmp20 = 3.141592653589793**2.0 * eta**2.0
     tmp21 = tmp13 * tmp20 * tmp5
     return (
         (1 / 512)
         * tmp4
         * (
             L_I1 * tmp1 * tmp2
-            + 64 * L_I1 * tmp16
-            + 4 * a1**3 * tmp20 * tmp6
+            + 64.0 * L_I1 * tmp16
+            + 4.0 * a1**3.0 * tmp20 * tmp6
             + lam * tmp15 * tmp19
             + mu * tmp17 * tmp9
             + other_edge * tmp10
-            - 16 * other_edge * tmp11
+            - 16.0 * other_edge * tmp11
             - other_edge * tmp18
             + other_edge * tmp21
             + tmp0 * tmp12
             - tmp1 * tmp3
             + tmp10
-            + 48 * tmp11
+            + 48.0 * tmp11
             + tmp12 * tmp8
             - tmp16 * tmp19
             - tmp18
-            - 64 * tmp2 * tmp5
-            - 128 * tmp2 * tmp7
-            - 3 * tmp21
+            - 64.0 * tmp2 * tmp5
+            - 128.0 * tmp2 * tmp7
+            - 3.0 * tmp21
         )
         / (L_I1 * a1 * tmp0)
     )
@@ -4375,26 +4407,26 @@ def slip_zone_width_second_order_dimensionless(
     float
         (a1 - b)/a1, dimensionless.
     """
-    tmp0 = 256 * multiplier
-    tmp1 = 64 * multiplier_slope
+    tmp0 = 256.0 * multiplier
+    tmp1 = 64.0 * multiplier_slope
     tmp2 = growth * multiplier
     tmp3 = lam_mu * multiplier_slope
-    tmp4 = math.pi * eta_a1_mu
-    tmp5 = 32 * tmp4
+    tmp4 = 3.141592653589793 * eta_a1_mu
+    tmp5 = 32.0 * tmp4
     tmp6 = lam_mu * tmp2
-    tmp7 = 16 * tmp2
+    tmp7 = 16.0 * tmp2
     tmp8 = other_edge * tmp7
-    tmp9 = lam_mu**2
-    tmp10 = 8 * tmp4 * tmp6
-    tmp11 = math.pi**2 * eta_a1_mu**2
+    tmp9 = lam_mu**2.0
+    tmp10 = 8.0 * tmp4 * tmp6
+    tmp11 = 3.141592653589793**2.0 * eta_a1_mu**2.0
     tmp12 = tmp11 * tmp2
     return (
         (1 / 512)
         * growth
         * (
             lam_mu * tmp0
-            + 64 * multiplier * tmp4
-            + 4 * multiplier_slope * tmp11
+            + 64.0 * multiplier * tmp4
+            + 4.0 * multiplier_slope * tmp11
             - multiplier_slope * tmp5
             - other_edge * tmp10
             + other_edge * tmp12
@@ -4402,12 +4434,12 @@ def slip_zone_width_second_order_dimensionless(
             + tmp1 * tmp9
             + tmp1
             - tmp10
-            - 3 * tmp12
-            + 48 * tmp2
+            - 3.0 * tmp12
+            + 48.0 * tmp2
             + tmp3 * tmp5
-            - 128 * tmp3
+            - 128.0 * tmp3
             + tmp4 * tmp7
-            - 64 * tmp6
+            - 64.0 * tmp6
             + tmp7 * tmp9
             + tmp8 * tmp9
             - tmp8
@@ -4462,35 +4494,35 @@ def paper_stick_boundary_error_from_multiplier(
     float
         E [length^3/force^2].
     """
-    tmp0 = mu**2
-    tmp1 = lam**2
+    tmp0 = mu**2.0
+    tmp1 = lam**2.0
     tmp2 = L_I1 * da_dP
-    tmp3 = 16 * tmp2
+    tmp3 = 16.0 * tmp2
     tmp4 = tmp1 * tmp3
     tmp5 = tmp0 * tmp3
-    tmp6 = 64 * a1 * dL_I_dP
-    tmp7 = math.pi * eta * lam
+    tmp6 = 64.0 * a1 * dL_I_dP
+    tmp7 = 3.141592653589793 * eta * lam
     tmp8 = a1 * tmp2 * tmp7
-    tmp9 = a1**2
-    tmp10 = math.pi**2 * eta**2
+    tmp9 = a1**2.0
+    tmp10 = 3.141592653589793**2.0 * eta**2.0
     tmp11 = tmp10 * tmp2 * tmp9
     return (
         -1
         / 512
         * da_dP
         * (
-            4 * a1**3 * dL_I_dP * tmp10
-            + 32 * dL_I_dP * tmp7 * tmp9
+            4.0 * a1**3.0 * dL_I_dP * tmp10
+            + 32.0 * dL_I_dP * tmp7 * tmp9
             - other_edge * tmp11
             - other_edge * tmp4
             + other_edge * tmp5
-            + 8 * other_edge * tmp8
+            + 8.0 * other_edge * tmp8
             - tmp0 * tmp6
             + tmp1 * tmp6
-            + 11 * tmp11
+            + 11.0 * tmp11
             - tmp4
             + tmp5
-            + 40 * tmp8
+            + 40.0 * tmp8
         )
         / (L_I1 * a1 * tmp0)
     )
@@ -4549,8 +4581,8 @@ def slip_on_loading(
     tmp0 = -x
     tmp1 = L_I1 * mu + L_II1
     tmp2 = (4 / 3) / E_star
-    return tmp1 * tmp2 * max(0, -a1 - tmp0) ** (3 / 2) - tmp2 * (L_I2 * mu - L_II2 + tmp1) * max(
-        0, -b - tmp0
+    return tmp1 * tmp2 * max(0.0, -a1 - tmp0) ** (3 / 2) - tmp2 * (L_I2 * mu - L_II2 + tmp1) * max(
+        0.0, -b - tmp0
     ) ** (3 / 2)
 
 
@@ -4589,7 +4621,7 @@ def gap_opening_influence(k: float, h: float, ell: float, E_star: float) -> floa
     tmp2 = math.log(abs(k + 1 / 2))
     tmp3 = h * k
     return (
-        -2
+        -2.0
         * (
             -h * math.log(ell)
             + h * math.log(h)
@@ -4599,7 +4631,7 @@ def gap_opening_influence(k: float, h: float, ell: float, E_star: float) -> floa
             + tmp1 * tmp2
             + tmp2 * tmp3
         )
-        / (math.pi * E_star)
+        / (3.141592653589793 * E_star)
     )
 
 
@@ -4638,7 +4670,7 @@ def relative_slip_influence(k: float, h: float, ell: float, E_star: float) -> fl
     tmp2 = math.log(abs(k + 1 / 2))
     tmp3 = h * k
     return (
-        2
+        2.0
         * (
             -h * math.log(ell)
             + h * math.log(h)
@@ -4648,7 +4680,7 @@ def relative_slip_influence(k: float, h: float, ell: float, E_star: float) -> fl
             + tmp1 * tmp2
             + tmp2 * tmp3
         )
-        / (math.pi * E_star)
+        / (3.141592653589793 * E_star)
     )
 
 
@@ -4702,7 +4734,7 @@ def stick_boundary_accuracy(relative_growth: float, width: float) -> float:
     float
         The accuracy [length].
     """
-    return relative_growth**2 * abs(width)
+    return relative_growth**2.0 * abs(width)
 
 
 def paper_stick_boundary_accuracy(relative_growth: float, width: float) -> float:
@@ -4727,7 +4759,7 @@ def paper_stick_boundary_accuracy(relative_growth: float, width: float) -> float
     float
         The accuracy [length].
     """
-    return 2 * relative_growth**2 * abs(width)
+    return 2.0 * relative_growth**2.0 * abs(width)
 
 
 def stick_boundary_accuracy_first_order(relative_growth: float, width: float) -> float:
@@ -4754,7 +4786,7 @@ def stick_boundary_accuracy_first_order(relative_growth: float, width: float) ->
     float
         The accuracy [length].
     """
-    return 2 * relative_growth * abs(width)
+    return 2.0 * relative_growth * abs(width)
 
 
 def disagreement_limit(accuracy: float, other_accuracy: float, a1: float, rounding: float) -> float:
@@ -4812,7 +4844,7 @@ def normal_edge_multiplier_slope_loglog(P: float, L_I: float, ds: float, d2s: fl
     float
         dL_I/dP [1/length^(3/2)].
     """
-    return L_I * (-d2s / ds - 3 / 2 * ds + 1) / P
+    return L_I * (-d2s / ds - 3 / 2 * ds + 1.0) / P
 
 
 def hertz_pressure(x: float, P: float, R: float, E_star: float) -> float:
@@ -4840,7 +4872,12 @@ def hertz_pressure(x: float, P: float, R: float, E_star: float) -> float:
     float
         Contact pressure [force/length^2].
     """
-    return (1 / 2) * E_star * math.sqrt(max(0, -(x**2) + 4 * P * R / (math.pi * E_star))) / R
+    return (
+        (1 / 2)
+        * E_star
+        * math.sqrt(max(0.0, -(x**2.0) + 4.0 * P * R / (3.141592653589793 * E_star)))
+        / R
+    )
 
 
 def hertz_shear_traction_difference(
@@ -4879,15 +4916,15 @@ def hertz_shear_traction_difference(
     float
         q2 - q1 [force/length^2].
     """
-    tmp0 = x**2
-    tmp1 = 1 / math.pi
+    tmp0 = x**2.0
+    tmp1 = 1 / 3.141592653589793
     tmp2 = 1 / E_star
     tmp3 = E_star / R
     tmp4 = (1 / 2) * tmp3
     return mu * (
-        -tmp3 * math.sqrt(max(0, 4 * P_K * R * tmp1 * tmp2 - tmp0))
-        + tmp4 * math.sqrt(max(0, 4 * P1 * R * tmp1 * tmp2 - tmp0))
-        + tmp4 * math.sqrt(max(0, 4 * R * tmp1 * tmp2 * (P1 + dP) - tmp0))
+        -tmp3 * math.sqrt(max(0.0, 4.0 * P_K * R * tmp1 * tmp2 - tmp0))
+        + tmp4 * math.sqrt(max(0.0, 4.0 * P1 * R * tmp1 * tmp2 - tmp0))
+        + tmp4 * math.sqrt(max(0.0, 4.0 * R * tmp1 * tmp2 * (P1 + dP) - tmp0))
     )
 
 
@@ -4919,7 +4956,7 @@ def jaeger_ciavarella_traction_difference(p2: float, p1: float, p_K: float, mu: 
     float
         q2 - q1 [force/length^2].
     """
-    return mu * (p1 + p2 - 2 * p_K)
+    return mu * (p1 + p2 - 2.0 * p_K)
 
 
 def shear_traction_difference(
@@ -4980,8 +5017,8 @@ def shear_traction_difference(
     tmp6 = -b
     return (
         tmp1 * tmp2
-        + tmp3 * math.sqrt(max(0, a1 + tmp0))
-        + (-tmp4 - tmp5) * math.sqrt(max(0, b + tmp0))
+        + tmp3 * math.sqrt(max(0.0, a1 + tmp0))
+        + (-tmp4 - tmp5) * math.sqrt(max(0.0, b + tmp0))
         + (-1 / 2 * tmp4 * (a1 + tmp6) - 1 / 2 * tmp5 * (a2 + tmp6)) / tmp1
     )
 
@@ -5046,9 +5083,9 @@ def relative_slip_zone_measure(
     float
         Dimensionless measure.
     """
-    tmp0 = 4 * mu
-    tmp1 = math.pi * eta
-    tmp2 = a1 * tmp1 + 4 * lam
+    tmp0 = 4.0 * mu
+    tmp1 = 3.141592653589793 * eta
+    tmp2 = a1 * tmp1 + 4.0 * lam
     tmp3 = da * tmp1 - tmp0 + tmp2
     tmp4 = (1 / 4) * L_I2
     return da * tmp4 * abs(tmp3 / ((1 / 4) * L_I1 * (tmp0 + tmp2) - tmp3 * tmp4)) / a1
@@ -5111,7 +5148,9 @@ def slip_zone_growth_measure(
     float
         Dimensionless measure.
     """
-    return (1 / 4) * dP * da_dP * abs(math.pi * a1 * eta + 4 * lam - 4 * mu) / (a1 * mu)
+    return (
+        (1 / 4) * dP * da_dP * abs(3.141592653589793 * a1 * eta + 4.0 * lam - 4.0 * mu) / (a1 * mu)
+    )
 
 
 def stick_ratio_first_order(
@@ -5149,9 +5188,9 @@ def stick_ratio_first_order(
     tmp2 = dP * da_dP
     return (
         (1 / 2) * dP * da_dP * tmp0
-        - 1 / 8 * math.pi * eta * tmp1 * tmp2
+        - 1 / 8 * 3.141592653589793 * eta * tmp1 * tmp2
         - 1 / 2 * lam * tmp0 * tmp1 * tmp2
-        + 1
+        + 1.0
     )
 
 
@@ -5188,7 +5227,7 @@ def stick_ratio_first_order_from_multipliers(
         b / a1, dimensionless.
     """
     tmp0 = (1 / 2) * dP * da_dP / a1
-    return tmp0 + 1 - L_II1 * tmp0 / (L_I1 * mu)
+    return tmp0 + 1.0 - L_II1 * tmp0 / (L_I1 * mu)
 
 
 def slip_zone_growth_measure_from_multipliers(
@@ -5256,4 +5295,4 @@ def slip_zone_width_first_order(
     float
         a1 - b, same units as a1.
     """
-    return dP * da_dP * ((1 / 8) * math.pi * a1 * eta + (1 / 2) * lam - 1 / 2 * mu) / mu
+    return dP * da_dP * ((1 / 8) * 3.141592653589793 * a1 * eta + (1 / 2) * lam - 1 / 2 * mu) / mu

@@ -76,10 +76,10 @@ def edge_shear(
     """
     a = a1
     L_I = L_I1
-    L_II1 = L_I * ((1 / 4) * math.pi * a * eta + lam)
+    L_II1 = L_I * ((1 / 4) * 3.141592653589793 * a * eta + lam)
     a = a2
     L_I = L_I2
-    L_II2 = L_I * ((1 / 4) * math.pi * a * eta + lam)
+    L_II2 = L_I * ((1 / 4) * 3.141592653589793 * a * eta + lam)
     tmp0 = L_I2 * mu
     tmp1 = (0.0 < L_II2 + tmp0) - (L_II2 + tmp0 < 0.0)
     tmp2 = -L_II2 + tmp0
@@ -264,15 +264,15 @@ def edge_estimates(
     dL_I_dP = worst_multiplier_slope
     eq26 = dP * abs(dL_I_dP) / L_I1
     relative_growth = da / a1
-    orientation = direction - abs(direction) + 1
+    orientation = direction - abs(direction) + 1.0
     lam = orientation * own_lam
     eta = orientation * own_eta
-    other_edge = -direction * other_direction - abs(other_direction) + 1
-    tmp0 = (1 / 4) * math.pi * eta
+    other_edge = -direction * other_direction - abs(other_direction) + 1.0
+    tmp0 = (1 / 4) * 3.141592653589793 * eta
     tmp1 = a1 * tmp0 + lam
     tmp2 = L_I2 * (da * tmp0 - mu + tmp1)
     paper_width = da * tmp2 / (L_I1 * (mu + tmp1) - tmp2)
-    tmp0 = (1 / 4) * math.pi * eta
+    tmp0 = (1 / 4) * 3.141592653589793 * eta
     denominator = L_I1 * (a1 * tmp0 + lam + mu) - L_I2 * (a2 * tmp0 + lam - mu)
     da_dP = a_slope1
     tmp0 = 1 / a1
@@ -280,33 +280,33 @@ def edge_estimates(
     tmp2 = dP * da_dP
     ratio_first_order = (
         (1 / 2) * dP * da_dP * tmp0
-        - 1 / 8 * math.pi * eta * tmp1 * tmp2
+        - 1 / 8 * 3.141592653589793 * eta * tmp1 * tmp2
         - 1 / 2 * lam * tmp0 * tmp1 * tmp2
-        + 1
+        + 1.0
     )
     b_first_order = a1 * ratio_first_order
     lam_mu = lam / mu
     eta_a1_mu = a1 * eta / mu
-    tmp0 = 256 * multiplier
-    tmp1 = 64 * multiplier_slope
+    tmp0 = 256.0 * multiplier
+    tmp1 = 64.0 * multiplier_slope
     tmp2 = growth * multiplier
     tmp3 = lam_mu * multiplier_slope
-    tmp4 = math.pi * eta_a1_mu
-    tmp5 = 32 * tmp4
+    tmp4 = 3.141592653589793 * eta_a1_mu
+    tmp5 = 32.0 * tmp4
     tmp6 = lam_mu * tmp2
-    tmp7 = 16 * tmp2
+    tmp7 = 16.0 * tmp2
     tmp8 = other_edge * tmp7
-    tmp9 = lam_mu**2
-    tmp10 = 8 * tmp4 * tmp6
-    tmp11 = math.pi**2 * eta_a1_mu**2
+    tmp9 = lam_mu**2.0
+    tmp10 = 8.0 * tmp4 * tmp6
+    tmp11 = 3.141592653589793**2.0 * eta_a1_mu**2.0
     tmp12 = tmp11 * tmp2
     width_ratio = (
         (1 / 512)
         * growth
         * (
             lam_mu * tmp0
-            + 64 * multiplier * tmp4
-            + 4 * multiplier_slope * tmp11
+            + 64.0 * multiplier * tmp4
+            + 4.0 * multiplier_slope * tmp11
             - multiplier_slope * tmp5
             - other_edge * tmp10
             + other_edge * tmp12
@@ -314,12 +314,12 @@ def edge_estimates(
             + tmp1 * tmp9
             + tmp1
             - tmp10
-            - 3 * tmp12
-            + 48 * tmp2
+            - 3.0 * tmp12
+            + 48.0 * tmp2
             + tmp3 * tmp5
-            - 128 * tmp3
+            - 128.0 * tmp3
             + tmp4 * tmp7
-            - 64 * tmp6
+            - 64.0 * tmp6
             + tmp7 * tmp9
             + tmp8 * tmp9
             - tmp8
@@ -327,23 +327,25 @@ def edge_estimates(
         / multiplier
     )
     width = a1 * width_ratio
-    tmp0 = math.sqrt(2)
+    tmp0 = math.sqrt(2.0)
     tmp1 = math.sqrt(a1)
     corrective_stick_width = -1 / 2 * da + dP * (
-        (1 / 8) * eta * tmp0 * tmp1 + (1 / 2) * lam * tmp0 / (math.pi * tmp1)
+        (1 / 8) * eta * tmp0 * tmp1 + (1 / 2) * lam * tmp0 / (3.141592653589793 * tmp1)
     ) / (L_I1 * mu)
     P_K = P1 - 1 / 2 * dP * (lam - mu) / mu
     da_dP = worst_slope
-    eq27 = (1 / 4) * dP * da_dP * abs(math.pi * a1 * eta + 4 * lam - 4 * mu) / (a1 * mu)
-    accuracy = relative_growth**2 * abs(width)
-    paper_accuracy = 2 * relative_growth**2 * abs(width)
-    first_accuracy = 2 * relative_growth * abs(width)
+    eq27 = (
+        (1 / 4) * dP * da_dP * abs(3.141592653589793 * a1 * eta + 4.0 * lam - 4.0 * mu) / (a1 * mu)
+    )
+    accuracy = relative_growth**2.0 * abs(width)
+    paper_accuracy = 2.0 * relative_growth**2.0 * abs(width)
+    first_accuracy = 2.0 * relative_growth * abs(width)
     other_accuracy = paper_accuracy
     paper_limit = a1 * rounding + accuracy + other_accuracy
     other_accuracy = first_accuracy
     first_limit = a1 * rounding + accuracy + other_accuracy
     stick_limit = first_limit
-    exact_accuracy = 0
+    exact_accuracy = 0.0
     other_accuracy = exact_accuracy
     exact_limit = a1 * rounding + accuracy + other_accuracy
     return (
@@ -619,12 +621,12 @@ def both_edges(
     eta = cycle_eta
     a = a1
     L_I = L_I1
-    right_L_II1 = L_I * ((1 / 4) * math.pi * a * eta + lam)
+    right_L_II1 = L_I * ((1 / 4) * 3.141592653589793 * a * eta + lam)
     lam = cycle_lam
     eta = cycle_eta
     a = a2
     L_I = L_I2
-    right_L_II2 = L_I * ((1 / 4) * math.pi * a * eta + lam)
+    right_L_II2 = L_I * ((1 / 4) * 3.141592653589793 * a * eta + lam)
     L_II2 = right_L_II2
     tmp0 = L_I2 * mu
     tmp1 = (0.0 < L_II2 + tmp0) - (L_II2 + tmp0 < 0.0)
@@ -639,12 +641,12 @@ def both_edges(
     eta = cycle_eta
     a = a1
     L_I = L_I1
-    left_L_II1 = L_I * ((1 / 4) * math.pi * a * eta + lam)
+    left_L_II1 = L_I * ((1 / 4) * 3.141592653589793 * a * eta + lam)
     lam = mirrored_lam
     eta = cycle_eta
     a = a2
     L_I = L_I2
-    left_L_II2 = L_I * ((1 / 4) * math.pi * a * eta + lam)
+    left_L_II2 = L_I * ((1 / 4) * 3.141592653589793 * a * eta + lam)
     L_II2 = left_L_II2
     tmp0 = L_I2 * mu
     tmp1 = (0.0 < L_II2 + tmp0) - (L_II2 + tmp0 < 0.0)
@@ -668,19 +670,19 @@ def both_edges(
     dL_I_dP = worst_multiplier_slope
     eq26 = dP * abs(dL_I_dP) / L_I1
     relative_growth = da / a1
-    right_orientation = right_direction - abs(right_direction) + 1
+    right_orientation = right_direction - abs(right_direction) + 1.0
     right_lam = cycle_lam * right_orientation
     right_eta = cycle_eta * right_orientation
-    right_other_edge = -left_direction * right_direction - abs(left_direction) + 1
+    right_other_edge = -left_direction * right_direction - abs(left_direction) + 1.0
     lam = right_lam
     eta = right_eta
-    tmp0 = (1 / 4) * math.pi * eta
+    tmp0 = (1 / 4) * 3.141592653589793 * eta
     tmp1 = a1 * tmp0 + lam
     tmp2 = L_I2 * (da * tmp0 - mu + tmp1)
     right_paper_width = da * tmp2 / (L_I1 * (mu + tmp1) - tmp2)
     lam = right_lam
     eta = right_eta
-    tmp0 = (1 / 4) * math.pi * eta
+    tmp0 = (1 / 4) * 3.141592653589793 * eta
     right_denominator = L_I1 * (a1 * tmp0 + lam + mu) - L_I2 * (a2 * tmp0 + lam - mu)
     lam = right_lam
     eta = right_eta
@@ -690,9 +692,9 @@ def both_edges(
     tmp2 = dP * da_dP
     right_ratio_first_order = (
         (1 / 2) * dP * da_dP * tmp0
-        - 1 / 8 * math.pi * eta * tmp1 * tmp2
+        - 1 / 8 * 3.141592653589793 * eta * tmp1 * tmp2
         - 1 / 2 * lam * tmp0 * tmp1 * tmp2
-        + 1
+        + 1.0
     )
     right_b_first_order = a1 * right_ratio_first_order
     right_lam_mu = right_lam / mu
@@ -700,26 +702,26 @@ def both_edges(
     lam_mu = right_lam_mu
     eta_a1_mu = right_eta_a1_mu
     other_edge = right_other_edge
-    tmp0 = 256 * multiplier
-    tmp1 = 64 * multiplier_slope
+    tmp0 = 256.0 * multiplier
+    tmp1 = 64.0 * multiplier_slope
     tmp2 = growth * multiplier
     tmp3 = lam_mu * multiplier_slope
-    tmp4 = math.pi * eta_a1_mu
-    tmp5 = 32 * tmp4
+    tmp4 = 3.141592653589793 * eta_a1_mu
+    tmp5 = 32.0 * tmp4
     tmp6 = lam_mu * tmp2
-    tmp7 = 16 * tmp2
+    tmp7 = 16.0 * tmp2
     tmp8 = other_edge * tmp7
-    tmp9 = lam_mu**2
-    tmp10 = 8 * tmp4 * tmp6
-    tmp11 = math.pi**2 * eta_a1_mu**2
+    tmp9 = lam_mu**2.0
+    tmp10 = 8.0 * tmp4 * tmp6
+    tmp11 = 3.141592653589793**2.0 * eta_a1_mu**2.0
     tmp12 = tmp11 * tmp2
     right_width_ratio = (
         (1 / 512)
         * growth
         * (
             lam_mu * tmp0
-            + 64 * multiplier * tmp4
-            + 4 * multiplier_slope * tmp11
+            + 64.0 * multiplier * tmp4
+            + 4.0 * multiplier_slope * tmp11
             - multiplier_slope * tmp5
             - other_edge * tmp10
             + other_edge * tmp12
@@ -727,12 +729,12 @@ def both_edges(
             + tmp1 * tmp9
             + tmp1
             - tmp10
-            - 3 * tmp12
-            + 48 * tmp2
+            - 3.0 * tmp12
+            + 48.0 * tmp2
             + tmp3 * tmp5
-            - 128 * tmp3
+            - 128.0 * tmp3
             + tmp4 * tmp7
-            - 64 * tmp6
+            - 64.0 * tmp6
             + tmp7 * tmp9
             + tmp8 * tmp9
             - tmp8
@@ -742,23 +744,25 @@ def both_edges(
     right_width = a1 * right_width_ratio
     lam = right_lam
     eta = right_eta
-    tmp0 = math.sqrt(2)
+    tmp0 = math.sqrt(2.0)
     tmp1 = math.sqrt(a1)
     right_corrective_stick_width = -1 / 2 * da + dP * (
-        (1 / 8) * eta * tmp0 * tmp1 + (1 / 2) * lam * tmp0 / (math.pi * tmp1)
+        (1 / 8) * eta * tmp0 * tmp1 + (1 / 2) * lam * tmp0 / (3.141592653589793 * tmp1)
     ) / (L_I1 * mu)
     lam = right_lam
     right_P_K = P1 - 1 / 2 * dP * (lam - mu) / mu
     lam = right_lam
     eta = right_eta
     da_dP = worst_slope
-    right_eq27 = (1 / 4) * dP * da_dP * abs(math.pi * a1 * eta + 4 * lam - 4 * mu) / (a1 * mu)
+    right_eq27 = (
+        (1 / 4) * dP * da_dP * abs(3.141592653589793 * a1 * eta + 4.0 * lam - 4.0 * mu) / (a1 * mu)
+    )
     width = right_width
-    right_accuracy = relative_growth**2 * abs(width)
+    right_accuracy = relative_growth**2.0 * abs(width)
     width = right_width
-    right_paper_accuracy = 2 * relative_growth**2 * abs(width)
+    right_paper_accuracy = 2.0 * relative_growth**2.0 * abs(width)
     width = right_width
-    right_first_accuracy = 2 * relative_growth * abs(width)
+    right_first_accuracy = 2.0 * relative_growth * abs(width)
     accuracy = right_accuracy
     other_accuracy = right_paper_accuracy
     right_paper_limit = a1 * rounding + accuracy + other_accuracy
@@ -766,23 +770,23 @@ def both_edges(
     other_accuracy = right_first_accuracy
     right_first_limit = a1 * rounding + accuracy + other_accuracy
     right_stick_limit = right_first_limit
-    right_exact_accuracy = 0
+    right_exact_accuracy = 0.0
     accuracy = right_accuracy
     other_accuracy = right_exact_accuracy
     right_exact_limit = a1 * rounding + accuracy + other_accuracy
-    left_orientation = left_direction - abs(left_direction) + 1
+    left_orientation = left_direction - abs(left_direction) + 1.0
     left_lam = left_orientation * mirrored_lam
     left_eta = cycle_eta * left_orientation
-    left_other_edge = -left_direction * right_direction - abs(right_direction) + 1
+    left_other_edge = -left_direction * right_direction - abs(right_direction) + 1.0
     lam = left_lam
     eta = left_eta
-    tmp0 = (1 / 4) * math.pi * eta
+    tmp0 = (1 / 4) * 3.141592653589793 * eta
     tmp1 = a1 * tmp0 + lam
     tmp2 = L_I2 * (da * tmp0 - mu + tmp1)
     left_paper_width = da * tmp2 / (L_I1 * (mu + tmp1) - tmp2)
     lam = left_lam
     eta = left_eta
-    tmp0 = (1 / 4) * math.pi * eta
+    tmp0 = (1 / 4) * 3.141592653589793 * eta
     left_denominator = L_I1 * (a1 * tmp0 + lam + mu) - L_I2 * (a2 * tmp0 + lam - mu)
     lam = left_lam
     eta = left_eta
@@ -792,9 +796,9 @@ def both_edges(
     tmp2 = dP * da_dP
     left_ratio_first_order = (
         (1 / 2) * dP * da_dP * tmp0
-        - 1 / 8 * math.pi * eta * tmp1 * tmp2
+        - 1 / 8 * 3.141592653589793 * eta * tmp1 * tmp2
         - 1 / 2 * lam * tmp0 * tmp1 * tmp2
-        + 1
+        + 1.0
     )
     left_b_first_order = a1 * left_ratio_first_order
     left_lam_mu = left_lam / mu
@@ -802,26 +806,26 @@ def both_edges(
     lam_mu = left_lam_mu
     eta_a1_mu = left_eta_a1_mu
     other_edge = left_other_edge
-    tmp0 = 256 * multiplier
-    tmp1 = 64 * multiplier_slope
+    tmp0 = 256.0 * multiplier
+    tmp1 = 64.0 * multiplier_slope
     tmp2 = growth * multiplier
     tmp3 = lam_mu * multiplier_slope
-    tmp4 = math.pi * eta_a1_mu
-    tmp5 = 32 * tmp4
+    tmp4 = 3.141592653589793 * eta_a1_mu
+    tmp5 = 32.0 * tmp4
     tmp6 = lam_mu * tmp2
-    tmp7 = 16 * tmp2
+    tmp7 = 16.0 * tmp2
     tmp8 = other_edge * tmp7
-    tmp9 = lam_mu**2
-    tmp10 = 8 * tmp4 * tmp6
-    tmp11 = math.pi**2 * eta_a1_mu**2
+    tmp9 = lam_mu**2.0
+    tmp10 = 8.0 * tmp4 * tmp6
+    tmp11 = 3.141592653589793**2.0 * eta_a1_mu**2.0
     tmp12 = tmp11 * tmp2
     left_width_ratio = (
         (1 / 512)
         * growth
         * (
             lam_mu * tmp0
-            + 64 * multiplier * tmp4
-            + 4 * multiplier_slope * tmp11
+            + 64.0 * multiplier * tmp4
+            + 4.0 * multiplier_slope * tmp11
             - multiplier_slope * tmp5
             - other_edge * tmp10
             + other_edge * tmp12
@@ -829,12 +833,12 @@ def both_edges(
             + tmp1 * tmp9
             + tmp1
             - tmp10
-            - 3 * tmp12
-            + 48 * tmp2
+            - 3.0 * tmp12
+            + 48.0 * tmp2
             + tmp3 * tmp5
-            - 128 * tmp3
+            - 128.0 * tmp3
             + tmp4 * tmp7
-            - 64 * tmp6
+            - 64.0 * tmp6
             + tmp7 * tmp9
             + tmp8 * tmp9
             - tmp8
@@ -844,23 +848,25 @@ def both_edges(
     left_width = a1 * left_width_ratio
     lam = left_lam
     eta = left_eta
-    tmp0 = math.sqrt(2)
+    tmp0 = math.sqrt(2.0)
     tmp1 = math.sqrt(a1)
     left_corrective_stick_width = -1 / 2 * da + dP * (
-        (1 / 8) * eta * tmp0 * tmp1 + (1 / 2) * lam * tmp0 / (math.pi * tmp1)
+        (1 / 8) * eta * tmp0 * tmp1 + (1 / 2) * lam * tmp0 / (3.141592653589793 * tmp1)
     ) / (L_I1 * mu)
     lam = left_lam
     left_P_K = P1 - 1 / 2 * dP * (lam - mu) / mu
     lam = left_lam
     eta = left_eta
     da_dP = worst_slope
-    left_eq27 = (1 / 4) * dP * da_dP * abs(math.pi * a1 * eta + 4 * lam - 4 * mu) / (a1 * mu)
+    left_eq27 = (
+        (1 / 4) * dP * da_dP * abs(3.141592653589793 * a1 * eta + 4.0 * lam - 4.0 * mu) / (a1 * mu)
+    )
     width = left_width
-    left_accuracy = relative_growth**2 * abs(width)
+    left_accuracy = relative_growth**2.0 * abs(width)
     width = left_width
-    left_paper_accuracy = 2 * relative_growth**2 * abs(width)
+    left_paper_accuracy = 2.0 * relative_growth**2.0 * abs(width)
     width = left_width
-    left_first_accuracy = 2 * relative_growth * abs(width)
+    left_first_accuracy = 2.0 * relative_growth * abs(width)
     accuracy = left_accuracy
     other_accuracy = left_paper_accuracy
     left_paper_limit = a1 * rounding + accuracy + other_accuracy
@@ -868,7 +874,7 @@ def both_edges(
     other_accuracy = left_first_accuracy
     left_first_limit = a1 * rounding + accuracy + other_accuracy
     left_stick_limit = left_first_limit
-    left_exact_accuracy = 0
+    left_exact_accuracy = 0.0
     accuracy = left_accuracy
     other_accuracy = left_exact_accuracy
     left_exact_limit = a1 * rounding + accuracy + other_accuracy
@@ -978,22 +984,31 @@ def hertz_cycle_state(P1: float, dP: float, R: float, E_star: float) -> tuple[fl
     """
     P2 = P1 + dP
     P = P1
-    a1 = 2 * math.sqrt(P) * math.sqrt(R) / (math.sqrt(math.pi) * math.sqrt(E_star))
-    tmp0 = 2 * math.sqrt(R) / (math.sqrt(math.pi) * math.sqrt(E_star))
-    da = 4 * R * dP / (math.pi * E_star * (math.sqrt(P1) * tmp0 + tmp0 * math.sqrt(P1 + dP)))
+    a1 = 2.0 * math.sqrt(P) * math.sqrt(R) / (math.sqrt(3.141592653589793) * math.sqrt(E_star))
+    tmp0 = 2.0 * math.sqrt(R) / (math.sqrt(3.141592653589793) * math.sqrt(E_star))
+    da = (
+        4.0
+        * R
+        * dP
+        / (3.141592653589793 * E_star * (math.sqrt(P1) * tmp0 + tmp0 * math.sqrt(P1 + dP)))
+    )
     a2 = a1 + da
     P = P1
-    L_I1 = E_star ** (3 / 4) * P ** (1 / 4) / (math.pi ** (1 / 4) * R ** (3 / 4))
+    L_I1 = E_star ** (3 / 4) * P ** (1 / 4) / (3.141592653589793 ** (1 / 4) * R ** (3 / 4))
     P = P2
-    L_I2 = E_star ** (3 / 4) * P ** (1 / 4) / (math.pi ** (1 / 4) * R ** (3 / 4))
+    L_I2 = E_star ** (3 / 4) * P ** (1 / 4) / (3.141592653589793 ** (1 / 4) * R ** (3 / 4))
     a = a1
-    load_slope1 = (1 / 2) * math.pi * E_star * a / R
+    load_slope1 = (1 / 2) * 3.141592653589793 * E_star * a / R
     a = a2
-    load_slope2 = (1 / 2) * math.pi * E_star * a / R
+    load_slope2 = (1 / 2) * 3.141592653589793 * E_star * a / R
     P = P1
-    L_I_slope1 = (1 / 4) * E_star ** (3 / 4) / (math.pi ** (1 / 4) * P ** (3 / 4) * R ** (3 / 4))
+    L_I_slope1 = (
+        (1 / 4) * E_star ** (3 / 4) / (3.141592653589793 ** (1 / 4) * P ** (3 / 4) * R ** (3 / 4))
+    )
     P = P2
-    L_I_slope2 = (1 / 4) * E_star ** (3 / 4) / (math.pi ** (1 / 4) * P ** (3 / 4) * R ** (3 / 4))
+    L_I_slope2 = (
+        (1 / 4) * E_star ** (3 / 4) / (3.141592653589793 ** (1 / 4) * P ** (3 / 4) * R ** (3 / 4))
+    )
     return (
         P2,
         a1,

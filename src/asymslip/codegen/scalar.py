@@ -14,6 +14,7 @@ something ``math`` lacks is left out, with a note in the module.
 
 from __future__ import annotations
 
+import math
 import textwrap
 from collections.abc import Mapping, Sequence
 
@@ -34,6 +35,19 @@ class ScalarCodePrinter(BranchFree, ReciprocalAsDivision, PythonCodePrinter):
         super().__init__(
             {"fully_qualified_modules": True, "allow_unknown_functions": False, "strict": True}
         )
+
+    def _print_Integer(self, expr: sympy.Integer) -> str:
+        # 256.0 * x, not 256 * x: CPython 3.11 specialises float-float arithmetic only, so an
+        # int operand takes the generic path (~15 % of an edge program's time).  The value is
+        # the same double either way: Python converts the int to the nearest double before it
+        # multiplies (and x**2.0 is x**2), so every result keeps its bits.
+        return f"{int(expr)}.0"
+
+    def _print_Pi(self, expr: sympy.Expr) -> str:
+        # pi as the double math.pi holds (repr round-trips it): a literal, not a module
+        # attribute looked up at every use, and folded with its neighbours (pi**2.0) when
+        # Python compiles the module -- by the same float arithmetic, so the same bits.
+        return repr(math.pi)
 
     def _print_Max(self, expr: sympy.Max) -> str:
         return f"max({', '.join(self._print(arg) for arg in expr.args)})"
