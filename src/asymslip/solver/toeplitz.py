@@ -58,19 +58,21 @@ class SolverError(RuntimeError):
     """
 
 
-#: The odd parts 3^b 5^c (b, c <= 2) allowed in the lengths of :func:`quick_length`.
-QUICK_ODD_PARTS = (1, 3, 5, 9, 15, 25, 45, 75, 225)
+#: The odd parts 3^b 5^c (b <= 2, c <= 3) allowed in the lengths of :func:`quick_length`.
+QUICK_ODD_PARTS = (1, 3, 5, 9, 15, 25, 45, 75, 125, 225, 375, 1125)
 
 
 @functools.lru_cache(maxsize=4096)
 def quick_length(n: int) -> int:
-    """Smallest 2^a 3^b 5^c >= n with b <= 2 and c <= 2: the lengths the solver transforms.
+    """Smallest 2^a 3^b 5^c >= n with b <= 2 and c <= 3: the lengths the solver transforms.
 
-    NumPy's FFT (pocketfft) costs least per point on lengths that are mostly a power of 2:
-    measured on the development machine (rfft and irfft, best of 9 rounds), 102,400 = 2^12 5^2
-    took 7.1 ns a point and 204,800 = 2^13 5^2 8.1, against 10.1 for 118,098 = 2 3^10 and 8.9
-    for 200,000 = 2^6 5^5, the smallest 5-smooth lengths (:func:`fast_length`) the solver used
-    before.  The padding this costs is at most 1/8 (the odd parts are at most 9/8 apart).
+    NumPy's FFT (pocketfft) costs least per point on lengths that are mostly a power of 2 with
+    a small odd part.  Measured on the development machine (rfft and irfft, best of several
+    rounds, ns a point): 102,400 = 2^12 5^2 took 7.1 and 204,800 = 2^13 5^2 8.1, against 10.1
+    for 118,098 = 2 3^10 and 8.9 for 200,000 = 2^6 5^5, the smallest 5-smooth lengths the
+    solver used before; at 10^6 points a pure power of 2 is slow (2^21: 20.8, 2^20: 14.2)
+    where 2,048,000 = 2^14 5^3 took 16.2 and 1,024,000 = 2^13 5^3 12.4.  The padding this
+    costs is at most 1/8 (the odd parts are at most 9/8 apart).
     """
     best = None
     for odd in QUICK_ODD_PARTS:
