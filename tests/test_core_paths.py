@@ -17,9 +17,12 @@ import pytest
 
 import asymslip.core.evaluation as core_evaluation
 from asymslip import FlatRoundedLaw, HertzLaw, LoadCycle, PowerLaw, TableLaw, slip_zone
+from asymslip.core.estimates import DISAGREEMENT_ROUNDING
 from asymslip.core.flags import MEASURE_KEYS, NUMBER_KEYS
 from asymslip.core.operations import RuleBroken
 from asymslip.errors import InputError
+from asymslip_gen import programs as array_programs
+from asymslip_gen import scalar_programs
 
 _FLAT = FlatRoundedLaw(c=1.0, R=10.0, E_star=1.0)
 _LOADS = np.geomspace(2.0, 400.0, 20)
@@ -96,17 +99,25 @@ def test_every_answered_cycle_has_the_array_paths_doubles_and_flags(name):
 def test_without_tension_the_mirrored_left_edge_reuses_the_right_edges_estimates(monkeypatch):
     # The left edge of the Fig. 5 cycle is the right edge mirrored: one call of the kernels
     # answers both, and the left edge reports the same b with the opposite shear multipliers
-    # and slip direction.  With bulk tension the mirror breaks and both edges are computed.
+    # and slip direction.  With bulk tension the mirror breaks and both edges are computed, in
+    # one call of the program of both edges.
     calls = []
+    both = []
     original = core_evaluation.edge_estimates
+    original_both = scalar_programs.both_edges
 
     def counted(*arguments):
         calls.append(arguments)
         return original(*arguments)
 
+    def counted_both(*arguments):
+        both.append(arguments)
+        return original_both(*arguments)
+
     monkeypatch.setattr(core_evaluation, "edge_estimates", counted)
+    monkeypatch.setattr(scalar_programs, "both_edges", counted_both)
     result = slip_zone(LAWS["hertz"], LoadCycle(100, 0, 105, 1), 0.1, edge="both")
-    assert len(calls) == 1
+    assert (len(calls), len(both)) == (1, 0)
     assert result.left.b == result.b and result.left.slip_zone_width == result.slip_zone_width
     assert (result.left.L_II2, result.left.slip_direction, result.slip_direction) == (
         -result.L_II2,
@@ -114,8 +125,36 @@ def test_without_tension_the_mirrored_left_edge_reuses_the_right_edges_estimates
         1,
     )
     calls.clear()
-    slip_zone(LAWS["hertz"], LoadCycle(100, 0, 105, 1, 0, 0.5), 0.1, edge="both")
-    assert len(calls) == 2
+    tension = slip_zone(LAWS["hertz"], LoadCycle(100, 0, 105, 1, 0, 0.5), 0.1, edge="both")
+    assert (len(calls), len(both)) == (0, 1)
+    assert tension.left.b != tension.b  # no mirror image: the tension breaks the symmetry
+
+
+@pytest.mark.parametrize("sigma2", [0.5, -0.5, 3.0])
+@pytest.mark.parametrize("dQ", [1.0, -1.0, 0.0, 6.0])
+def test_the_program_of_both_edges_gives_each_edges_own_bits(dQ, sigma2):
+    # both_edges is edge_shear and edge_estimates for each edge, the law's quantities once: the
+    # same doubles, bit for bit, as the two single-edge programs in each edge's own frame
+    # (lam -> -lam for the left edge), on floats and on arrays.
+    state = LAWS["hertz"].cycle_state(100.0, 5.0)
+    mu, lam, eta = 0.1, dQ / 5.0, sigma2 / 5.0
+    law_args = (state.a1, state.a2, state.da, state.L_I1, state.L_I2, state.P1, 5.0)
+    slopes = (state.load_slope1, state.load_slope2, state.L_I_slope1, state.L_I_slope2)
+    for programs in (scalar_programs, array_programs):
+        both = programs.both_edges(mu, lam, eta, *law_args, *slopes, DISAGREEMENT_ROUNDING)
+        shears = [
+            programs.edge_shear(mu, own, eta, state.a1, state.a2, state.L_I1, state.L_I2)
+            for own in (lam, -lam)
+        ]
+        singles = [
+            programs.edge_estimates(
+                mu, own, eta, *law_args, *slopes, shear[2], other[2], DISAGREEMENT_ROUNDING
+            )
+            for own, shear, other in ((lam, shears[0], shears[1]), (-lam, shears[1], shears[0]))
+        ]
+        expected = (*shears[0], *shears[1], *singles[0], *singles[1])
+        assert len(both) == len(expected) == 34
+        assert [float(value).hex() for value in both] == [float(value).hex() for value in expected]
 
 
 def test_a_rule_broken_on_floats_ends_the_cycle_and_is_named_as_on_arrays():

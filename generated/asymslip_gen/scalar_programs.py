@@ -21,6 +21,7 @@ import math
 __all__ = [
     "edge_shear",
     "edge_estimates",
+    "both_edges",
     "hertz_cycle_state",
 ]
 
@@ -97,8 +98,8 @@ def edge_shear(
 
 def edge_estimates(
     mu: float,
-    lam: float,
-    eta: float,
+    own_lam: float,
+    own_eta: float,
     a1: float,
     a2: float,
     da: float,
@@ -110,27 +111,28 @@ def edge_estimates(
     load_slope2: float,
     L_I_slope1: float,
     L_I_slope2: float,
-    other_edge: float,
+    direction: float,
+    other_direction: float,
     rounding: float,
 ) -> tuple[float, ...]:
     """Every estimate of b at one edge, its validity measures and stated accuracies.
 
-    For an edge of a symmetric contact slipping forward: lam and eta oriented so that it does
-    (edge_symmetry E2), other_edge the other edge's relative slip direction (+1 also where it
-    does not slip).  What an edge that does not slip reports instead is the slip-zone core's
-    business.
+    For an edge of a symmetric contact, lam and eta in its own frame: the program orients them
+    so that the edge slips forward (edge_symmetry E2) and finds the other edge's factor of b2
+    from the two directions.  What an edge that does not slip reports instead is the slip-zone
+    core's business.
 
-    Implements Eqs. (22), (25), (17), (28), (51), (19), (39), (40), (33), (24), (26), (27) of
+    Implements Eqs. (24), (26), (22), (25), (17), (28), (51), (19), (39), (40), (33), (27) of
     the paper through the formulas it evaluates; registered in ``derivations/edge_programs.py``.
 
     Parameters
     ----------
     mu : float
         Coefficient of friction, mu > 0.
-    lam : float
-        Load-path slope lambda = dQ/dP (18), either sign.
-    eta : float
-        Load-path slope eta = dsigma/dP (18), either sign [1/length].
+    own_lam : float
+        Load-path slope lambda = dQ/dP (18) in the edge's own frame.
+    own_eta : float
+        Load-path slope eta = dsigma/dP (18) [1/length].
     a1 : float
         Contact half-width a(P1) at load state 1 [length].
     a2 : float
@@ -154,12 +156,10 @@ def edge_estimates(
         Slope L_I'(P) of the normal edge multiplier at state 1.
     L_I_slope2 : float
         Slope L_I'(P) of the normal edge multiplier at state 2.
-    other_edge : float
-        +1 when the other edge of the contact slips in the same direction as this one (the same
-        sign of q2 - q1 there), -1 when it slips the opposite way.  For an other edge that does
-        not slip use +1: that branch joins the -1 branch continuously where the other edge
-        starts to slip the opposite way, but in between it is not derived (see the module
-        notes).
+    direction : float
+        The edge's slip direction in its own frame: +1, -1 or 0.
+    other_direction : float
+        The other edge's slip direction in its own frame (the mirrored one): +1, -1 or 0.
     rounding : float
         Rounding allowance relative to a1 (the core passes 1e-12): two estimates a few units in
         the last place apart do not disagree.
@@ -190,7 +190,7 @@ def edge_estimates(
         How far (22) may lie from b2 before they disagree [length].
     first_limit : float
         How far (28) may lie from b2 before they disagree [length].
-    first_limit : float
+    stick_limit : float
         How far (40) may lie from b2 before they disagree [length].
     exact_limit : float
         How far a(P_K) may lie from b2 before they disagree [length].
@@ -203,53 +203,71 @@ def edge_estimates(
     2. a_slope2 = 1/load_slope2
     3. worst_slope = Max(a_slope1, a_slope2)
     4. worst_multiplier_slope = Max(Abs(L_I_slope1), Abs(L_I_slope2))
-    5. paper_width = slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2) (22), (25): Width a1
+    5. growth = a_slope1*dP/a1
+    6. root = a1**(3/2)
+    7. multiplier = L_I1*root/dP
+    8. multiplier_slope = L_I_slope1*root
+    9. eq24 = contact_growth_measure(dP, worst_slope, a1) (24): Measure (24) of the contact
+       growth, dP a'(P) / a1.
+    10. eq26 = multiplier_growth_measure(dP, worst_multiplier_slope, L_I1) (26): Measure
+       (26) of the growth of L_I over the cycle, dP |L_I'(P)| / L_I1.
+    11. relative_growth = da/a1
+    12. orientation = direction - Abs(direction) + 1
+    13. lam = orientation*own_lam
+    14. eta = orientation*own_eta
+    15. other_edge = -direction*other_direction - Abs(other_direction) + 1
+    16. paper_width = slip_zone_width(mu, lam, eta, a1, da, L_I1, L_I2) (22), (25): Width a1
        - b of the slip zone inside the load-state-1 contact.
-    6. denominator = stick_boundary_denominator(mu, lam, eta, a1, a2, L_I1, L_I2) (17),
+    17. denominator = stick_boundary_denominator(mu, lam, eta, a1, a2, L_I1, L_I2) (17),
        (22): Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) on a proportional path.
-    7. ratio_first_order = stick_ratio_first_order(mu, lam, eta, a1, dP, a_slope1) (28),
+    18. ratio_first_order = stick_ratio_first_order(mu, lam, eta, a1, dP, a_slope1) (28),
        (51): First-order stick-boundary ratio b / a1 in the load change dP.
-    8. b_first_order = a1*ratio_first_order
-    9. lam_mu = lam/mu
-    10. eta_a1_mu = a1*eta/mu
-    11. growth = a_slope1*dP/a1
-    12. root = a1**(3/2)
-    13. multiplier = L_I1*root/dP
-    14. multiplier_slope = L_I_slope1*root
-    15. width_ratio = slip_zone_width_second_order_dimensionless(lam_mu, eta_a1_mu, growth,
+    19. b_first_order = a1*ratio_first_order
+    20. lam_mu = lam/mu
+    21. eta_a1_mu = a1*eta/mu
+    22. width_ratio = slip_zone_width_second_order_dimensionless(lam_mu, eta_a1_mu, growth,
        multiplier, multiplier_slope, other_edge) (19), (22), (28): (a1 - b)/a1 to second
        order, in dimensionless groups that cannot overflow.
-    16. width = a1*width_ratio
-    17. corrective_stick_width = corrective_stick_slip_zone_width(mu, lam, eta, a1, da,
+    23. width = a1*width_ratio
+    24. corrective_stick_width = corrective_stick_slip_zone_width(mu, lam, eta, a1, da,
        L_I1, dP) (39), (40): Slip-zone width d1 = a1 - b of the corrective-stick asymptote
        [12].
-    18. P_K = permanent_stick_load(P1, dP, lam, mu) (33): Normal load P_K whose contact is
+    25. P_K = permanent_stick_load(P1, dP, lam, mu) (33): Normal load P_K whose contact is
        the permanent stick zone (Jaeger-Ciavarella).
-    19. eq24 = contact_growth_measure(dP, worst_slope, a1) (24): Measure (24) of the contact
-       growth, dP a'(P) / a1.
-    20. eq26 = multiplier_growth_measure(dP, worst_multiplier_slope, L_I1) (26): Measure
-       (26) of the growth of L_I over the cycle, dP |L_I'(P)| / L_I1.
-    21. eq27 = slip_zone_growth_measure(mu, lam, eta, a1, dP, worst_slope) (27): Necessary-
+    26. eq27 = slip_zone_growth_measure(mu, lam, eta, a1, dP, worst_slope) (27): Necessary-
        condition measure (27), twice the first-order |b - a1| / a1.
-    22. relative_growth = da/a1
-    23. accuracy = stick_boundary_accuracy(relative_growth, width) (28): Stated accuracy of
+    27. accuracy = stick_boundary_accuracy(relative_growth, width) (28): Stated accuracy of
        the headline b (b2): (da/a1)^2 |a1 - b|.
-    24. paper_accuracy = paper_stick_boundary_accuracy(relative_growth, width) (22): Stated
+    28. paper_accuracy = paper_stick_boundary_accuracy(relative_growth, width) (22): Stated
        accuracy of (22): 2 (da/a1)^2 |a1 - b|, twice b2's.
-    25. first_accuracy = stick_boundary_accuracy_first_order(relative_growth, width) (28),
+    29. first_accuracy = stick_boundary_accuracy_first_order(relative_growth, width) (28),
        (40): Stated accuracy of a first-order b ((28), (40)): 2 (da/a1) |a1 - b|.
-    26. paper_limit = disagreement_limit(accuracy, paper_accuracy, a1, rounding) (22), (28),
+    30. paper_limit = disagreement_limit(accuracy, paper_accuracy, a1, rounding) (22), (28),
        (40): How far an estimate may lie from b before the two disagree.
-    27. first_limit = disagreement_limit(accuracy, first_accuracy, a1, rounding) (22), (28),
+    31. first_limit = disagreement_limit(accuracy, first_accuracy, a1, rounding) (22), (28),
        (40): How far an estimate may lie from b before the two disagree.
-    28. exact_accuracy = 0
-    29. exact_limit = disagreement_limit(accuracy, exact_accuracy, a1, rounding) (22), (28),
+    32. stick_limit = first_limit
+    33. exact_accuracy = 0
+    34. exact_limit = disagreement_limit(accuracy, exact_accuracy, a1, rounding) (22), (28),
        (40): How far an estimate may lie from b before the two disagree.
     """
     a_slope1 = 1 / load_slope1
     a_slope2 = 1 / load_slope2
     worst_slope = max(a_slope1, a_slope2)
     worst_multiplier_slope = max(abs(L_I_slope1), abs(L_I_slope2))
+    growth = a_slope1 * dP / a1
+    root = a1 ** (3 / 2)
+    multiplier = L_I1 * root / dP
+    multiplier_slope = L_I_slope1 * root
+    da_dP = worst_slope
+    eq24 = dP * da_dP / a1
+    dL_I_dP = worst_multiplier_slope
+    eq26 = dP * abs(dL_I_dP) / L_I1
+    relative_growth = da / a1
+    orientation = direction - abs(direction) + 1
+    lam = orientation * own_lam
+    eta = orientation * own_eta
+    other_edge = -direction * other_direction - abs(other_direction) + 1
     tmp0 = (1 / 4) * math.pi * eta
     tmp1 = a1 * tmp0 + lam
     tmp2 = L_I2 * (da * tmp0 - mu + tmp1)
@@ -269,10 +287,6 @@ def edge_estimates(
     b_first_order = a1 * ratio_first_order
     lam_mu = lam / mu
     eta_a1_mu = a1 * eta / mu
-    growth = a_slope1 * dP / a1
-    root = a1 ** (3 / 2)
-    multiplier = L_I1 * root / dP
-    multiplier_slope = L_I_slope1 * root
     tmp0 = 256 * multiplier
     tmp1 = 64 * multiplier_slope
     tmp2 = growth * multiplier
@@ -320,12 +334,7 @@ def edge_estimates(
     ) / (L_I1 * mu)
     P_K = P1 - 1 / 2 * dP * (lam - mu) / mu
     da_dP = worst_slope
-    eq24 = dP * da_dP / a1
-    dL_I_dP = worst_multiplier_slope
-    eq26 = dP * abs(dL_I_dP) / L_I1
-    da_dP = worst_slope
     eq27 = (1 / 4) * dP * da_dP * abs(math.pi * a1 * eta + 4 * lam - 4 * mu) / (a1 * mu)
-    relative_growth = da / a1
     accuracy = relative_growth**2 * abs(width)
     paper_accuracy = 2 * relative_growth**2 * abs(width)
     first_accuracy = 2 * relative_growth * abs(width)
@@ -333,6 +342,7 @@ def edge_estimates(
     paper_limit = a1 * rounding + accuracy + other_accuracy
     other_accuracy = first_accuracy
     first_limit = a1 * rounding + accuracy + other_accuracy
+    stick_limit = first_limit
     exact_accuracy = 0
     other_accuracy = exact_accuracy
     exact_limit = a1 * rounding + accuracy + other_accuracy
@@ -349,8 +359,554 @@ def edge_estimates(
         accuracy,
         paper_limit,
         first_limit,
-        first_limit,
+        stick_limit,
         exact_limit,
+    )
+
+
+def both_edges(
+    mu: float,
+    cycle_lam: float,
+    cycle_eta: float,
+    a1: float,
+    a2: float,
+    da: float,
+    L_I1: float,
+    L_I2: float,
+    P1: float,
+    dP: float,
+    load_slope1: float,
+    load_slope2: float,
+    L_I_slope1: float,
+    L_I_slope2: float,
+    rounding: float,
+) -> tuple[float, ...]:
+    """Both edges of a symmetric contact at once: shear, slip direction, estimates.
+
+    The right edge as edge_shear and edge_estimates give it, then the left edge (the right edge
+    of the mirrored cycle), the law's quantities computed once for both.  For a cycle whose left
+    edge is not the right one mirrored (bulk tension).
+
+    Implements Eqs. (21), (8), (11), (24), (26), (22), (25), (17), (28), (51), (19), (39), (40),
+    (33), (27) of the paper through the formulas it evaluates; registered in
+    ``derivations/edge_programs.py``.
+
+    Parameters
+    ----------
+    mu : float
+        Coefficient of friction, mu > 0.
+    cycle_lam : float
+        Load-path slope lambda = dQ/dP (18) of the cycle, either sign.
+    cycle_eta : float
+        Load-path slope eta = dsigma/dP (18), either sign [1/length].
+    a1 : float
+        Contact half-width a(P1) at load state 1 [length].
+    a2 : float
+        Contact half-width a(P2) at load state 2, a2 > a1 [length].
+    da : float
+        Growth of the contact half-width a2 - a1 > 0, passed in directly so that callers who
+        know it accurately keep every digit [length].
+    L_I1 : float
+        Normal edge multiplier L_I at load state 1 (4) [force/length^(5/2)].
+    L_I2 : float
+        Normal edge multiplier L_I at load state 2 (4) [force/length^(5/2)].
+    P1 : float
+        Normal load at load state 1 [force/length].
+    dP : float
+        Normal-load change P2 - P1 > 0 [force/length].
+    load_slope1 : float
+        Slope dP/da of the contact law at state 1, > 0 [force/length^2].
+    load_slope2 : float
+        Slope dP/da of the contact law at state 2, > 0 [force/length^2].
+    L_I_slope1 : float
+        Slope L_I'(P) of the normal edge multiplier at state 1.
+    L_I_slope2 : float
+        Slope L_I'(P) of the normal edge multiplier at state 2.
+    rounding : float
+        Rounding allowance relative to a1 (the core passes 1e-12): two estimates a few units in
+        the last place apart do not disagree.
+
+    Returns
+    -------
+    right_L_II1 : float
+        The right edge's L_II at state 1 (21).
+    right_L_II2 : float
+        The right edge's L_II at state 2 (21).
+    right_direction : float
+        The right edge's slip direction: +1, -1 or 0.
+    left_L_II1 : float
+        The left edge's L_II at state 1 (21), in its own frame.
+    left_L_II2 : float
+        The left edge's L_II at state 2 (21), in its own frame.
+    left_direction : float
+        The left edge's slip direction, in its own frame.
+    right_paper_width : float
+        The right edge's: a1 - b by (22), cancellation-free [length].
+    right_denominator : float
+        The right edge's: (17)'s denominator mu (L_I1 + L_I2) + L_II1 - L_II2.
+    right_b_first_order : float
+        The right edge's: b to first order, (28) [length].
+    right_width : float
+        The right edge's: a1 - b to second order, the headline b2 [length].
+    right_corrective_stick_width : float
+        The right edge's: a1 - b of the corrective stick (40) [length].
+    right_P_K : float
+        The right edge's: The permanent-stick load of (33) [force/length].
+    eq24 : float
+        The right edge's: The contact-growth measure (24).
+    eq26 : float
+        The right edge's: The multiplier-growth measure (26).
+    right_eq27 : float
+        The right edge's: The necessary condition (27).
+    right_accuracy : float
+        The right edge's: The stated accuracy of b2 [length].
+    right_paper_limit : float
+        The right edge's: How far (22) may lie from b2 before they disagree [length].
+    right_first_limit : float
+        The right edge's: How far (28) may lie from b2 before they disagree [length].
+    right_stick_limit : float
+        The right edge's: How far (40) may lie from b2 before they disagree [length].
+    right_exact_limit : float
+        The right edge's: How far a(P_K) may lie from b2 before they disagree [length].
+    left_paper_width : float
+        The left edge's: a1 - b by (22), cancellation-free [length].
+    left_denominator : float
+        The left edge's: (17)'s denominator mu (L_I1 + L_I2) + L_II1 - L_II2.
+    left_b_first_order : float
+        The left edge's: b to first order, (28) [length].
+    left_width : float
+        The left edge's: a1 - b to second order, the headline b2 [length].
+    left_corrective_stick_width : float
+        The left edge's: a1 - b of the corrective stick (40) [length].
+    left_P_K : float
+        The left edge's: The permanent-stick load of (33) [force/length].
+    eq24 : float
+        The left edge's: The contact-growth measure (24).
+    eq26 : float
+        The left edge's: The multiplier-growth measure (26).
+    left_eq27 : float
+        The left edge's: The necessary condition (27).
+    left_accuracy : float
+        The left edge's: The stated accuracy of b2 [length].
+    left_paper_limit : float
+        The left edge's: How far (22) may lie from b2 before they disagree [length].
+    left_first_limit : float
+        The left edge's: How far (28) may lie from b2 before they disagree [length].
+    left_stick_limit : float
+        The left edge's: How far (40) may lie from b2 before they disagree [length].
+    left_exact_limit : float
+        The left edge's: How far a(P_K) may lie from b2 before they disagree [length].
+
+    Notes
+    -----
+    The steps, each a formula's own generated lines or a glue expression:
+
+    1. mirrored_lam = -cycle_lam
+    2. right_L_II1 = shear_edge_multiplier_proportional(cycle_lam, cycle_eta, a1, L_I1)
+       (21): Shear edge multiplier L_II on the proportional load path.
+    3. right_L_II2 = shear_edge_multiplier_proportional(cycle_lam, cycle_eta, a2, L_I2)
+       (21): Shear edge multiplier L_II on the proportional load path.
+    4. right_direction = slip_direction(mu, L_I2, right_L_II2) (8), (11): Slip direction of
+       an edge on loading: +1 forward, -1 backward, 0 none.
+    5. left_L_II1 = shear_edge_multiplier_proportional(mirrored_lam, cycle_eta, a1, L_I1)
+       (21): Shear edge multiplier L_II on the proportional load path.
+    6. left_L_II2 = shear_edge_multiplier_proportional(mirrored_lam, cycle_eta, a2, L_I2)
+       (21): Shear edge multiplier L_II on the proportional load path.
+    7. left_direction = slip_direction(mu, L_I2, left_L_II2) (8), (11): Slip direction of
+       an edge on loading: +1 forward, -1 backward, 0 none.
+    8. a_slope1 = 1/load_slope1
+    9. a_slope2 = 1/load_slope2
+    10. worst_slope = Max(a_slope1, a_slope2)
+    11. worst_multiplier_slope = Max(Abs(L_I_slope1), Abs(L_I_slope2))
+    12. growth = a_slope1*dP/a1
+    13. root = a1**(3/2)
+    14. multiplier = L_I1*root/dP
+    15. multiplier_slope = L_I_slope1*root
+    16. eq24 = contact_growth_measure(dP, worst_slope, a1) (24): Measure (24) of the contact
+       growth, dP a'(P) / a1.
+    17. eq26 = multiplier_growth_measure(dP, worst_multiplier_slope, L_I1) (26): Measure
+       (26) of the growth of L_I over the cycle, dP |L_I'(P)| / L_I1.
+    18. relative_growth = da/a1
+    19. right_orientation = right_direction - Abs(right_direction) + 1
+    20. right_lam = cycle_lam*right_orientation
+    21. right_eta = cycle_eta*right_orientation
+    22. right_other_edge = -left_direction*right_direction - Abs(left_direction) + 1
+    23. right_paper_width = slip_zone_width(mu, right_lam, right_eta, a1, da, L_I1, L_I2)
+       (22), (25): Width a1 - b of the slip zone inside the load-state-1 contact.
+    24. right_denominator = stick_boundary_denominator(mu, right_lam, right_eta, a1, a2,
+       L_I1, L_I2) (17), (22): Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) on a
+       proportional path.
+    25. right_ratio_first_order = stick_ratio_first_order(mu, right_lam, right_eta, a1, dP,
+       a_slope1) (28), (51): First-order stick-boundary ratio b / a1 in the load change dP.
+    26. right_b_first_order = a1*right_ratio_first_order
+    27. right_lam_mu = right_lam/mu
+    28. right_eta_a1_mu = a1*right_eta/mu
+    29. right_width_ratio = slip_zone_width_second_order_dimensionless(right_lam_mu,
+       right_eta_a1_mu, growth, multiplier, multiplier_slope, right_other_edge) (19), (22),
+       (28): (a1 - b)/a1 to second order, in dimensionless groups that cannot overflow.
+    30. right_width = a1*right_width_ratio
+    31. right_corrective_stick_width = corrective_stick_slip_zone_width(mu, right_lam,
+       right_eta, a1, da, L_I1, dP) (39), (40): Slip-zone width d1 = a1 - b of the
+       corrective-stick asymptote [12].
+    32. right_P_K = permanent_stick_load(P1, dP, right_lam, mu) (33): Normal load P_K whose
+       contact is the permanent stick zone (Jaeger-Ciavarella).
+    33. right_eq27 = slip_zone_growth_measure(mu, right_lam, right_eta, a1, dP, worst_slope)
+       (27): Necessary-condition measure (27), twice the first-order |b - a1| / a1.
+    34. right_accuracy = stick_boundary_accuracy(relative_growth, right_width) (28): Stated
+       accuracy of the headline b (b2): (da/a1)^2 |a1 - b|.
+    35. right_paper_accuracy = paper_stick_boundary_accuracy(relative_growth, right_width)
+       (22): Stated accuracy of (22): 2 (da/a1)^2 |a1 - b|, twice b2's.
+    36. right_first_accuracy = stick_boundary_accuracy_first_order(relative_growth,
+       right_width) (28), (40): Stated accuracy of a first-order b ((28), (40)): 2 (da/a1)
+       |a1 - b|.
+    37. right_paper_limit = disagreement_limit(right_accuracy, right_paper_accuracy, a1,
+       rounding) (22), (28), (40): How far an estimate may lie from b before the two
+       disagree.
+    38. right_first_limit = disagreement_limit(right_accuracy, right_first_accuracy, a1,
+       rounding) (22), (28), (40): How far an estimate may lie from b before the two
+       disagree.
+    39. right_stick_limit = right_first_limit
+    40. right_exact_accuracy = 0
+    41. right_exact_limit = disagreement_limit(right_accuracy, right_exact_accuracy, a1,
+       rounding) (22), (28), (40): How far an estimate may lie from b before the two
+       disagree.
+    42. left_orientation = left_direction - Abs(left_direction) + 1
+    43. left_lam = left_orientation*mirrored_lam
+    44. left_eta = cycle_eta*left_orientation
+    45. left_other_edge = -left_direction*right_direction - Abs(right_direction) + 1
+    46. left_paper_width = slip_zone_width(mu, left_lam, left_eta, a1, da, L_I1, L_I2) (22),
+       (25): Width a1 - b of the slip zone inside the load-state-1 contact.
+    47. left_denominator = stick_boundary_denominator(mu, left_lam, left_eta, a1, a2, L_I1,
+       L_I2) (17), (22): Denominator mu (L_I1 + L_I2) + L_II1 - L_II2 of (17) on a
+       proportional path.
+    48. left_ratio_first_order = stick_ratio_first_order(mu, left_lam, left_eta, a1, dP,
+       a_slope1) (28), (51): First-order stick-boundary ratio b / a1 in the load change dP.
+    49. left_b_first_order = a1*left_ratio_first_order
+    50. left_lam_mu = left_lam/mu
+    51. left_eta_a1_mu = a1*left_eta/mu
+    52. left_width_ratio = slip_zone_width_second_order_dimensionless(left_lam_mu,
+       left_eta_a1_mu, growth, multiplier, multiplier_slope, left_other_edge) (19), (22),
+       (28): (a1 - b)/a1 to second order, in dimensionless groups that cannot overflow.
+    53. left_width = a1*left_width_ratio
+    54. left_corrective_stick_width = corrective_stick_slip_zone_width(mu, left_lam,
+       left_eta, a1, da, L_I1, dP) (39), (40): Slip-zone width d1 = a1 - b of the
+       corrective-stick asymptote [12].
+    55. left_P_K = permanent_stick_load(P1, dP, left_lam, mu) (33): Normal load P_K whose
+       contact is the permanent stick zone (Jaeger-Ciavarella).
+    56. left_eq27 = slip_zone_growth_measure(mu, left_lam, left_eta, a1, dP, worst_slope)
+       (27): Necessary-condition measure (27), twice the first-order |b - a1| / a1.
+    57. left_accuracy = stick_boundary_accuracy(relative_growth, left_width) (28): Stated
+       accuracy of the headline b (b2): (da/a1)^2 |a1 - b|.
+    58. left_paper_accuracy = paper_stick_boundary_accuracy(relative_growth, left_width)
+       (22): Stated accuracy of (22): 2 (da/a1)^2 |a1 - b|, twice b2's.
+    59. left_first_accuracy = stick_boundary_accuracy_first_order(relative_growth,
+       left_width) (28), (40): Stated accuracy of a first-order b ((28), (40)): 2 (da/a1)
+       |a1 - b|.
+    60. left_paper_limit = disagreement_limit(left_accuracy, left_paper_accuracy, a1,
+       rounding) (22), (28), (40): How far an estimate may lie from b before the two
+       disagree.
+    61. left_first_limit = disagreement_limit(left_accuracy, left_first_accuracy, a1,
+       rounding) (22), (28), (40): How far an estimate may lie from b before the two
+       disagree.
+    62. left_stick_limit = left_first_limit
+    63. left_exact_accuracy = 0
+    64. left_exact_limit = disagreement_limit(left_accuracy, left_exact_accuracy, a1,
+       rounding) (22), (28), (40): How far an estimate may lie from b before the two
+       disagree.
+    """
+    mirrored_lam = -cycle_lam
+    lam = cycle_lam
+    eta = cycle_eta
+    a = a1
+    L_I = L_I1
+    right_L_II1 = L_I * ((1 / 4) * math.pi * a * eta + lam)
+    lam = cycle_lam
+    eta = cycle_eta
+    a = a2
+    L_I = L_I2
+    right_L_II2 = L_I * ((1 / 4) * math.pi * a * eta + lam)
+    L_II2 = right_L_II2
+    tmp0 = L_I2 * mu
+    tmp1 = (0.0 < L_II2 + tmp0) - (L_II2 + tmp0 < 0.0)
+    tmp2 = -L_II2 + tmp0
+    right_direction = (
+        (1 / 2) * tmp1
+        - 1 / 2 * abs(tmp1)
+        + (1 / 2) * abs((0.0 < tmp2) - (tmp2 < 0.0))
+        - 1 / 2 * ((0.0 < tmp2) - (tmp2 < 0.0))
+    )
+    lam = mirrored_lam
+    eta = cycle_eta
+    a = a1
+    L_I = L_I1
+    left_L_II1 = L_I * ((1 / 4) * math.pi * a * eta + lam)
+    lam = mirrored_lam
+    eta = cycle_eta
+    a = a2
+    L_I = L_I2
+    left_L_II2 = L_I * ((1 / 4) * math.pi * a * eta + lam)
+    L_II2 = left_L_II2
+    tmp0 = L_I2 * mu
+    tmp1 = (0.0 < L_II2 + tmp0) - (L_II2 + tmp0 < 0.0)
+    tmp2 = -L_II2 + tmp0
+    left_direction = (
+        (1 / 2) * tmp1
+        - 1 / 2 * abs(tmp1)
+        + (1 / 2) * abs((0.0 < tmp2) - (tmp2 < 0.0))
+        - 1 / 2 * ((0.0 < tmp2) - (tmp2 < 0.0))
+    )
+    a_slope1 = 1 / load_slope1
+    a_slope2 = 1 / load_slope2
+    worst_slope = max(a_slope1, a_slope2)
+    worst_multiplier_slope = max(abs(L_I_slope1), abs(L_I_slope2))
+    growth = a_slope1 * dP / a1
+    root = a1 ** (3 / 2)
+    multiplier = L_I1 * root / dP
+    multiplier_slope = L_I_slope1 * root
+    da_dP = worst_slope
+    eq24 = dP * da_dP / a1
+    dL_I_dP = worst_multiplier_slope
+    eq26 = dP * abs(dL_I_dP) / L_I1
+    relative_growth = da / a1
+    right_orientation = right_direction - abs(right_direction) + 1
+    right_lam = cycle_lam * right_orientation
+    right_eta = cycle_eta * right_orientation
+    right_other_edge = -left_direction * right_direction - abs(left_direction) + 1
+    lam = right_lam
+    eta = right_eta
+    tmp0 = (1 / 4) * math.pi * eta
+    tmp1 = a1 * tmp0 + lam
+    tmp2 = L_I2 * (da * tmp0 - mu + tmp1)
+    right_paper_width = da * tmp2 / (L_I1 * (mu + tmp1) - tmp2)
+    lam = right_lam
+    eta = right_eta
+    tmp0 = (1 / 4) * math.pi * eta
+    right_denominator = L_I1 * (a1 * tmp0 + lam + mu) - L_I2 * (a2 * tmp0 + lam - mu)
+    lam = right_lam
+    eta = right_eta
+    da_dP = a_slope1
+    tmp0 = 1 / a1
+    tmp1 = 1 / mu
+    tmp2 = dP * da_dP
+    right_ratio_first_order = (
+        (1 / 2) * dP * da_dP * tmp0
+        - 1 / 8 * math.pi * eta * tmp1 * tmp2
+        - 1 / 2 * lam * tmp0 * tmp1 * tmp2
+        + 1
+    )
+    right_b_first_order = a1 * right_ratio_first_order
+    right_lam_mu = right_lam / mu
+    right_eta_a1_mu = a1 * right_eta / mu
+    lam_mu = right_lam_mu
+    eta_a1_mu = right_eta_a1_mu
+    other_edge = right_other_edge
+    tmp0 = 256 * multiplier
+    tmp1 = 64 * multiplier_slope
+    tmp2 = growth * multiplier
+    tmp3 = lam_mu * multiplier_slope
+    tmp4 = math.pi * eta_a1_mu
+    tmp5 = 32 * tmp4
+    tmp6 = lam_mu * tmp2
+    tmp7 = 16 * tmp2
+    tmp8 = other_edge * tmp7
+    tmp9 = lam_mu**2
+    tmp10 = 8 * tmp4 * tmp6
+    tmp11 = math.pi**2 * eta_a1_mu**2
+    tmp12 = tmp11 * tmp2
+    right_width_ratio = (
+        (1 / 512)
+        * growth
+        * (
+            lam_mu * tmp0
+            + 64 * multiplier * tmp4
+            + 4 * multiplier_slope * tmp11
+            - multiplier_slope * tmp5
+            - other_edge * tmp10
+            + other_edge * tmp12
+            - tmp0
+            + tmp1 * tmp9
+            + tmp1
+            - tmp10
+            - 3 * tmp12
+            + 48 * tmp2
+            + tmp3 * tmp5
+            - 128 * tmp3
+            + tmp4 * tmp7
+            - 64 * tmp6
+            + tmp7 * tmp9
+            + tmp8 * tmp9
+            - tmp8
+        )
+        / multiplier
+    )
+    right_width = a1 * right_width_ratio
+    lam = right_lam
+    eta = right_eta
+    tmp0 = math.sqrt(2)
+    tmp1 = math.sqrt(a1)
+    right_corrective_stick_width = -1 / 2 * da + dP * (
+        (1 / 8) * eta * tmp0 * tmp1 + (1 / 2) * lam * tmp0 / (math.pi * tmp1)
+    ) / (L_I1 * mu)
+    lam = right_lam
+    right_P_K = P1 - 1 / 2 * dP * (lam - mu) / mu
+    lam = right_lam
+    eta = right_eta
+    da_dP = worst_slope
+    right_eq27 = (1 / 4) * dP * da_dP * abs(math.pi * a1 * eta + 4 * lam - 4 * mu) / (a1 * mu)
+    width = right_width
+    right_accuracy = relative_growth**2 * abs(width)
+    width = right_width
+    right_paper_accuracy = 2 * relative_growth**2 * abs(width)
+    width = right_width
+    right_first_accuracy = 2 * relative_growth * abs(width)
+    accuracy = right_accuracy
+    other_accuracy = right_paper_accuracy
+    right_paper_limit = a1 * rounding + accuracy + other_accuracy
+    accuracy = right_accuracy
+    other_accuracy = right_first_accuracy
+    right_first_limit = a1 * rounding + accuracy + other_accuracy
+    right_stick_limit = right_first_limit
+    right_exact_accuracy = 0
+    accuracy = right_accuracy
+    other_accuracy = right_exact_accuracy
+    right_exact_limit = a1 * rounding + accuracy + other_accuracy
+    left_orientation = left_direction - abs(left_direction) + 1
+    left_lam = left_orientation * mirrored_lam
+    left_eta = cycle_eta * left_orientation
+    left_other_edge = -left_direction * right_direction - abs(right_direction) + 1
+    lam = left_lam
+    eta = left_eta
+    tmp0 = (1 / 4) * math.pi * eta
+    tmp1 = a1 * tmp0 + lam
+    tmp2 = L_I2 * (da * tmp0 - mu + tmp1)
+    left_paper_width = da * tmp2 / (L_I1 * (mu + tmp1) - tmp2)
+    lam = left_lam
+    eta = left_eta
+    tmp0 = (1 / 4) * math.pi * eta
+    left_denominator = L_I1 * (a1 * tmp0 + lam + mu) - L_I2 * (a2 * tmp0 + lam - mu)
+    lam = left_lam
+    eta = left_eta
+    da_dP = a_slope1
+    tmp0 = 1 / a1
+    tmp1 = 1 / mu
+    tmp2 = dP * da_dP
+    left_ratio_first_order = (
+        (1 / 2) * dP * da_dP * tmp0
+        - 1 / 8 * math.pi * eta * tmp1 * tmp2
+        - 1 / 2 * lam * tmp0 * tmp1 * tmp2
+        + 1
+    )
+    left_b_first_order = a1 * left_ratio_first_order
+    left_lam_mu = left_lam / mu
+    left_eta_a1_mu = a1 * left_eta / mu
+    lam_mu = left_lam_mu
+    eta_a1_mu = left_eta_a1_mu
+    other_edge = left_other_edge
+    tmp0 = 256 * multiplier
+    tmp1 = 64 * multiplier_slope
+    tmp2 = growth * multiplier
+    tmp3 = lam_mu * multiplier_slope
+    tmp4 = math.pi * eta_a1_mu
+    tmp5 = 32 * tmp4
+    tmp6 = lam_mu * tmp2
+    tmp7 = 16 * tmp2
+    tmp8 = other_edge * tmp7
+    tmp9 = lam_mu**2
+    tmp10 = 8 * tmp4 * tmp6
+    tmp11 = math.pi**2 * eta_a1_mu**2
+    tmp12 = tmp11 * tmp2
+    left_width_ratio = (
+        (1 / 512)
+        * growth
+        * (
+            lam_mu * tmp0
+            + 64 * multiplier * tmp4
+            + 4 * multiplier_slope * tmp11
+            - multiplier_slope * tmp5
+            - other_edge * tmp10
+            + other_edge * tmp12
+            - tmp0
+            + tmp1 * tmp9
+            + tmp1
+            - tmp10
+            - 3 * tmp12
+            + 48 * tmp2
+            + tmp3 * tmp5
+            - 128 * tmp3
+            + tmp4 * tmp7
+            - 64 * tmp6
+            + tmp7 * tmp9
+            + tmp8 * tmp9
+            - tmp8
+        )
+        / multiplier
+    )
+    left_width = a1 * left_width_ratio
+    lam = left_lam
+    eta = left_eta
+    tmp0 = math.sqrt(2)
+    tmp1 = math.sqrt(a1)
+    left_corrective_stick_width = -1 / 2 * da + dP * (
+        (1 / 8) * eta * tmp0 * tmp1 + (1 / 2) * lam * tmp0 / (math.pi * tmp1)
+    ) / (L_I1 * mu)
+    lam = left_lam
+    left_P_K = P1 - 1 / 2 * dP * (lam - mu) / mu
+    lam = left_lam
+    eta = left_eta
+    da_dP = worst_slope
+    left_eq27 = (1 / 4) * dP * da_dP * abs(math.pi * a1 * eta + 4 * lam - 4 * mu) / (a1 * mu)
+    width = left_width
+    left_accuracy = relative_growth**2 * abs(width)
+    width = left_width
+    left_paper_accuracy = 2 * relative_growth**2 * abs(width)
+    width = left_width
+    left_first_accuracy = 2 * relative_growth * abs(width)
+    accuracy = left_accuracy
+    other_accuracy = left_paper_accuracy
+    left_paper_limit = a1 * rounding + accuracy + other_accuracy
+    accuracy = left_accuracy
+    other_accuracy = left_first_accuracy
+    left_first_limit = a1 * rounding + accuracy + other_accuracy
+    left_stick_limit = left_first_limit
+    left_exact_accuracy = 0
+    accuracy = left_accuracy
+    other_accuracy = left_exact_accuracy
+    left_exact_limit = a1 * rounding + accuracy + other_accuracy
+    return (
+        right_L_II1,
+        right_L_II2,
+        right_direction,
+        left_L_II1,
+        left_L_II2,
+        left_direction,
+        right_paper_width,
+        right_denominator,
+        right_b_first_order,
+        right_width,
+        right_corrective_stick_width,
+        right_P_K,
+        eq24,
+        eq26,
+        right_eq27,
+        right_accuracy,
+        right_paper_limit,
+        right_first_limit,
+        right_stick_limit,
+        right_exact_limit,
+        left_paper_width,
+        left_denominator,
+        left_b_first_order,
+        left_width,
+        left_corrective_stick_width,
+        left_P_K,
+        eq24,
+        eq26,
+        left_eq27,
+        left_accuracy,
+        left_paper_limit,
+        left_first_limit,
+        left_stick_limit,
+        left_exact_limit,
     )
 
 

@@ -30,6 +30,7 @@ import difflib
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
@@ -41,6 +42,9 @@ from .laws.hertz import HertzLaw
 from .slip_zones import slip_zone
 from .solver import error_map as error_map_module
 from .tractions import traction_difference
+
+if TYPE_CHECKING:  # matplotlib is an extra (plot): imported only when a figure is drawn
+    from matplotlib.figure import Figure
 
 FloatArray = NDArray[np.float64]
 
@@ -170,7 +174,7 @@ def fig5_csv_text(curves: Fig5Curves) -> str:
     return "\n".join(lines) + "\n"
 
 
-def figure_class():
+def figure_class() -> type[Figure]:
     """matplotlib's Figure (no pyplot), or an InputError naming the extra that provides it."""
     try:
         from matplotlib.figure import Figure

@@ -32,6 +32,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any, TypeAlias
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -40,6 +41,9 @@ from .errors import InputError
 
 FloatArray = NDArray[np.float64]
 BoolArray = NDArray[np.bool_]
+#: A number of a cycle: a Python float for one cycle, a float64 array for many (unchecked, as
+#: :data:`asymslip.laws.base.Number`: NumPy's stubs cannot type arithmetic mixing the two).
+Number: TypeAlias = Any
 
 
 @dataclass(frozen=True)
@@ -214,7 +218,8 @@ class Verdict:
 
     @property
     def valid(self) -> BoolArray:
-        return self.code == 0
+        valid: BoolArray = self.code == 0  # NumPy's stubs type == on arrays as Any
+        return valid
 
     @property
     def any_invalid(self) -> bool:
@@ -261,7 +266,7 @@ class Verdict:
             column[new] = np.broadcast_to(np.asarray(value, dtype=np.float64), self.shape)[new]
             stored[name] = column
 
-    def error(self, index: int | tuple[int, ...]) -> InputError | None:
+    def error(self, index: int | tuple[int | np.integer[Any], ...]) -> InputError | None:
         """The error of one element, or None where it is valid."""
         if not self.shape:
             index = ()
@@ -313,7 +318,7 @@ class Verdict:
         return out
 
 
-def finite(value: ArrayLike) -> ArrayLike:
+def finite(value: Number) -> Number:
     """True where finite: ``x - x == 0`` is False for inf and NaN, for arrays and floats alike
     (and, unlike ``numpy.isfinite``, costs nothing for a Python float).  Call it inside
     ``numpy.errstate(invalid="ignore")``: inf - inf is the NaN it looks for."""
@@ -398,17 +403,18 @@ def _below_subnormal_capacity(
         mu_scale = np.where(tiny, np.maximum(0, -mu_exponent), 0)
         P_scale = np.where(tiny, np.maximum(0, -P_exponent), 0)
         scaled = np.ldexp(mu, mu_scale) * np.ldexp(P, P_scale)
-        return tiny & (np.ldexp(shear, mu_scale + P_scale) < scaled)
+        underflows: BoolArray = tiny & (np.ldexp(shear, mu_scale + P_scale) < scaled)
+        return underflows
 
 
 def denominator_checks(
-    admits: ArrayLike,
-    mu: ArrayLike,
-    lam: ArrayLike,
-    eta: ArrayLike,
-    L_I1: ArrayLike,
-    L_I2: ArrayLike,
-) -> tuple[tuple[str, ArrayLike], tuple[str, ArrayLike]]:
+    admits: Number,
+    mu: Number,
+    lam: Number,
+    eta: Number,
+    L_I1: Number,
+    L_I2: Number,
+) -> tuple[tuple[str, Number], tuple[str, Number]]:
     """The rules of (17)'s denominator, each with where it holds, in the order to require them.
 
     (17) has a steady partial-slip state only where its denominator is positive (``admits``).

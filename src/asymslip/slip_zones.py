@@ -12,13 +12,13 @@ when asked, so that 10^6 cycles cost no 10^6 lists of strings.
 from __future__ import annotations
 
 import math
-from typing import Any, Literal, NamedTuple
+from typing import Literal, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .core.edge_state import EdgeState, missing_edge
-from .core.evaluation import Evaluation, evaluate
+from .core.evaluation import Evaluation, evaluate, evaluate_arrays, evaluate_one
 from .core.flags import MEASURE_KEYS, NUMBER_KEYS, warning_texts
 from .cycle import LoadCycle
 from .edge import Edge
@@ -100,13 +100,9 @@ def _scalar_result(
     """One cycle's edge; every number None (null in JSON) for an invalid cycle."""
     if not valid:
         state = _NOTHING
-    numbers: tuple[Any, ...] = state[:20]
-    flags = state.flags
-    if type(state.a1) is not float:  # NumPy scalars, where Python's float arithmetic raised
-        numbers = tuple(map(float, numbers))
-        flags = int(flags)
-    elif type(state.b_exact) is not float:  # a(P_K) from a law that computes on NumPy
-        numbers = (*numbers[:13], float(state.b_exact), *numbers[14:])
+    elif type(state[0]) is not float or type(state[13]) is not float:
+        state = _as_floats(state)
+    # One unpacking, in the order of EdgeState's fields (a named tuple's attributes cost more).
     (
         a1,
         a2,
@@ -128,7 +124,10 @@ def _scalar_result(
         eq25,
         eq26,
         eq27,
-    ) = numbers
+        _,
+        _,
+        flags,
+    ) = state
     # Built as the tuple it is (tuple.__new__), in field order: the named tuple's own __new__
     # binds 21 arguments one by one, and one cycle is timed in microseconds.
     return _new_result(
@@ -158,6 +157,12 @@ def _scalar_result(
             left,
         ),
     )
+
+
+def _as_floats(state: EdgeState) -> EdgeState:
+    """An edge evaluated on NumPy scalars (where Python's float arithmetic raised), or with
+    a(P_K) from a law that computes on NumPy, as Python floats and an int."""
+    return EdgeState._make([*map(float, state[:22]), int(state[22])])
 
 
 #: A named tuple built from its fields in order, without its __new__ (see _scalar_result).
@@ -249,7 +254,21 @@ def slip_zone(
         raise InputError("edge", "must be 'right', 'left' or 'both'", edge)
     if invalid not in ("raise", "mark"):
         raise InputError("invalid", "must be 'raise' or 'mark'", invalid)
-    evaluation = evaluate(law, cycle, mu)
+    one = evaluate_one(law, cycle, mu)
+    if one is not None and not isinstance(one, Evaluation):  # one valid cycle, on floats
+        right_edge, left_edge = one
+        if edge == "right":
+            return _scalar_result(right_edge, law.for_edge(Edge.RIGHT), True, None)
+        if edge == "left":
+            return _scalar_result(left_edge, law.for_edge(Edge.LEFT), True, None)
+        return _scalar_result(
+            right_edge,
+            law.for_edge(Edge.RIGHT),
+            True,
+            None,
+            _scalar_result(left_edge, law.for_edge(Edge.LEFT), True, None),
+        )
+    evaluation = evaluate_arrays(law, cycle, mu) if one is None else one
     errors = None
     valid = evaluation.valid
     if not valid:

@@ -14,9 +14,9 @@ both edges, at a load drawn in [80, 125]:
   fraction of all fits whose true error lies within the reported one (95 % is what the
   reported error states).
 
-Run ``python -m tests.calibration.census [DRAWS]`` to print the distributions the README
-quotes (about 4 minutes with 40 draws); the slow tests in test_edge_fit.py assert them on
-fewer draws.
+Run ``python -m tests.calibration.census [DRAWS]`` to print the distributions the guide
+quotes (docs/guide/calibration.md; 331 s of CPU time with 40 draws); the slow tests in
+test_edge_fit.py assert them on fewer draws.
 """
 
 from __future__ import annotations

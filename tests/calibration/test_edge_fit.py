@@ -17,7 +17,10 @@ from asymslip.calibration.edge_fit import EdgeFitError, fit_edge, nodal_points
 from tests.calibration import census
 from tests.calibration.helpers import LAWS, REFERENCE_LOAD, mesh, noisy
 
-CASES = list(itertools.product(LAWS, ["uniform", "graded"], [20, 200], [0.0, 0.01]))
+# Exact traces: their error is deterministic and every fit's reported error must cover it.  With
+# scatter the reported error is a 95 % bound, which one draw in twenty exceeds by design: the
+# slow census tests below check its coverage over many draws.
+CASES = list(itertools.product(LAWS, ["uniform", "graded"], [20, 200], [0.0]))
 
 
 def _fit_both_edges(law, x, p, P):
@@ -127,13 +130,20 @@ def test_on_exact_traces_every_reported_error_covers_the_true_one_and_is_about_t
 @pytest.mark.slow
 @pytest.mark.parametrize("noise_kind", census.NOISE_KINDS)
 def test_with_1_percent_scatter_the_reported_error_is_a_95_percent_bound(noise_kind):
-    """Every law, both meshes, 20, 50 and 200 nodes, 4 draws of 1 % scatter (relative or of
-    the peak pressure) each, both edges: 192 fits.  The reported error states a 95 % bound on
-    the scatter's part: it covers at least 90 % of the true errors here (a few fits fall out
-    where the truncation the scatter hides is larger than estimated), and the RMS true error
-    of a configuration is at least a quarter of the median reported one."""
+    """Every law, both meshes, 20, 50 and 200 nodes, 8 draws of 1 % scatter (relative or of
+    the peak pressure) each, both edges: 384 fits.  The reported error states a 95 % bound: it
+    covers 93-98 % of the true errors (measured: a 97.9 % and 94.8 %, L_I 96.4 % and 95.1 %),
+    and per configuration the RMS true error is a median 0.37-0.48 of the median reported one
+    (the 95 % bound of Gaussian scatter alone is 1.96 times its RMS: 0.51).  The share of
+    configurations within a factor of three (RMS true / reported in [1/3, 1]) is 58-92 % on
+    these 8 draws (75-95 % on the census's 40, docs/guide/calibration.md); the issue asks
+    90 %, so this floor only guards against going back (before, on these draws: 42-81 %, the
+    truncation part counting the noise a second time)."""
     summary = census.noisy_summary(
-        list(census.noisy_configurations(noise_kind, draws=4, nodes_list=(20, 50, 200)))
+        list(census.noisy_configurations(noise_kind, draws=8, nodes_list=(20, 50, 200)))
     )
-    assert summary.coverage_a >= 0.9 and summary.coverage_L >= 0.9
-    assert summary.ratio_a.median >= 0.25 and summary.ratio_L.median >= 0.25
+    for coverage in (summary.coverage_a, summary.coverage_L):
+        assert 0.93 <= coverage <= 0.98
+    for ratio in (summary.ratio_a, summary.ratio_L):
+        assert 1 / 3 <= ratio.median <= 1 and ratio.maximum <= 1
+        assert ratio.within_three >= 0.55

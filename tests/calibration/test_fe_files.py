@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from asymslip import InputError
-from asymslip.calibration import calibrate, read_traces
+from asymslip.calibration import Traces, calibrate, read_traces
 from tests.calibration.helpers import LAWS
 
 HERTZ = LAWS["hertz"]
@@ -116,6 +116,33 @@ def test_an_frd_calibrates_to_hertz(tmp_path):
         assert abs(fit.L_I - float(HERTZ.normal_multiplier(fit.P))) <= fit.L_I_error
     assert calibration.notes[0].startswith("steps used: step 2")
     assert [P for P, _ in calibration.load_balance] == [90.0, 100.0, 110.0]
+
+
+def _long(traces: Traces) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The traces as the long-format columns P, x, p of a CSV (no FE node marks)."""
+    return (
+        np.concatenate([np.full(t.x.size, t.P) for t in traces.traces]),
+        np.concatenate([t.x for t in traces.traces]),
+        np.concatenate([t.p for t in traces.traces]),
+    )
+
+
+def test_fits_to_fe_nodes_state_the_fe_allowance_and_carry_it(tmp_path):
+    """The rule for an FE solution's own error is printed with the result, and each a_error of
+    the fits holds at least 0.3 element at its edge (the nodes' spacing there)."""
+    calibration = calibrate(read_traces(_frd(tmp_path / "run.frd")), origin=0.0)
+    assert any(
+        note.startswith("FE nodal pressures:") and "0.3 element at the edge" in note
+        for note in calibration.notes
+    )
+    traces = read_traces(_frd(tmp_path / "run.frd"))
+    for trace in traces.traces:
+        fit = next(f for f in calibration.right if f.P == trace.P)
+        beyond = trace.x[trace.x > fit.x_edge][0]
+        inside = trace.x[trace.x <= fit.x_edge][-1]
+        assert fit.a_error >= 0.3 * (beyond - inside) * (1 - 1e-12)
+    csv = calibrate(Traces.from_arrays(*_long(traces)), origin=0.0)
+    assert not any(note.startswith("FE nodal pressures:") for note in csv.notes)
 
 
 def test_an_frd_without_forces_takes_one_load_per_step_from_loads(tmp_path):

@@ -38,6 +38,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -47,7 +48,7 @@ from numpy.typing import NDArray
 from ..errors import InputError
 from ..files.atomic import atomic_write
 from ..laws.calibrated import CalibratedLaw
-from .edge_fit import EdgeFit, EdgeFitError, fit_edge
+from .edge_fit import FE_ALLOWANCE_A, FE_ALLOWANCE_L, EdgeFit, EdgeFitError, fit_edge
 from .traces import SIDES, Side, Traces
 
 FloatArray = NDArray[np.float64]
@@ -228,7 +229,12 @@ def _refuse_constant(name: str) -> float:
 
 
 def _number(
-    entry: dict, key: str, fail, *, positive: bool = False, non_negative: bool = False
+    entry: dict[str, object],
+    key: str,
+    fail: Callable[[str], InputError],
+    *,
+    positive: bool = False,
+    non_negative: bool = False,
 ) -> float:
     value = entry.get(key)
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
@@ -257,7 +263,9 @@ def _fit_to_dict(fit: EdgeFit, origin: float) -> dict[str, object]:
     }
 
 
-def _fit_from_dict(entry: object, side: Side, origin: float, name: str, fail) -> EdgeFit:
+def _fit_from_dict(
+    entry: object, side: Side, origin: float, name: str, fail: Callable[[str], InputError]
+) -> EdgeFit:
     if not isinstance(entry, dict):
         raise fail(f"{name} must be an object")
 
@@ -386,9 +394,8 @@ def calibrate(
                     "contact",
                     origin,
                 )
-    warnings = [
-        _advance_warning(side, edge, origin) for side, edge in (("right", right), ("left", left))
-    ]
+    edges: tuple[tuple[Side, tuple[EdgeFit, ...]], ...] = (("right", right), ("left", left))
+    warnings = [_advance_warning(side, edge, origin) for side, edge in edges]
     if symmetric:
         side = "right" if right else "left"
         warnings.append(
@@ -397,6 +404,9 @@ def calibrate(
         )
     balances = load_balance(traces, fits)
     warnings += _balance_warnings(balances)
+    notes = traces.notes
+    if any(trace.unit == "node" for trace in traces.traces):
+        notes += (FE_ALLOWANCE_NOTE,)
     calibration = Calibration(
         right,
         left,
@@ -404,10 +414,19 @@ def calibrate(
         traces.source,
         symmetric,
         tuple(w for w in warnings if w),
-        traces.notes,
+        notes,
         tuple(balances),
     )
     return replace(calibration, warnings=calibration.warnings + _edge_balance_warning(calibration))
+
+
+#: The rule for the errors of fits to an FE solution's nodal pressures, stated with the result.
+FE_ALLOWANCE_NOTE = (
+    "FE nodal pressures: each error includes, in quadrature, an allowance for the FE's own "
+    f"discretisation error of {FE_ALLOWANCE_A:g} element at the edge (a) and "
+    f"{FE_ALLOWANCE_L:g} h/a of L_I (h the spacing at the edge, a the half-width), fixed a "
+    "priori: one FE run cannot show it; a run on a mesh twice as fine or coarse can"
+)
 
 
 #: A load balance (the integral of p dx over P) further from 1 than this is a warning ...

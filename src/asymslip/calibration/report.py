@@ -21,53 +21,101 @@ within their errors: Hertzian pressures (48) (R = E* = 1) at three loads.
 >>> pressures = [np.sqrt(np.maximum(4 * P / np.pi - x**2, 0)) / 2 for P in loads]  # (48)
 >>> found = checks(calibrate(Traces.from_arrays(np.repeat(loads, x.size), np.tile(x, 3),
 ...                                             np.concatenate(pressures))))
->>> [bool(abs(b - 1) <= e) for b, e in zip(found["balance"], found["balance_error"])]
+>>> [bool(abs(b - 1) <= e) for b, e in zip(found.balance, found.balance_error)]
 [True, True, True]
->>> [bool(abs(f - 1) <= e) for f, e in zip(found["right"]["moment_factor"],
-...                                        found["right"]["moment_factor_error"])]
+>>> right = found.edge("right")
+>>> [bool(abs(f - 1) <= e) for f, e in zip(right.moment_factor, right.moment_factor_error)]
 [True, True, True]
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from ..errors import InputError
+from ..laws.calibrated import CalibratedLaw
 from .calibration import Calibration
-from .traces import SIDES
+from .traces import SIDES, Side
+
+FloatArray = NDArray[np.float64]
 
 
-def checks(calibration: Calibration) -> dict[str, object]:
-    """The law-level checks at every calibrated load, for ``--json`` (key ``checks``).
+@dataclass(frozen=True)
+class EdgeChecks:
+    """One edge's moment factor f (AS4) at the checked loads, and its propagated error."""
 
-    ``{"P": [...], "right": {"moment_factor": [...], "moment_factor_error": [...]}, "left":
-    {...}, "balance": [...], "balance_error": [...]}``, or ``{"law": "<why it cannot be
-    built>"}``.  Loads outside an edge's calibrated range are left out of that edge's lists;
-    the balance needs both edges.
+    moment_factor: tuple[float, ...]
+    moment_factor_error: tuple[float, ...]
+
+
+@dataclass(frozen=True)
+class LawChecks:
+    """The law-level checks of a calibration (:func:`checks`).
+
+    ``refusal`` is why the calibrated law cannot be built (then nothing else is filled);
+    ``edges`` the moment factor of each calibrated edge; ``balance`` the two edges' balance
+    (AS6) with its error, ``None`` with one edge.
+    """
+
+    loads: tuple[float, ...] = ()
+    edges: tuple[tuple[Side, EdgeChecks], ...] = ()
+    balance: tuple[float, ...] | None = None
+    balance_error: tuple[float, ...] | None = None
+    refusal: str | None = None
+
+    def edge(self, side: Side) -> EdgeChecks:
+        """The checks of edge ``side`` (KeyError when it was not calibrated)."""
+        return dict(self.edges)[side]
+
+    def to_dict(self) -> dict[str, object]:
+        """For ``--json`` (key ``checks``): ``{"P": [...], "right": {"moment_factor": [...],
+        "moment_factor_error": [...]}, "left": {...}, "balance": [...], "balance_error": [...]}``,
+        or ``{"law": "<why it cannot be built>"}``."""
+        if self.refusal is not None:
+            return {"law": self.refusal}
+        found: dict[str, object] = {"P": list(self.loads)}
+        for side, edge in self.edges:
+            found[side] = {
+                "moment_factor": list(edge.moment_factor),
+                "moment_factor_error": list(edge.moment_factor_error),
+            }
+        if self.balance is not None and self.balance_error is not None:
+            found["balance"] = list(self.balance)
+            found["balance_error"] = list(self.balance_error)
+        return found
+
+
+def _values(array: ArrayLike) -> tuple[float, ...]:
+    return tuple(float(value) for value in np.asarray(array, dtype=np.float64).ravel())
+
+
+def checks(calibration: Calibration) -> LawChecks:
+    """The law-level checks at every calibrated load (:class:`LawChecks`).
+
+    Loads outside an edge's calibrated range are left out; the balance needs both edges.
     """
     try:
         law = calibration.law()
     except InputError as error:
-        return {"law": error.rule}
+        return LawChecks(refusal=error.rule)
     low, high = law.common_range
     loads = calibration.loads
     loads = loads[(loads >= low) & (loads <= high)]
-    result: dict[str, object] = {"P": loads.tolist()}
+    edges: list[tuple[Side, EdgeChecks]] = []
     for side in calibration.sides:
 
-        def factor(fitted, side=side):
+        def factor(fitted: CalibratedLaw, side: Side = side) -> FloatArray:
             return fitted.for_edge(side).moment_factor(loads)
 
-        result[side] = {
-            "moment_factor": np.asarray(factor(law)).tolist(),
-            "moment_factor_error": np.asarray(law.error_of(factor)).tolist(),
-        }
+        edges.append((side, EdgeChecks(_values(factor(law)), _values(law.error_of(factor)))))
+    balance = balance_error = None
     if len(calibration.sides) == 2:
-        result["balance"] = np.asarray(law.multiplier_balance(loads)).tolist()
-        result["balance_error"] = np.asarray(
-            law.error_of(lambda fitted: fitted.multiplier_balance(loads))
-        ).tolist()
-    return result
+        balance = _values(law.multiplier_balance(loads))
+        balance_error = _values(law.error_of(lambda fitted: fitted.multiplier_balance(loads)))
+    return LawChecks(_values(loads), tuple(edges), balance, balance_error)
 
 
 def format_calibration(calibration: Calibration) -> str:
@@ -99,24 +147,23 @@ def format_calibration(calibration: Calibration) -> str:
             lines += [f"{'':12} note: {note}" for note in fit.notes]
     found = checks(calibration)
     lines.append("")
-    if "law" in found:
-        lines.append(f"the law a(P), L_I(P) cannot be built: {found['law']}")
+    if found.refusal is not None:
+        lines.append(f"the law a(P), L_I(P) cannot be built: {found.refusal}")
     else:
-        loads = found["P"]
-        for side in calibration.sides:
-            values = found[side]
+        loads = found.loads
+        for side, values in found.edges:
             pairs = ", ".join(
                 f"{f:.4g} +- {e:.2g}"
-                for f, e in zip(values["moment_factor"], values["moment_factor_error"], strict=True)
+                for f, e in zip(values.moment_factor, values.moment_factor_error, strict=True)
             )
             lines.append(
                 f"{side} edge moment factor f (1 without rotation) at P = "
                 f"{', '.join(f'{P:g}' for P in loads)}: {pairs}"
             )
-        if "balance" in found:
+        if found.balance is not None and found.balance_error is not None:
             pairs = ", ".join(
                 f"{f:.6g} +- {e:.2g}"
-                for f, e in zip(found["balance"], found["balance_error"], strict=True)
+                for f, e in zip(found.balance, found.balance_error, strict=True)
             )
             lines.append(f"balance of the two edges (exactly 1 for consistent data): {pairs}")
     if calibration.load_balance:

@@ -10,7 +10,7 @@ from pathlib import Path
 from .parser import number
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     calibrate = commands.add_parser(
         "calibrate",
         help="calibrate each contact edge from pressure traces (e.g. from a finite-element run)",
@@ -86,7 +86,9 @@ def run(args: argparse.Namespace) -> int:
         calibration.save(args.out)
         print(f"wrote {args.out}", file=sys.stderr)
     if args.json:
-        print(json.dumps(calibration.to_dict() | {"checks": checks(calibration)}, indent=2))
+        print(
+            json.dumps(calibration.to_dict() | {"checks": checks(calibration).to_dict()}, indent=2)
+        )
     else:
         print(format_calibration(calibration))
     return 0

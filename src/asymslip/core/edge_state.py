@@ -34,7 +34,7 @@ from typing import NamedTuple
 from ..edge import Edge
 from ..laws.base import ContactLaw, LawState, Number
 from ..rules import denominator_checks, finite
-from .estimates import DENOMINATOR_TOLERANCE, EdgeEstimates
+from .estimates import DENOMINATOR_TOLERANCE, DISAGREEMENT_ROUNDING, EdgeEstimates
 from .flags import (
     BEYOND_A1,
     DISAGREE_CORRECTIVE_STICK,
@@ -117,18 +117,18 @@ def mirrored(edge: EdgeState) -> EdgeState:
     Every number is the same but lam, L_II1, L_II2 and the slip direction, which change sign
     exactly (L_II = lam L_I by (21) with eta = 0); the checks and flags are the same.
     """
-    a1, a2, lam, eta, L_I1, L_I2, L_II1, L_II2 = edge[:8]
-    return _new(
-        EdgeState,
-        (a1, a2, -lam, eta, L_I1, L_I2, -L_II1, -L_II2, *edge[8:15], -edge[15], *edge[16:]),
-    )
+    values = list(edge)
+    values[_LAM] = -values[_LAM]
+    values[_L_II1] = -values[_L_II1]
+    values[_L_II2] = -values[_L_II2]
+    values[_DIRECTION] = -values[_DIRECTION]
+    return _new(EdgeState, values)
 
 
-def mirrored_shear(shear: Shear) -> Shear:
-    """The other edge's shear multipliers and slip direction where :func:`mirrored` applies:
-    (21) with eta = 0 is odd in lam, and so is the slip direction."""
-    L_II1, L_II2, direction = shear
-    return _new(Shear, (-L_II1, -L_II2, -direction))
+#: Where :func:`mirrored` changes sign, by position in :class:`EdgeState`.
+_LAM, _L_II1, _L_II2, _DIRECTION = (
+    EdgeState._fields.index(name) for name in ("lam", "L_II1", "L_II2", "slip_direction")
+)
 
 
 def shear_multipliers(
@@ -157,21 +157,38 @@ def shear_multipliers(
     return _new(Shear, (L_II1, L_II2, ops.kernels.slip_direction(mu, state.L_I2, L_II2)))
 
 
-def oriented(
-    ops: Operations, lam: Number, eta: Number, direction: Number, other_direction: Number
-) -> tuple[Number, Number, Number]:
-    """lam and eta in the edge's slip direction, and the other-edge factor of b2.
+def both_edges_estimates(
+    ops: Operations, mu: Number, lam: Number, eta: Number, state: LawState, dP: Number
+) -> tuple[Shear, Shear, EdgeEstimates, EdgeEstimates]:
+    """Both edges of a symmetric contact whose left edge is not the right one mirrored (bulk
+    tension): each edge's shear multipliers, slip direction and estimates, in its own frame.
 
-    The other edge slips the same way in the global frame when the two own-frame directions
-    differ in sign (the left edge's frame is mirrored); +1 too where it does not slip
-    (derivations/second_order_slip_zone.py).
+    One call of the generated program ``both_edges`` (``derivations/edge_programs.py``): the
+    steps of ``edge_shear`` and ``edge_estimates`` for each edge, the law's quantities once.
     """
-    # Where both edges slip (the common case) the factors are the directions themselves.
-    if ops.everywhere((direction != 0) & (other_direction != 0)):
-        return direction * lam, direction * eta, -direction * other_direction
-    orientation = ops.where(direction != 0, direction, 1.0)
-    other_edge = ops.where(other_direction == 0, 1.0, -direction * other_direction)
-    return orientation * lam, orientation * eta, other_edge
+    values = ops.programs.both_edges(
+        mu,
+        lam,
+        eta,
+        state.a1,
+        state.a2,
+        state.da,
+        state.L_I1,
+        state.L_I2,
+        state.P1,
+        dP,
+        state.load_slope1,
+        state.load_slope2,
+        state.L_I_slope1,
+        state.L_I_slope2,
+        DISAGREEMENT_ROUNDING,
+    )
+    return (
+        _new(Shear, values[:3]),
+        _new(Shear, values[3:6]),
+        _new(EdgeEstimates, values[6:20]),
+        _new(EdgeEstimates, values[20:]),
+    )
 
 
 def edge_state(
@@ -184,15 +201,16 @@ def edge_state(
     dP: Number,
     edge: Edge,
     shear: Shear,
-    other: Shear,
+    other_direction: Number,
     estimates: EdgeEstimates | None,
     extrapolates: bool = True,
 ) -> EdgeState:
     """One edge from its estimates (None for an edge with its own multipliers), checked
     against the rules of :mod:`asymslip.rules` and flagged.
 
-    ``extrapolates``: False for a law known everywhere (no load of it is extrapolated), so
-    that its ``extrapolated`` is not asked.
+    ``other_direction``: the other edge's slip direction in its own frame (0: it sticks, which
+    the edge's warnings say).  ``extrapolates``: False for a law known everywhere (no load of
+    it is extrapolated), so that its ``extrapolated`` is not asked.
     """
     if estimates is None:
         return _own_multipliers_edge(ops, law, state, mu, lam, eta, dP, edge, shear, extrapolates)
@@ -227,7 +245,9 @@ def edge_state(
     b = a1 - width
     # Jaeger-Ciavarella: b = a(P_K) is exact for a symmetric law without bulk tension.
     exact = (eta == 0) & law.symmetric
-    if ops.somewhere(exact):
+    if ops.everywhere(exact):  # one cycle, or arrays without tension: a(P_K) throughout
+        b_exact = law.half_width_near(P_K, P1, a1)
+    elif ops.somewhere(exact):
         at_P_K = law.half_width_near(ops.where(exact, P_K, P1), P1, a1)
         b_exact = ops.where(exact, at_P_K, ops.missing(a1))
     else:
@@ -235,7 +255,7 @@ def edge_state(
     b_paper = a1 - paper_width
     # A flag is its bit times its condition: an int for one cycle, an array for many.
     disagree: Flags = WITH_TENSION * (eta != 0) | slips * (
-        OTHER_EDGE_STICKS * (other[2] == 0)
+        OTHER_EDGE_STICKS * (other_direction == 0)
         | _EXACT_BEYOND_A1 * (b_exact > a1)
         | DISAGREE_PAPER * (abs(b_paper - b) > paper_limit)
         | DISAGREE_FIRST_ORDER * (abs(b_first_order - b) > first_limit)

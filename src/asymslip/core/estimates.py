@@ -1,7 +1,7 @@
 """The paper's estimates at one edge of a cycle: one call of the generated edge program.
 
-Everything is in the edge's own frame and slip direction (``lam``, ``eta`` oriented so that the
-edge slips forward; see :mod:`asymslip.core.edge_state`); what an edge that does not slip
+Everything is in the edge's own frame, and the program orients ``lam`` and ``eta`` so that the
+edge slips forward (see :mod:`asymslip.core.edge_state`); what an edge that does not slip
 reports instead is the pipeline's business.
 
 Examples
@@ -11,7 +11,7 @@ The Fig. 5 cycle (Hertz, R = E* = 1, P 100 -> 105, lambda = 0.2, mu = 0.1) at it
 >>> from asymslip.core.operations import FLOATS
 >>> from asymslip.laws.hertz import HertzLaw
 >>> state = HertzLaw(1.0, 1.0).cycle_state(100.0, 5.0)
->>> estimates = edge_estimates(FLOATS, 0.1, 0.2, 0.0, state, 5.0, 1.0)
+>>> estimates = edge_estimates(FLOATS, 0.1, 0.2, 0.0, state, 5.0, 1.0, -1.0)
 >>> round(estimates.width, 6), round(estimates.P_K, 6)
 (0.141929, 97.5)
 """
@@ -77,11 +77,13 @@ def edge_estimates(
     eta: Number,
     state: LawState,
     dP: Number,
-    other_edge: Number,
+    direction: Number,
+    other_direction: Number,
 ) -> EdgeEstimates:
-    """Every estimate of one edge, ``lam`` and ``eta`` oriented so that the edge slips forward.
+    """Every estimate of one edge, ``lam`` and ``eta`` in its own frame.
 
     One call of the generated program ``edge_estimates`` (``derivations/edge_programs.py``):
+    lam and eta oriented so that the edge slips forward, the other edge's factor of b2, and
     the formulas of (22), (28), (40), (33), b2, (24)-(27) and the stated accuracies, in one
     text printed for NumPy and for Python floats.
 
@@ -90,12 +92,14 @@ def edge_estimates(
     ops
         One cycle's float operations or the array ones (:mod:`asymslip.core.operations`).
     mu, lam, eta, dP
-        Friction coefficient, the oriented load-path slopes (18) and the load change.
+        Friction coefficient, the load-path slopes (18) in the edge's own frame and the load
+        change.
     state
         The law's quantities of the cycle (a1, a2, L_I and slopes at both states).
-    other_edge
-        +1 when the other edge slips the same way in the global frame or does not slip, -1
-        when it slips the opposite way (``derivations/second_order_slip_zone.py``).
+    direction, other_direction
+        The slip directions of this edge and of the other one, each in its own frame (+1, -1
+        or 0): the other edge slips the same way in the global frame when they differ in sign
+        (``derivations/second_order_slip_zone.py``).
     """
     return _new(
         EdgeEstimates,
@@ -114,7 +118,8 @@ def edge_estimates(
             state.load_slope2,
             state.L_I_slope1,
             state.L_I_slope2,
-            other_edge,
+            direction,
+            other_direction,
             DISAGREEMENT_ROUNDING,
         ),
     )

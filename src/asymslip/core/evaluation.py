@@ -46,6 +46,7 @@ from ..errors import InputError, as_numbers
 from ..laws.base import (
     ContactLaw,
     LawState,
+    LawTraits,
     Number,
     computes_on_floats,
     is_law,
@@ -55,11 +56,10 @@ from ..rules import Verdict, check_friction, check_partial_slip, finite
 from .edge_state import (
     EdgeState,
     Shear,
+    both_edges_estimates,
     edge_state,
     mirrored,
-    mirrored_shear,
     missing_edge,
-    oriented,
     shear_multipliers,
 )
 from .estimates import edge_estimates
@@ -104,6 +104,33 @@ def evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> Evaluation:
         Only for what is no cycle at all: ``law`` not a contact law, ``cycle`` not a
         :class:`~asymslip.cycle.LoadCycle`, ``mu`` not numbers or not broadcastable.
     """
+    one = evaluate_one(law, cycle, mu)
+    if one is not None and not isinstance(one, Evaluation):  # valid: (right, left)
+        right, left = one
+        return Evaluation(law, (), {Edge.RIGHT: right, Edge.LEFT: left})
+    if one is not None:
+        return one
+    return evaluate_arrays(law, cycle, mu)
+
+
+def evaluate_one(
+    law: ContactLaw, cycle: LoadCycle, mu: ArrayLike
+) -> tuple[EdgeState, EdgeState] | Evaluation | None:
+    """One checked cycle on Python floats: its right and left edges where it is valid, its
+    evaluation (the rule it broke) where it is not, or None where :func:`evaluate_arrays` must
+    take it (many cycles, a cycle not checked, a friction coefficient or a state the rules
+    refuse, float arithmetic that raises where NumPy gives inf or NaN, or no law at all)."""
+    numbers = cycle.numbers if type(cycle) is LoadCycle else None
+    if numbers is None or not cycle.checked or not is_law(law):
+        return None
+    friction = mu if type(mu) is float else _one_number(mu)
+    if friction is None:
+        return None
+    return _one_cycle(law, numbers, friction)
+
+
+def evaluate_arrays(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> Evaluation:
+    """:func:`evaluate` on arrays: many cycles, or one that :func:`evaluate_one` left."""
     if not is_law(law):
         raise InputError(
             "law", "must be a contact law (HertzLaw, PowerLaw, ...; see asymslip.laws)", law
@@ -112,12 +139,6 @@ def evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> Evaluation:
         raise InputError(
             "cycle", "must be a LoadCycle(P1, Q1, P2, Q2[, sigma1, sigma2])", _shown(cycle)
         )
-    numbers = cycle.numbers
-    friction = _one_number(mu)
-    if numbers is not None and cycle.checked and friction is not None:
-        one = _one_cycle(law, numbers, friction)
-        if one is not None:
-            return one
     return _arrays(law, cycle, mu)
 
 
@@ -141,10 +162,10 @@ def _shown(value: object) -> object:
     return value if len(text) <= 60 else f"a {type(value).__name__}"
 
 
-def _one_cycle(law: ContactLaw, numbers: tuple[float, ...], mu: float) -> Evaluation | None:
-    """One checked cycle on Python floats, or None where the array path must take it: a
-    friction coefficient or a state the rules refuse (they name it there), or float arithmetic
-    that raises where NumPy would give inf or NaN."""
+def _one_cycle(
+    law: ContactLaw, numbers: tuple[float, ...], mu: float
+) -> tuple[EdgeState, EdgeState] | Evaluation | None:
+    """One checked cycle on Python floats (see :func:`evaluate_one`)."""
     P1, Q1, P2, Q2, sigma1, sigma2 = numbers
     # check_friction and check_partial_slip on floats (a NaN fails every comparison).
     if not (0.0 < mu < math.inf and abs(Q1) < mu * P1 and abs(Q2) < mu * P2):
@@ -152,15 +173,13 @@ def _one_cycle(law: ContactLaw, numbers: tuple[float, ...], mu: float) -> Evalua
     dP = P2 - P1
     try:
         if computes_on_floats(law):
-            edges = _both_edges(FLOATS, law, mu, P1, dP, (Q2 - Q1) / dP, (sigma2 - sigma1) / dP)
-        else:
-            with np.errstate(all="ignore"):  # as on arrays: a law on NumPy never warns
-                edges = _both_edges(FLOATS, law, mu, P1, dP, (Q2 - Q1) / dP, (sigma2 - sigma1) / dP)
+            return _both_edges(FLOATS, law, mu, P1, dP, (Q2 - Q1) / dP, (sigma2 - sigma1) / dP)
+        with np.errstate(all="ignore"):  # as on arrays: a law on NumPy never warns
+            return _both_edges(FLOATS, law, mu, P1, dP, (Q2 - Q1) / dP, (sigma2 - sigma1) / dP)
     except RuleBroken as broken:
         return Evaluation(law, (), _MISSING_EDGES, broken)
     except (ZeroDivisionError, OverflowError, ValueError):
         return None
-    return Evaluation(law, (), edges)
 
 
 def _arrays(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> Evaluation:
@@ -195,14 +214,15 @@ def _arrays(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> Evaluation:
             friction = np.where(ok, friction, 1.0)
         dP = P2 - P1
         ops = ArrayOperations(verdict)
-        edges = _both_edges(ops, law, friction, P1, dP, dQ / dP, dsigma / dP)
-    return Evaluation(law, shape, edges, verdict)
+        right, left = _both_edges(ops, law, friction, P1, dP, dQ / dP, dsigma / dP)
+    return Evaluation(law, shape, {Edge.RIGHT: right, Edge.LEFT: left}, verdict)
 
 
 def _both_edges(
     ops: Operations, law: ContactLaw, mu: Number, P1: Number, dP: Number, lam: Number, eta: Number
-) -> dict[Edge, EdgeState]:
-    """The pipeline: the law's state of the cycle, each edge's shear, estimates and checks."""
+) -> tuple[EdgeState, EdgeState]:
+    """The pipeline: the law's state of the cycle, each edge's shear, estimates and checks;
+    the right edge and the left one."""
     symmetric = law.symmetric
     right_law = law.for_edge(Edge.RIGHT)
     left_law = right_law if symmetric else law.for_edge(Edge.LEFT)
@@ -210,6 +230,45 @@ def _both_edges(
     left_state = right_state if symmetric else _law_state(ops, left_law, P1, dP)
     right_traits = law_traits(right_law)
     left_traits = right_traits if symmetric else law_traits(left_law)
+    own = right_traits.own_shear_multipliers
+    if symmetric and not own and not ops.everywhere(eta == 0):
+        # Bulk tension: the left edge is no mirror image; both edges in one program, the
+        # law's quantities shared (the left edge is the right edge of the mirrored cycle:
+        # lam -> -lam, eta kept).
+        right_shear, left_shear, right_estimates, left_estimates = both_edges_estimates(
+            ops, mu, lam, eta, right_state, dP
+        )
+        extrapolates = right_traits.extrapolates
+        right = edge_state(
+            ops,
+            right_law,
+            right_state,
+            mu,
+            lam,
+            eta,
+            dP,
+            Edge.RIGHT,
+            right_shear,
+            left_shear[2],
+            right_estimates,
+            extrapolates,
+        )
+        left = edge_state(
+            ops,
+            left_law,
+            left_state,
+            mu,
+            -lam,
+            eta,
+            dP,
+            Edge.LEFT,
+            left_shear,
+            right_shear[2],
+            left_estimates,
+            extrapolates,
+        )
+        _check_meeting(ops, right, left)
+        return right, left
     # The left edge is the right edge of the mirrored cycle: lam -> -lam, eta kept.
     right_shear = shear_multipliers(
         ops, right_law, right_state, mu, lam, eta, right_traits.own_shear_multipliers
@@ -218,28 +277,53 @@ def _both_edges(
     # (derivations/edge_symmetry.py): the left edge slips the other way in its own frame, is
     # asked exactly what the right edge was (the same oriented lam and other-edge factor), and
     # is the right edge with lam, L_II and the direction negated -- not computed again.
-    mirror = (
-        symmetric
-        and not right_traits.own_shear_multipliers
-        and ops.everywhere((eta == 0) & (right_shear[2] != 0))
-    )
-    if mirror:
-        left_shear = mirrored_shear(right_shear)
+    if symmetric and not own and ops.everywhere(right_shear[2] != 0):  # eta = 0 here
+        right = _edge(
+            ops,
+            right_law,
+            right_state,
+            right_traits,
+            mu,
+            lam,
+            eta,
+            dP,
+            Edge.RIGHT,
+            right_shear,
+            -right_shear[2],
+        )
+        left = mirrored(right)
     else:
         left_shear = shear_multipliers(
             ops, left_law, left_state, mu, -lam, eta, left_traits.own_shear_multipliers
         )
-    right = _edge(
-        ops, right_law, right_state, mu, lam, eta, dP, Edge.RIGHT, right_shear, left_shear
-    )
-    if mirror:
-        left = mirrored(right)
-    else:
+        right = _edge(
+            ops,
+            right_law,
+            right_state,
+            right_traits,
+            mu,
+            lam,
+            eta,
+            dP,
+            Edge.RIGHT,
+            right_shear,
+            left_shear[2],
+        )
         left = _edge(
-            ops, left_law, left_state, mu, -lam, eta, dP, Edge.LEFT, left_shear, right_shear
+            ops,
+            left_law,
+            left_state,
+            left_traits,
+            mu,
+            -lam,
+            eta,
+            dP,
+            Edge.LEFT,
+            left_shear,
+            right_shear[2],
         )
     _check_meeting(ops, right, left)
-    return {Edge.RIGHT: right, Edge.LEFT: left}
+    return right, left
 
 
 def _law_state(ops: Operations, law: ContactLaw, P1: Number, dP: Number) -> LawState:
@@ -255,22 +339,25 @@ def _edge(
     ops: Operations,
     law: ContactLaw,
     state: LawState,
+    traits: LawTraits,
     mu: Number,
     lam: Number,
     eta: Number,
     dP: Number,
     edge: Edge,
     shear: Shear,
-    other: Shear,
+    other_direction: Number,
 ) -> EdgeState:
-    """One edge through the pipeline."""
-    own, extrapolates = law_traits(law)
+    """One edge through the pipeline (``other_direction``: the other edge's slip direction in
+    its own frame)."""
+    own, extrapolates = traits
     if own:  # an edge with its own multipliers: no estimates of (21)'s
-        return edge_state(ops, law, state, mu, lam, eta, dP, edge, shear, other, None, extrapolates)
-    lam_o, eta_o, other_edge = oriented(ops, lam, eta, shear[2], other[2])
-    estimates = edge_estimates(ops, mu, lam_o, eta_o, state, dP, other_edge)
+        return edge_state(
+            ops, law, state, mu, lam, eta, dP, edge, shear, other_direction, None, extrapolates
+        )
+    estimates = edge_estimates(ops, mu, lam, eta, state, dP, shear[2], other_direction)
     return edge_state(
-        ops, law, state, mu, lam, eta, dP, edge, shear, other, estimates, extrapolates
+        ops, law, state, mu, lam, eta, dP, edge, shear, other_direction, estimates, extrapolates
     )
 
 

@@ -59,8 +59,11 @@ class CalibrationData(Protocol):
     files and fits traces); any object with these members will do.
     """
 
-    source: str
-    origin: float
+    @property
+    def source(self) -> str: ...
+
+    @property
+    def origin(self) -> float: ...
 
     @property
     def sides(self) -> tuple[Side, ...]: ...
@@ -270,8 +273,12 @@ class CalibratedEdge:
         (AS3): 2 (lam + pi eta w/8) / (pi sqrt(w) a'(P)).
         """
         P = np.asarray(P, dtype=np.float64)
-        return shear_edge_multiplier_asymmetric(
-            lam, eta, self.contact_width(P), self.half_width_slope(P)
+        # The kernel gives a NumPy scalar for scalar input: an array either way.
+        return np.asarray(
+            shear_edge_multiplier_asymmetric(
+                lam, eta, self.contact_width(P), self.half_width_slope(P)
+            ),
+            dtype=np.float64,
         )
 
     def moment_factor(self, P: ArrayLike) -> FloatArray:
@@ -281,8 +288,11 @@ class CalibratedEdge:
         b_exact = a(P_K) would exist); L_II/L_I = (lam + pi eta w/8)/f.
         """
         P = np.asarray(P, dtype=np.float64)
-        return edge_moment_factor(
-            self.contact_width(P), self.normal_multiplier(P), self.half_width_slope(P)
+        return np.asarray(
+            edge_moment_factor(
+                self.contact_width(P), self.normal_multiplier(P), self.half_width_slope(P)
+            ),
+            dtype=np.float64,
         )
 
     # --- range, warnings, error -------------------------------------------------------------
@@ -435,7 +445,7 @@ class CalibratedLaw:
 
     def other_edge(self, side: Side) -> CalibratedEdge | None:
         """The edge opposite ``side``, or None when only one edge was calibrated."""
-        other = "left" if side == "right" else "right"
+        other: Side = "left" if side == "right" else "right"
         return self._edges.get(other) if len(self._edges) == 2 else None
 
     @property
@@ -455,12 +465,15 @@ class CalibratedLaw:
             raise InputError("calibration", "the multiplier balance needs both edges")
         right, left = self._edges["right"], self._edges["left"]
         P = np.asarray(P, dtype=np.float64)
-        return edge_multiplier_balance(
-            right.contact_width(P),
-            right.normal_multiplier(P),
-            right.half_width_slope(P),
-            left.normal_multiplier(P),
-            left.half_width_slope(P),
+        return np.asarray(
+            edge_multiplier_balance(
+                right.contact_width(P),
+                right.normal_multiplier(P),
+                right.half_width_slope(P),
+                left.normal_multiplier(P),
+                left.half_width_slope(P),
+            ),
+            dtype=np.float64,
         )
 
     # --- error --------------------------------------------------------------------------------

@@ -26,7 +26,7 @@ from asymslip_gen.flat_rounded import (
 from asymslip_gen.hertz import hertz_half_width
 
 from ..errors import as_float_array, positive, require
-from .base import BoolArray, ContactLaw, FloatArray
+from .base import BoolArray, ContactLaw, FloatArray, Number
 from .parameters import law_parameter, positive_parameter
 from .roots import (
     QUADRATURE_LIMIT,
@@ -37,7 +37,17 @@ from .roots import (
 
 
 @dataclass(frozen=True)
-class FlatRoundedLaw(ContactLaw):
+class _FlatRoundedParameters:
+    """The checked parameters of :class:`FlatRoundedLaw`: set once, by the generated
+    constructor."""
+
+    c: float
+    R: float
+    E_star: float
+
+
+@dataclass(frozen=True, init=False)
+class FlatRoundedLaw(_FlatRoundedParameters, ContactLaw):
     """Flat face of half-width c with corners of radius R, on a half-plane of modulus E*.
 
     P(a) = E* (a^2 psi - c sqrt(a^2 - c^2)) / (2R), psi = arccos(c/a): any load P > 0 gives
@@ -69,27 +79,23 @@ class FlatRoundedLaw(ContactLaw):
     0.05
     """
 
-    c: float
-    R: float
-    E_star: float
     name = "flat-rounded"
 
-    def __post_init__(self) -> None:
-        flat = law_parameter("c", self.c)
+    def __init__(self, c: float, R: float, E_star: float) -> None:
+        # Checked and made Python floats before the frozen record is built: nothing set twice.
+        flat = law_parameter("c", c)
         require(flat >= 0, "c", "must be >= 0 (the half-width of the flat face)", flat)
-        object.__setattr__(self, "c", flat)
-        object.__setattr__(self, "R", positive_parameter("R", self.R))
-        object.__setattr__(self, "E_star", positive_parameter("E_star", self.E_star))
+        super().__init__(flat, positive_parameter("R", R), positive_parameter("E_star", E_star))
 
-    def load(self, a: ArrayLike) -> FloatArray:
+    def load(self, a: ArrayLike) -> Number:
         """P(a); zero for a <= c."""
         return flat_rounded_load(a, self.c, self.R, self.E_star)
 
-    def load_slope(self, a: ArrayLike) -> FloatArray:
+    def load_slope(self, a: ArrayLike) -> Number:
         """dP/da = E* a arccos(c/a) / R."""
         return flat_rounded_load_slope(a, self.c, self.R, self.E_star)
 
-    def load_and_slope(self, a: ArrayLike) -> tuple[FloatArray, FloatArray]:
+    def load_and_slope(self, a: ArrayLike) -> tuple[Number, Number]:
         """P(a) and dP/da from one chord and one corner angle (a Newton step needs both)."""
         chord = flat_rounded_chord(a, self.c)
         angle = flat_rounded_corner_angle(chord, self.c)
@@ -177,14 +183,14 @@ class FlatRoundedLaw(ContactLaw):
             out[~near] = self.load(a[~near] + d[~near]) - self.load(a[~near])
         return out[()] if out.ndim == 0 else out
 
-    def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:
+    def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> Number:
         """a(P1 + dP) - a(P1) with full relative precision for any dP/P1."""
         start = positive("P1", P1)
         change = as_float_array("dP", dP)
         require(change >= 0, "dP", "must be >= 0", change)
         return self.cycle_state(start, change).da
 
-    def quantities_at(self, a: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
+    def quantities_at(self, a: FloatArray) -> tuple[Number, Number, Number]:
         """dP/da, L_I and dL_I/dP from one chord and one corner angle."""
         chord = flat_rounded_chord(a, self.c)
         parameters = (a, self.c, self.R, self.E_star, flat_rounded_corner_angle(chord, self.c))
@@ -198,23 +204,23 @@ class FlatRoundedLaw(ContactLaw):
     def stand_in_half_width(self) -> float:  # type: ignore[override]
         return self.c + 1.0
 
-    def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+    def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> Number:
         chord = flat_rounded_chord(a, self.c)
         return flat_rounded_normal_edge_multiplier_at_angle(
             a, self.c, self.R, self.E_star, flat_rounded_corner_angle(chord, self.c)
         )
 
-    def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+    def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> Number:
         chord = flat_rounded_chord(a, self.c)
         return flat_rounded_normal_edge_multiplier_slope_at_angle(
             a, self.c, self.R, self.E_star, flat_rounded_corner_angle(chord, self.c), chord
         )
 
-    def profile(self, x: ArrayLike) -> FloatArray:
+    def profile(self, x: ArrayLike) -> Number:
         """Initial gap h(x) = Max(0, |x| - c)^2/(2R): flat over |x| < c, rounded beyond."""
         return flat_rounded_profile(as_float_array("x", x), self.c, self.R)
 
-    def pressure(self, x: ArrayLike, P: ArrayLike) -> FloatArray:
+    def pressure(self, x: ArrayLike, P: ArrayLike) -> Number:
         """Contact pressure p(x) at load P; zero for |x| >= a(P)."""
         position = as_float_array("x", x)
         return flat_rounded_pressure(position, self.half_width(P), self.c, self.R, self.E_star)

@@ -8,7 +8,9 @@ needs the Gauss hypergeometric function from SciPy: install the ``special`` extr
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -27,7 +29,7 @@ from asymslip_gen.power_law import (
 )
 
 from ..errors import InputError, as_float_array, positive, require
-from .base import BoolArray, ContactLaw, FloatArray, LawState
+from .base import BoolArray, ContactLaw, LawState, Number
 from .parameters import law_parameter, positive_parameter
 
 #: Above this n, Gamma((n + 1)/2) overflows a double; use log-Gamma instead.
@@ -45,7 +47,7 @@ def shape_factor(n: float) -> float:
     return math.sqrt(math.pi) * math.exp(math.lgamma((n + 1) / 2) - math.lgamma(n / 2))
 
 
-def _hyp2f1():
+def _hyp2f1() -> Callable[..., Number]:
     """SciPy's hyp2f1, imported only when a pressure needs it."""
     try:
         from scipy.special import hyp2f1
@@ -56,11 +58,21 @@ def _hyp2f1():
             "hyp2f1: install the 'special' extra (pip install "
             "'asymslip[special]')",
         ) from None
-    return hyp2f1
+    function: Callable[..., Number] = hyp2f1  # SciPy's ufuncs carry no type information
+    return function
 
 
 @dataclass(frozen=True)
-class PowerLaw(ContactLaw):
+class _PowerParameters:
+    """The checked parameters of :class:`PowerLaw`: set once, by the generated constructor."""
+
+    A: float
+    n: float
+    E_star: float
+
+
+@dataclass(frozen=True, init=False)
+class PowerLaw(_PowerParameters, ContactLaw):
     """Punch of profile h = A |x|^n (n >= 1) on a half-plane: P = K(n) E* A a^n.
 
     n = 1 is the wedge (A = the tangent of its base angle), n = 2 with A = 1/(2R) the cylinder
@@ -89,14 +101,12 @@ class PowerLaw(ContactLaw):
     11.283792
     """
 
-    A: float
-    n: float
-    E_star: float
     name = "power"
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "A", positive_parameter("A", self.A))
-        exponent = law_parameter("n", self.n)
+    def __init__(self, A: float, n: float, E_star: float) -> None:
+        # Checked and made Python floats before the frozen record is built: nothing set twice.
+        coefficient = positive_parameter("A", A)
+        exponent = law_parameter("n", n)
         require(exponent >= 1, "n", "must be >= 1 (n < 1 is not an incomplete contact)", exponent)
         try:
             shape_factor(exponent)
@@ -106,15 +116,16 @@ class PowerLaw(ContactLaw):
                 "is too large: the factor K(n) of P = K E* A a^n overflows double precision",
                 float(exponent),
             ) from None
-        object.__setattr__(self, "n", exponent)
-        object.__setattr__(self, "E_star", positive_parameter("E_star", self.E_star))
+        super().__init__(coefficient, exponent, positive_parameter("E_star", E_star))
 
-    @property
+    # Constants of the law, computed once per law (cached_property writes the instance's
+    # __dict__ itself: the frozen record is not mutated).
+    @cached_property
     def shape_factor(self) -> float:
         """K(n) of P = K E* A a^n."""
         return shape_factor(self.n)
 
-    @property
+    @cached_property
     def _parameters(self) -> tuple[np.float64, np.float64, np.float64, np.float64]:
         # NumPy scalars, not Python floats: a kernel's A**(3/2) of a huge A is then inf (which
         # the rules refuse, naming the load) instead of Python's OverflowError.
@@ -125,28 +136,28 @@ class PowerLaw(ContactLaw):
             np.float64(self.shape_factor),
         )
 
-    def load(self, a: ArrayLike) -> FloatArray:
+    def load(self, a: ArrayLike) -> Number:
         return power_law_load(a, *self._parameters)
 
-    def load_slope(self, a: ArrayLike) -> FloatArray:
+    def load_slope(self, a: ArrayLike) -> Number:
         return power_law_load_slope(a, *self._parameters)
 
-    def half_width(self, P: ArrayLike) -> FloatArray:
+    def half_width(self, P: ArrayLike) -> Number:
         """a(P) = (P/(K E* A))^(1/n), closed form."""
         return power_law_half_width(positive("P", P), *self._parameters)
 
-    def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> FloatArray:
+    def half_width_growth(self, P1: ArrayLike, dP: ArrayLike) -> Number:
         """a1 expm1(log1p(dP/P1)/n): full relative precision however small dP/P1 is."""
         change = as_float_array("dP", dP)
         require(change >= 0, "dP", "must be >= 0", change)
         return power_law_half_width_growth(positive("P1", P1), change, *self._parameters)
 
-    def half_width_where_possible(self, P: ArrayLike) -> tuple[FloatArray, BoolArray]:
+    def half_width_where_possible(self, P: ArrayLike) -> tuple[Number, BoolArray]:
         with np.errstate(over="ignore", under="ignore"):
             a = power_law_half_width(P, *self._parameters)
         return a, np.isfinite(a) & (a > 0)
 
-    def half_width_near(self, P: ArrayLike, P_ref: ArrayLike, a_ref: ArrayLike) -> FloatArray:
+    def half_width_near(self, P: ArrayLike, P_ref: ArrayLike, a_ref: ArrayLike) -> Number:
         return power_law_half_width(P, *self._parameters)
 
     def cycle_state(self, P1: ArrayLike, dP: ArrayLike) -> LawState:
@@ -184,24 +195,24 @@ class PowerLaw(ContactLaw):
                 found2=found2,
             )
 
-    def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+    def normal_multiplier_at(self, a: ArrayLike, load_slope: ArrayLike) -> Number:
         return power_law_normal_edge_multiplier(self.load(a), *self._parameters)
 
-    def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> FloatArray:
+    def normal_multiplier_slope_at(self, a: ArrayLike, load_slope: ArrayLike) -> Number:
         return power_law_normal_edge_multiplier_slope(self.load(a), *self._parameters)
 
-    def normal_multiplier(self, P: ArrayLike) -> FloatArray:
+    def normal_multiplier(self, P: ArrayLike) -> Number:
         return power_law_normal_edge_multiplier(positive("P", P), *self._parameters)
 
-    def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
+    def normal_multiplier_slope(self, P: ArrayLike) -> Number:
         """(1 - 3/(2n)) L_I / P: negative for n < 3/2."""
         return power_law_normal_edge_multiplier_slope(positive("P", P), *self._parameters)
 
-    def profile(self, x: ArrayLike) -> FloatArray:
+    def profile(self, x: ArrayLike) -> Number:
         """Initial gap h(x) = A |x|^n between the punch and the half-plane."""
         return power_law_profile(as_float_array("x", x), self.n, self.A)
 
-    def pressure(self, x: ArrayLike, P: ArrayLike) -> FloatArray:
+    def pressure(self, x: ArrayLike, P: ArrayLike) -> Number:
         """Contact pressure p(x) at load P; zero for |x| >= a(P).
 
         NumPy-only for n = 1 (the wedge, p = (E* A/pi) arccosh(a/|x|), +inf at the apex x = 0)

@@ -58,7 +58,7 @@ from asymslip_gen.edge_multipliers import normal_edge_multiplier
 from asymslip_gen.table_law import normal_edge_multiplier_slope_loglog
 
 from ..errors import InputError, as_float_array, as_numbers, positive
-from .base import BoolArray, ContactLaw, FloatArray, LawState
+from .base import BoolArray, ContactLaw, FloatArray, LawState, Number
 
 #: The columns a table file must have (header row, any order; other columns are ignored).
 COLUMNS = ("P", "a")
@@ -336,7 +336,7 @@ class TableLaw(ContactLaw):
         with np.errstate(over="ignore", under="ignore"):
             return np.exp(self._log_half_width(P, 0)[0])
 
-    def _half_width_slope_values(self, P: ArrayLike) -> FloatArray:
+    def _half_width_slope_values(self, P: ArrayLike) -> Number:
         P = np.asarray(P, dtype=np.float64)
         s, ds = self._log_half_width(P)
         with np.errstate(over="ignore", under="ignore", invalid="ignore"):
@@ -373,7 +373,7 @@ class TableLaw(ContactLaw):
         self._refuse_beyond_doubles(load, a)
         return a
 
-    def half_width_slope(self, P: ArrayLike) -> FloatArray:
+    def half_width_slope(self, P: ArrayLike) -> Number:
         """a'(P) = (a/P) d(log a)/d(log P); refused where :meth:`half_width` is."""
         load = positive("P", P)
         slope = self._half_width_slope_values(load)
@@ -450,9 +450,7 @@ class TableLaw(ContactLaw):
         return replace(state, **marked)
 
     @staticmethod
-    def _multiplier_slope(
-        P: FloatArray, L_I: FloatArray, ds: FloatArray, d2s: FloatArray
-    ) -> FloatArray:
+    def _multiplier_slope(P: FloatArray, L_I: Number, ds: FloatArray, d2s: FloatArray) -> Number:
         return normal_edge_multiplier_slope_loglog(P, L_I, ds, d2s)
 
     #: Why a load has no half-width: only the power-law continuation can lose it.
@@ -477,15 +475,15 @@ class TableLaw(ContactLaw):
 
         return invert_increasing(self._half_width_values, np.asarray(a, dtype=np.float64))
 
-    def load_slope(self, a: ArrayLike) -> FloatArray:
+    def load_slope(self, a: ArrayLike) -> Number:
         """dP/da = 1 / a'(P) at P = P(a)."""
         return 1.0 / self._half_width_slope_values(self.load(a))
 
-    def normal_multiplier(self, P: ArrayLike) -> FloatArray:
+    def normal_multiplier(self, P: ArrayLike) -> Number:
         """L_I of (19) at load P, with dP/da = 1/a'(P) (no inversion needed)."""
         return normal_edge_multiplier(self.half_width(P), 1.0 / self.half_width_slope(P))
 
-    def normal_multiplier_slope(self, P: ArrayLike) -> FloatArray:
+    def normal_multiplier_slope(self, P: ArrayLike) -> Number:
         """dL_I/dP = (L_I/P) (1 - 3 s'/2 - s''/s') with s = log a as a function of log P.
 
         Derived from (19) in ``derivations/contact_law_table.py``; for a power law a ~ P^k it
@@ -506,7 +504,8 @@ class TableLaw(ContactLaw):
     def outside_range(self, P: ArrayLike) -> NDArray[np.bool_]:
         """True where P lies outside the tabulated loads (the law is extrapolated there)."""
         P = np.asarray(P, dtype=np.float64)
-        return (P < self.P[0]) | (P > self.P[-1])
+        outside: NDArray[np.bool_] = (P < self.P[0]) | (P > self.P[-1])
+        return outside
 
     @cached_property
     def refits(self) -> tuple[TableLaw, ...]:
@@ -522,7 +521,7 @@ class TableLaw(ContactLaw):
             for index in range(self.P.size)
         )
 
-    def error_of(self, quantity: Callable[[ContactLaw], ArrayLike]) -> FloatArray:
+    def error_of(self, quantity: Callable[[ContactLaw], ArrayLike]) -> Number:
         """Estimated error of any result computed from this law, e.g. the stick boundary:
         ``law.error_of(lambda law: slip_zone(law, cycle, mu).b)``.
 
@@ -550,11 +549,11 @@ class TableLaw(ContactLaw):
         interval = np.clip(np.searchsorted(self.P, P) - 1, 0, self.P.size - 2)
         estimates = {}
         for key, quantity in _ERROR_QUANTITIES.items():
-            at_P = self.error_of(lambda law, quantity=quantity: quantity(law, P))
+            at_P = self.error_of(_at_loads(quantity, P))
             estimates[key] = np.maximum(self._interval_envelope(key)[interval], at_P)
         return estimates
 
-    def _interval_envelope(self, key: str) -> FloatArray:
+    def _interval_envelope(self, key: str) -> Number:
         cache = self.__dict__.setdefault("_envelopes", {})
         if key not in cache:
             fractions = np.linspace(0.0, 1.0, _ENVELOPE_SAMPLES)
@@ -571,6 +570,15 @@ _ENVELOPE_SAMPLES = 9
 #: with scatter, the scatter at one point can exceed what its neighbours' refits see, and the
 #: factor 2 covers that (checked with 1e-4 random scatter in tests/test_table_law.py).
 ERROR_SAFETY_FACTOR = 2.0
+
+
+def _at_loads(
+    quantity: Callable[[ContactLaw, FloatArray], FloatArray], P: FloatArray
+) -> Callable[[ContactLaw], FloatArray]:
+    """``quantity`` of a law at the loads ``P`` (bound now, not when the loop has moved on)."""
+    return lambda law: quantity(law, P)
+
+
 _ERROR_QUANTITIES: dict[str, Callable[[ContactLaw, FloatArray], FloatArray]] = {
     "a": lambda law, P: law.half_width(P),
     "a_slope": lambda law, P: law.half_width_slope(P),
