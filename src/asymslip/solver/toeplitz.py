@@ -137,7 +137,9 @@ def _keep_fft_scratch_on_the_heap() -> None:
     of a mapping when that mapping is released (its "dynamic threshold", up to 32 MiB on
     64-bit); this does it at once, for every transform up to n = 2^21.  The array is never
     touched, so it costs no page; the process keeps up to 64 MiB of freed heap (glibc's trim
-    threshold becomes twice the mmap threshold).  Elsewhere than glibc it is one allocation.
+    threshold becomes twice the mmap threshold).  Elsewhere than glibc it is one allocation, and
+    glibc keeps its threshold fixed when a MALLOC_* variable sets one (Dask's nanny sets
+    MALLOC_TRIM_THRESHOLD_ for its workers): there the transforms take fresh pages as before.
     """
     scratch = np.empty(_THRESHOLD_RAISER_BYTES // 8)
     del scratch
