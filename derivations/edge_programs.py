@@ -59,6 +59,8 @@ SLOPES = (
     Argument(L_I_slope2, "Slope L_I'(P) of the normal edge multiplier at state 2."),
 )
 LENGTH = "[length]"
+#: The law's quantities of the cycle, as the core passes them to every edge program.
+LAW_ARGUMENTS = (*arguments(a1, a2, da, L_I1, L_I2, P1, dP), *SLOPES)
 
 
 def _edge_shear(d: Derivation) -> None:
@@ -255,8 +257,7 @@ def _edge_estimates(d: Derivation) -> None:
             *arguments(mu),
             Argument(own_lam, "Load-path slope lambda = dQ/dP (18) in the edge's own frame."),
             Argument(own_eta, "Load-path slope eta = dsigma/dP (18) [1/length]."),
-            *arguments(a1, a2, da, L_I1, L_I2, P1, dP),
-            *SLOPES,
+            *LAW_ARGUMENTS,
             Argument(direction, "The edge's slip direction in its own frame: +1, -1 or 0."),
             Argument(
                 other_direction,
@@ -284,8 +285,7 @@ def _both_edges(d: Derivation) -> None:
             *arguments(mu),
             Argument(cycle_lam, "Load-path slope lambda = dQ/dP (18) of the cycle, either sign."),
             Argument(cycle_eta, "Load-path slope eta = dsigma/dP (18), either sign [1/length]."),
-            *arguments(a1, a2, da, L_I1, L_I2, P1, dP),
-            *SLOPES,
+            *LAW_ARGUMENTS,
             ROUNDING,
         ),
         steps=(
