@@ -14,6 +14,7 @@ from asymslip.solver import qp as qp_module
 from asymslip.solver.grid import Grid, InfluenceOperators
 from asymslip.solver.normal import NormalSolver
 from asymslip.solver.qp import Workspace, settle_ends, solve_box_qp
+from asymslip.solver.toeplitz import Checkpoint, Runs, onto_constraints, projected_cg, unpack
 
 from .test_linear_algebra import GRID, _check_kkt, _tangential_problem
 
@@ -66,3 +67,49 @@ def test_a_fallback_started_from_the_last_iterate_meets_the_optimality_condition
     solution = solve_box_qp(problem, none, none, feasible_start=feasible)
     assert solution.method == "primal (fallback)"
     _check_kkt(problem, solution)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_the_checkpoint_saves_iterations_and_changes_no_answer(seed, monkeypatch):
+    # From a guess with nothing at a bound (every element of the domain sticking) the first
+    # solve's sets are wrong: asked at 1e3 times its target residual, it stops there.
+    problem = _tangential_problem(seed)
+    none = np.zeros(GRID.count, dtype=bool)
+    asked = solve_box_qp(problem, none, none)
+    monkeypatch.setattr(qp_module, "CHECKPOINT_FACTOR", 0.0)  # never asked
+    unasked = solve_box_qp(problem, none, none)
+    _check_kkt(problem, asked)
+    assert np.array_equal(asked.at_lower, unasked.at_lower)
+    assert np.array_equal(asked.at_upper, unasked.at_upper)
+    # Two paths of the conjugate gradients, each to a residual of 1e-11: measured 1e-11.
+    assert np.allclose(asked.y, unasked.y, rtol=0, atol=1e-9 * np.abs(unasked.y).max())
+    assert asked.cg_iterations < unasked.cg_iterations
+
+
+def test_a_checkpoint_answered_no_stops_the_conjugate_gradients_there():
+    problem = _tangential_problem(1)
+    free = problem.domain
+    runs = Runs.of(free)
+    rows = problem.rows[:, free]
+    start = onto_constraints(np.zeros(runs.count), rows, problem.targets)
+    # M y0 - b over the free elements, for the feasible start y0.
+    residual = problem.operator.apply(unpack(start, runs, GRID.count))[free] - problem.linear[free]
+    target = 1e-11 * np.abs(problem.linear[free]).max()
+    full = projected_cg(problem.operator, runs, residual, rows, target=target)
+    seen: list[int] = []
+
+    def refuse(step: np.ndarray, multipliers: np.ndarray) -> bool:
+        seen.append(step.size)
+        return False
+
+    stopped = projected_cg(
+        problem.operator,
+        runs,
+        residual,
+        rows,
+        target=target,
+        checkpoint=Checkpoint(1e4 * target, refuse),
+    )
+    assert stopped.abandoned and not full.abandoned
+    assert seen == [runs.count]  # asked once, with the step over the runs
+    assert 0 < stopped.iterations < full.iterations

@@ -8,7 +8,7 @@ import pytest
 from asymslip.solver import qp as qp_module
 from asymslip.solver.grid import Grid, InfluenceOperators
 from asymslip.solver.qp import BoxQP, solve_box_qp
-from asymslip.solver.toeplitz import Runs, SolverError, fast_length, solve_constrained
+from asymslip.solver.toeplitz import Runs, SolverError, quick_length, solve_constrained
 
 GRID = Grid.spanning(-1.0, 1.0, 160)
 OPERATORS = InfluenceOperators(GRID, 1.0)
@@ -16,8 +16,12 @@ DENSE = OPERATORS.gap.column[np.abs(np.subtract.outer(np.arange(160), np.arange(
 RNG = np.random.default_rng(7)
 
 
-def test_fast_length_is_the_next_product_of_2_3_5():
-    assert [fast_length(n) for n in (1, 7, 997, 3601, 8001)] == [1, 8, 1000, 3645, 8100]
+def test_quick_length_is_the_next_power_of_2_times_at_most_9_and_125():
+    # By enumeration: every 2^a 3^b 5^c with b <= 2, c <= 3 up to 2^21, the smallest >= n.
+    lengths = sorted(2**a * 3**b * 5**c for a in range(22) for b in range(3) for c in range(4))
+    for n in (1, 7, 997, 3601, 8001, 199_999, 1_999_999):
+        assert quick_length(n) == next(length for length in lengths if length >= n)
+    assert [quick_length(n) for n in (7, 997, 199_999, 1_999_999)] == [8, 1000, 204_800, 2_048_000]
 
 
 def test_fft_product_equals_the_dense_toeplitz_product():

@@ -17,7 +17,12 @@ contacts the fitted boundary is within 0.03-0.08 elements of the exact one (meas
 refinement mode (``refine``) then measures the actual convergence.  If the fit is impossible
 (too few elements inside, a reserve that does not shrink towards the boundary) or lands more
 than one element from the grid end, the grid end is reported with an error of one element plus
-the discrepancy.
+the discrepancy.  So is it where the reserve at the fitted elements is below
+``NOISE_FRACTION`` of its largest value: the active-set iteration decides at 1e-9 of the
+tractions, so such a reserve is zero to the solver's accuracy -- e.g. elements held at the
+friction limit by a locked-in traction, which stick without slipping -- and a line through
+it would place the boundary by rounding (measured: a state's stick boundary moved by a whole
+element between two runs whose tractions agreed to 1e-9).
 """
 
 from __future__ import annotations
@@ -31,6 +36,8 @@ from .toeplitz import FloatArray
 
 #: Elements inside the boundary used by the primary fit.
 FIT_POINTS = 4
+#: A reserve below this fraction of its largest value is zero to the solver's accuracy.
+NOISE_FRACTION = 1e-8
 
 
 @dataclass(frozen=True)
@@ -72,12 +79,15 @@ def locate(grid: Grid, reserve: FloatArray, last_inside: int, side: int) -> Boun
     grid_x = grid.boundary(last_inside, side)
     x = grid.centres
     inward = -side
+    floor = NOISE_FRACTION * float(np.max(np.abs(reserve), initial=0.0))
 
     def window(skip: int, count: int) -> float | None:
         indices = last_inside + inward * np.arange(skip, skip + count)
         if indices.min() < 0 or indices.max() >= grid.count:
             return None
         values = reserve[indices]
+        if not np.all(values > floor):
+            return None
         # The reserve must grow away from the boundary for the square-root picture to hold.
         if not np.all(np.diff(values) > 0):
             return None

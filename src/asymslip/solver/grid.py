@@ -70,11 +70,20 @@ class InfluenceOperators:
             lambda k: np.asarray(gap_opening_influence(k, h, ell, E_star), dtype=np.float64),
             grid.count,
         )
-        # The tangential problem's Hessian is -S, positive definite.
-        self.slip_stiffness = ToeplitzOperator(
-            lambda k: -np.asarray(relative_slip_influence(k, h, ell, E_star), dtype=np.float64),
-            grid.count,
-        )
+
+        # The tangential problem's Hessian is -S, positive definite.  For similar bodies the
+        # derivation finds S = -W, which the generated kernels give bit for bit (a sign is
+        # exact): then one operator serves both problems -- one kernel column, one spectrum,
+        # one set of preconditioner spectra and FFT buffers in memory.
+        def stiffness(k: FloatArray) -> FloatArray:
+            return -np.asarray(relative_slip_influence(k, h, ell, E_star), dtype=np.float64)
+
+        if np.array_equal(
+            stiffness(np.arange(self.gap.column.size, dtype=np.float64)), self.gap.column
+        ):
+            self.slip_stiffness = self.gap
+        else:
+            self.slip_stiffness = ToeplitzOperator(stiffness, grid.count)
 
     def relative_slip(self, shear: FloatArray) -> FloatArray:
         """S q: the relative tangential displacement of the shear tractions q."""

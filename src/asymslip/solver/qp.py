@@ -35,6 +35,7 @@ from numpy.typing import NDArray
 from .inner_products import combination, norm, row_products
 from .toeplitz import (
     CG_TOLERANCE,
+    Checkpoint,
     FloatArray,
     Runs,
     SolverError,
@@ -55,6 +56,9 @@ LOOSE_TOLERANCE = 1e-6
 EXACT_MOVES = 2
 #: Loose solves at most by which :func:`settle_ends` moves the ends of a free run.
 SETTLING_SOLVES = 8
+#: The first solve of a programme asks at this many times its target residual whether its
+#: guessed sets hold, and stops there if they do not (:func:`solve_box_qp`).
+CHECKPOINT_FACTOR = 1e3
 #: Primal-dual iterations before the monotone fallback takes over.
 MAX_PRIMAL_DUAL = 40
 #: Iterations of the monotone fallback before giving up (each changes one bound).
@@ -112,6 +116,7 @@ class Workspace:
     def __init__(self) -> None:
         self.cg_iterations = 0
         self.last: Iterate | None = None
+        self.abandoned = False  # the last solve stopped at its checkpoint (not converged)
 
     def solve(
         self,
@@ -120,11 +125,14 @@ class Workspace:
         at_upper: BoolArray,
         guess: FloatArray | None = None,
         tolerance: float = CG_TOLERANCE,
+        sets_hold: Callable[[FloatArray, FloatArray], bool] | None = None,
     ) -> tuple[FloatArray, FloatArray, FloatArray]:
         """y, lambda and the gradient for this split of the domain.
 
         ``guess`` gives the start's values on the free elements (default: the last
-        solution's); the elements at a bound start at it.
+        solution's); the elements at a bound start at it.  ``sets_hold(y, gradient)``, if
+        given, is asked once, at ``CHECKPOINT_FACTOR`` times the target residual; if it
+        answers False the solve stops there and ``abandoned`` is set.
         """
         free = qp.domain & ~at_lower & ~at_upper
         runs = Runs.of(free)
@@ -150,6 +158,17 @@ class Workspace:
         image = last.image + qp.operator.apply(change) if change.any() else last.image.copy()
         linear = pack(qp.linear, runs)
         scale = max(norm(linear), norm(pack(image, runs)), 1e-300)
+        checkpoint = None
+        if sets_hold is not None:
+            ask = sets_hold
+
+            def go_on(step: FloatArray, multipliers: FloatArray) -> bool:
+                # The image is the CG's, kept up to date in place: no product is needed.
+                y = start.copy()
+                y[where] += step
+                return ask(y, image - qp.linear + combination(multipliers, rows))
+
+            checkpoint = Checkpoint(CHECKPOINT_FACTOR * tolerance * scale, go_on)
         found = projected_cg(
             qp.operator,
             runs,
@@ -157,7 +176,9 @@ class Workspace:
             packed_rows,
             target=tolerance * scale,
             image=image,
+            checkpoint=checkpoint,
         )
+        self.abandoned = found.abandoned
         self.cg_iterations += found.iterations
         y = start
         y[where] += found.step
@@ -330,21 +351,23 @@ def solve_box_qp(
         if np.count_nonzero(qp.domain & ~lower_set & ~upper_set) < qp.rows.shape[0]:
             break  # a guess with too few free elements to meet the equalities: go monotone
         (seen_loose if phase == "loose" else seen).add(signature)
+        # The first solve asks on the way whether its guessed sets hold: a guess off by a few
+        # elements is seen long before the solve converges, and the rest of it is saved.
+        hold = _sets_hold(qp, lower_set, upper_set) if iteration == 1 and phase == "exact" else None
         y, multipliers, gradient = equality.solve(
             qp,
             lower_set,
             upper_set,
             guess if iteration == 1 else None,
             LOOSE_TOLERANCE if phase == "loose" else CG_TOLERANCE,
+            sets_hold=hold,
         )
-        value_tol, gradient_tol = _scales(qp, y)
-        free = qp.domain & ~lower_set & ~upper_set
-        # An element leaves its bound only when its gradient clearly has the wrong sign
-        # (G >= 0 at the lower bound, G <= 0 at the upper, up to the tolerance).
-        new_lower = (free & (y < qp.lower - value_tol)) | (lower_set & (gradient > -gradient_tol))
-        new_upper = (free & (y > qp.upper + value_tol)) | (upper_set & (gradient < gradient_tol))
+        if equality.abandoned:  # not an exact solve of these sets: no evidence of a cycle
+            seen.discard(signature)
+            seen_loose.add(signature)
+        new_lower, new_upper, gradient_tol = _next_sets(qp, y, gradient, lower_set, upper_set)
         if np.array_equal(new_lower, lower_set) and np.array_equal(new_upper, upper_set):
-            if phase == "loose":
+            if phase == "loose" or equality.abandoned:
                 phase = "final"
                 continue
             return QPSolution(
@@ -373,6 +396,32 @@ def solve_box_qp(
         clipped = np.where(qp.domain, np.clip(last, qp.lower, qp.upper), 0.0)
         feasible_start = feasible_start(clipped)
     return _primal_active_set(qp, feasible_start, equality, settling + iteration, cg_before)
+
+
+def _next_sets(
+    qp: BoxQP, y: FloatArray, gradient: FloatArray, lower_set: BoolArray, upper_set: BoolArray
+) -> tuple[BoolArray, BoolArray, float]:
+    """The primal-dual iteration's next sets from a solve's y and gradient, and the gradient's
+    tolerance."""
+    value_tol, gradient_tol = _scales(qp, y)
+    free = qp.domain & ~lower_set & ~upper_set
+    # An element leaves its bound only when its gradient clearly has the wrong sign
+    # (G >= 0 at the lower bound, G <= 0 at the upper, up to the tolerance).
+    new_lower = (free & (y < qp.lower - value_tol)) | (lower_set & (gradient > -gradient_tol))
+    new_upper = (free & (y > qp.upper + value_tol)) | (upper_set & (gradient < gradient_tol))
+    return new_lower, new_upper, gradient_tol
+
+
+def _sets_hold(
+    qp: BoxQP, lower_set: BoolArray, upper_set: BoolArray
+) -> Callable[[FloatArray, FloatArray], bool]:
+    """Whether an iterate (y, gradient) leaves the sets where they are."""
+
+    def hold(y: FloatArray, gradient: FloatArray) -> bool:
+        new_lower, new_upper, _ = _next_sets(qp, y, gradient, lower_set, upper_set)
+        return bool(np.array_equal(new_lower, lower_set) and np.array_equal(new_upper, upper_set))
+
+    return hold
 
 
 def _image(workspace: Workspace) -> FloatArray:

@@ -2,18 +2,20 @@
 
 On a uniform grid of N elements with collocation at the centres, the influence of element j
 on element i depends on i - j only (``asymslip_gen.solver_influence``): the N x N matrix is
-Toeplitz.  Embedded in a circulant of a fast FFT length >= 2N - 1, a product costs two real
-FFTs, O(N log N), instead of O(N^2).
+Toeplitz.  Embedded in a circulant of a quick FFT length >= 2N - 1 (:func:`quick_length`), a
+product costs two real FFTs, O(N log N), instead of O(N^2).
 
 The contact problems solve with a *principal submatrix* (the stick or contact elements, one
 or a few runs of consecutive elements) under one or two equality constraints (force, moment).
 :func:`projected_cg` does it by projected conjugate gradients preconditioned, run by run, with
 T. Chan's optimal circulant (Chan 1988) applied to the zero-padded run: a principal block of an
-SPD circulant's inverse, hence SPD.  The circulant is built for a fast FFT length at least
-``PRECONDITIONER_STRETCH`` = 1.25 times the run's length (the kernel continued beyond the run):
+SPD circulant's inverse, hence SPD.  The circulant is built for a quick FFT length at least
+``PRECONDITIONER_STRETCH`` = 1.1 times the run's length (the kernel continued beyond the run):
 measured on a run of 3600 elements of the slip kernel, 10 iterations from zero to a relative
-residual of 1e-11 against 13 with a circulant of the run's own length (1.1 times: 11; 1.5, 2
-and 3 times: 10), at a quarter more per preconditioner FFT.  The iterations do not grow with N
+residual of 1e-11 against 13 with a circulant of the run's own length (1.1 times: 11; 1.25,
+1.5, 2 and 3 times: 10); on the paper's Fig. 5 cycle at N = 10^5, warm-started, 535 iterations
+in all at 1.1 against 534 at 1.25 and 552 at 1.0, and 1.1 makes the circulant of a
+92,000-element run 102,400 points long instead of 115,200.  The iterations do not grow with N
 (``tests/solver/test_linear_algebra.py``).
 
 Memory stays O(N): the operator keeps its kernel column and one spectrum, and at most
@@ -42,11 +44,9 @@ CG_TOLERANCE = 1e-11
 #: Iteration cap; the preconditioned iteration needs 10-15, so this means breakdown.
 CG_MAX_ITERATIONS = 400
 #: The preconditioner's circulant is at least this many times longer than its run.
-PRECONDITIONER_STRETCH = 1.25
+PRECONDITIONER_STRETCH = 1.1
 #: Spectra of run-length circulants kept per operator (the least recently used is dropped).
 SPECTRUM_CACHE = 8
-#: The ladder of preconditioner lengths: its first rung and the ratio between rungs.
-LADDER_START, LADDER_STEP = 64, 1.05
 #: NumPy 2 lets an FFT write into a given array (``out=``); NumPy 1 allocates.
 _FFT_OUT = "out" in inspect.signature(np.fft.rfft).parameters
 
@@ -58,18 +58,30 @@ class SolverError(RuntimeError):
     """
 
 
+#: The odd parts 3^b 5^c (b <= 2, c <= 3) allowed in the lengths of :func:`quick_length`.
+QUICK_ODD_PARTS = (1, 3, 5, 9, 15, 25, 45, 75, 125, 225, 375, 1125)
+
+
 @functools.lru_cache(maxsize=4096)
-def fast_length(n: int) -> int:
-    """Smallest 5-smooth integer >= n: NumPy's FFT is fastest on products of 2, 3 and 5."""
-    candidate = max(1, n)
-    while True:
-        rest = candidate
-        for prime in (2, 3, 5):
-            while rest % prime == 0:
-                rest //= prime
-        if rest == 1:
-            return candidate
-        candidate += 1
+def quick_length(n: int) -> int:
+    """Smallest 2^a 3^b 5^c >= n with b <= 2 and c <= 3: the lengths the solver transforms.
+
+    NumPy's FFT (pocketfft) costs least per point on lengths that are mostly a power of 2 with
+    a small odd part.  Measured on the development machine (rfft and irfft, best of several
+    rounds, ns a point): 102,400 = 2^12 5^2 took 7.1 and 204,800 = 2^13 5^2 8.1, against 10.1
+    for 118,098 = 2 3^10 and 8.9 for 200,000 = 2^6 5^5, the smallest 5-smooth lengths the
+    solver used before; at 10^6 points a pure power of 2 is slow (2^21: 20.8, 2^20: 14.2)
+    where 2,048,000 = 2^14 5^3 took 16.2 and 1,024,000 = 2^13 5^3 12.4.  The padding this
+    costs is at most 1/8 (the odd parts are at most 9/8 apart).
+    """
+    best = None
+    for odd in QUICK_ODD_PARTS:
+        length = odd
+        while length < n:
+            length *= 2
+        best = length if best is None else min(best, length)
+    assert best is not None
+    return best
 
 
 @dataclass(frozen=True)
@@ -109,6 +121,30 @@ class Runs:
         return self.index()
 
 
+#: The largest mapping whose release raises glibc's mmap threshold (32 MiB on 64-bit), less a
+#: margin for the allocator's header and page rounding.
+_THRESHOLD_RAISER_BYTES = 32 * 2**20 - 2**16
+
+
+@functools.cache
+def _keep_fft_scratch_on_the_heap() -> None:
+    """Release one untouched 32 MiB array, once per process, so that FFT scratch stays on the heap.
+
+    NumPy's FFT allocates a work array of about 2n doubles on every call.  glibc serves
+    requests above its mmap threshold (128 KiB at start) with fresh pages from the kernel,
+    zero-filled at first touch; measured at n = 204,800, 768 page faults a transform, half its
+    time (the rest of a solve's system time with it).  glibc raises the threshold to the size
+    of a mapping when that mapping is released (its "dynamic threshold", up to 32 MiB on
+    64-bit); this does it at once, for every transform up to n = 2^21.  The array is never
+    touched, so it costs no page; the process keeps up to 64 MiB of freed heap (glibc's trim
+    threshold becomes twice the mmap threshold).  Elsewhere than glibc it is one allocation, and
+    glibc keeps its threshold fixed when a MALLOC_* variable sets one (Dask's nanny sets
+    MALLOC_TRIM_THRESHOLD_ for its workers): there the transforms take fresh pages as before.
+    """
+    scratch = np.empty(_THRESHOLD_RAISER_BYTES // 8)
+    del scratch
+
+
 class _SpectrumCache:
     """At most ``size`` spectra, the least recently used dropped first."""
 
@@ -127,17 +163,6 @@ class _SpectrumCache:
         else:
             self._items.move_to_end(key)
         return spectrum
-
-
-def ladder_length(length: int) -> int:
-    """A fast FFT length >= ``length`` from a ladder rising 5 % a rung.
-
-    Preconditioners of runs of nearby lengths then share a circulant length: its spectrum and
-    NumPy's FFT plan are made once (a stretch a little above ``PRECONDITIONER_STRETCH`` does not
-    slow the iteration down: 10 iterations from zero at 1.25, 1.5, 2 and 3 times).
-    """
-    rung = math.ceil(math.log(max(length, LADDER_START) / LADDER_START) / math.log(LADDER_STEP))
-    return fast_length(math.ceil(LADDER_START * LADDER_STEP**rung - 1e-9))
 
 
 class ToeplitzOperator:
@@ -159,15 +184,24 @@ class ToeplitzOperator:
     """
 
     def __init__(self, coefficient: Callable[[FloatArray], FloatArray], count: int) -> None:
+        _keep_fft_scratch_on_the_heap()
         self.count = count
-        self._circulant_length = fast_length(2 * count - 1)
-        longest = ladder_length(math.ceil(PRECONDITIONER_STRETCH * count))
+        self._circulant_length = quick_length(2 * count - 1)
+        longest = quick_length(math.ceil(PRECONDITIONER_STRETCH * count))
         self.column = np.asarray(coefficient(np.arange(longest + 1, dtype=np.float64)))
         embedded = np.zeros(self._circulant_length)
         embedded[:count] = self.column[:count]
         embedded[self._circulant_length - count + 1 :] = self.column[1:count][::-1]
-        self._spectrum = np.fft.rfft(embedded)
+        # The embedding is symmetric, so its spectrum is real (the imaginary parts are
+        # rounding, dropped).  It is kept complex all the same: NumPy multiplies complex by
+        # complex in place without a cast (measured: 60 us against 95 us by reals and 365 us
+        # dividing by reals, for 51,201 entries).
+        self._spectrum = np.fft.rfft(embedded).real.astype(np.complex128)
+        # Reciprocal eigenvalues of preconditioner circulants, by circulant length; the length
+        # each run length uses; and which circulant lengths are definite.
         self._preconditioners = _SpectrumCache(SPECTRUM_CACHE)
+        self._lengths: dict[int, int] = {}
+        self._definite: dict[int, bool] = {}
         self._blocks = _SpectrumCache(SPECTRUM_CACHE)
         self._buffers = _SpectrumCache(SPECTRUM_CACHE)
 
@@ -201,48 +235,65 @@ class ToeplitzOperator:
         return float(self.column[0])
 
     def _block_spectrum(self, size: int) -> NDArray[np.complex128]:
-        """Spectrum of the circulant embedding of the leading size x size block."""
+        """Spectrum (real, kept complex) of the circulant embedding of the leading block."""
 
         def build(size: int) -> NDArray[np.complex128]:
-            length = fast_length(2 * size - 1)
+            length = quick_length(2 * size - 1)
             embedded = np.zeros(length)
             embedded[:size] = self.column[:size]
             if size > 1:
                 embedded[length - size + 1 :] = self.column[1:size][::-1]
-            return np.fft.rfft(embedded)
+            return np.fft.rfft(embedded).real.astype(np.complex128)
 
         return self._blocks.get(size, build)  # type: ignore[return-value]
 
     def block_product(self, values: FloatArray) -> FloatArray:
         """The leading block's product: for one run of consecutive elements, M_RR v."""
         size = values.shape[-1]
-        length, spectrum = fast_length(2 * size - 1), self._block_spectrum(size)
+        length, spectrum = quick_length(2 * size - 1), self._block_spectrum(size)
         transformed = np.fft.rfft(values, length, axis=-1)
         return np.fft.irfft(transformed * spectrum, length, axis=-1)[..., :size]
 
-    def _chan_spectrum(self, length: int) -> NDArray[np.float64]:
+    def _chan_eigenvalues(self, length: int) -> NDArray[np.float64]:
         """Eigenvalues (rfft half) of T. Chan's optimal circulant for the first ``length``."""
+        k = np.arange(1, length)
+        circulant = np.empty(length)
+        circulant[0] = self.column[0]
+        circulant[1:] = (
+            (length - k) * self.column[1:length] + k * self.column[length - k]
+        ) / length
+        return np.fft.rfft(circulant).real
 
-        def build(length: int) -> NDArray[np.float64]:
-            k = np.arange(1, length)
-            circulant = np.empty(length)
-            circulant[0] = self.column[0]
-            circulant[1:] = ((length - k) * self.column[1:length] + k * self.column[length - k]) / (
-                length
-            )
-            return np.fft.rfft(circulant).real
+    def _inverse_eigenvalues(self, length: int) -> NDArray[np.complex128]:
+        """1 / the eigenvalues of a definite circulant, as complex numbers (kept: a solve
+        multiplies by them, like the product by its spectrum)."""
+        inverse = self._preconditioners.get(
+            length, lambda n: (1.0 / self._chan_eigenvalues(n)).astype(np.complex128)
+        )
+        return inverse  # type: ignore[return-value]
 
-        return self._preconditioners.get(length, build)  # type: ignore[return-value]
+    def _preconditioner_length(self, run_length: int) -> tuple[int, NDArray[np.complex128]]:
+        """The stretched circulant for a run, or the run's own length if that is not definite,
+        with its reciprocal eigenvalues.
 
-    def _preconditioner_length(self, run_length: int) -> tuple[int, NDArray[np.float64]]:
-        """The stretched circulant for a run, or the run's own length if that is not definite."""
-        stretched = ladder_length(math.ceil(PRECONDITIONER_STRETCH * run_length))
+        Which length a run uses is decided once per run length (``_lengths``), and whether a
+        circulant length is definite once per length (``_definite``): a solve asks at every
+        iteration, and the test is a pass over half the spectrum.
+        """
+        chosen = self._lengths.get(run_length)
+        if chosen is not None:
+            return chosen, self._inverse_eigenvalues(chosen)
+        stretched = quick_length(math.ceil(PRECONDITIONER_STRETCH * run_length))
         smallest = np.inf
-        for length in (stretched, fast_length(run_length)):
-            spectrum = self._chan_spectrum(length)
-            if np.all(spectrum > 0):
-                return length, spectrum
-            smallest = min(smallest, float(spectrum.min()))
+        for length in (stretched, quick_length(run_length)):
+            if length not in self._definite:
+                eigenvalues = self._chan_eigenvalues(length)
+                self._definite[length] = bool(np.all(eigenvalues > 0))
+                if not self._definite[length]:
+                    smallest = min(smallest, float(eigenvalues.min()))
+            if self._definite[length]:
+                self._lengths[run_length] = length
+                return length, self._inverse_eigenvalues(length)
         raise SolverError(
             "the influence matrix is not positive definite on this grid "
             f"(circulant eigenvalue {smallest:.3g}); the reference length of the "
@@ -264,20 +315,20 @@ class ToeplitzOperator:
         the result in its first entries, which are returned.
         """
         if len(runs.starts) == 1:
-            length, spectrum = self._preconditioner_length(runs.count)
+            length, inverse = self._preconditioner_length(runs.count)
             if residual.ndim == 1 and _FFT_OUT:
                 transformed = np.fft.rfft(residual, length, out=self._transform_buffer(length))
-                transformed /= spectrum
+                transformed *= inverse
                 return np.fft.irfft(transformed, length, out=out)[: runs.count]
             transformed = np.fft.rfft(residual, length, axis=-1)
-            transformed /= spectrum
+            transformed *= inverse
             return np.fft.irfft(transformed, length, axis=-1)[..., : runs.count]
         out = np.empty_like(residual)
         offset = 0
         for run_length in runs.lengths:
-            length, spectrum = self._preconditioner_length(run_length)
+            length, inverse = self._preconditioner_length(run_length)
             block = residual[..., offset : offset + run_length]
-            solved = np.fft.irfft(np.fft.rfft(block, length, axis=-1) / spectrum, length, axis=-1)
+            solved = np.fft.irfft(np.fft.rfft(block, length, axis=-1) * inverse, length, axis=-1)
             out[..., offset : offset + run_length] = solved[..., :run_length]
             offset += run_length
         return out
@@ -307,6 +358,21 @@ class Correction:
     step: FloatArray  # e, packed over the runs
     multipliers: FloatArray  # lambda with M (y0 + e) - b + A^T lambda = 0
     iterations: int
+    abandoned: bool = False  # stopped at the checkpoint: not converged
+
+
+@dataclass(frozen=True)
+class Checkpoint:
+    """A question :func:`projected_cg` asks once, when its residual first falls to ``target``.
+
+    ``go_on(step, multipliers)`` is given the iterate so far; if it answers False the
+    iteration stops there (``Correction.abandoned``): the caller has learnt what it needed
+    (for the active-set iteration: that the guessed stick/slip sets are wrong) and the
+    iterations to full accuracy would be spent on a problem about to be replaced.
+    """
+
+    target: float
+    go_on: Callable[[FloatArray, FloatArray], bool]
 
 
 def projected_cg(
@@ -318,6 +384,7 @@ def projected_cg(
     target: float,
     max_iterations: int = CG_MAX_ITERATIONS,
     image: FloatArray | None = None,
+    checkpoint: Checkpoint | None = None,
 ) -> Correction:
     """Correct a feasible start y0 to the minimiser of 1/2 y.M_RR.y - b.y subject to A y = c.
 
@@ -340,6 +407,8 @@ def projected_cg(
         taken on the whole grid and the image is kept up to date in place (it ends as
         M (y0 + e)), so that the caller needs no further product for the gradient on the
         elements outside R; otherwise products use the runs' own (shorter) circulants.
+    checkpoint
+        A question to ask once on the way (:class:`Checkpoint`), or None.
 
     Raises
     ------
@@ -375,17 +444,21 @@ def projected_cg(
         if not m:
             return z, np.zeros(0), residual
         w = solve_small(schur, row_products(A, z))
-        return z - combination(w, Z), w, residual - combination(w, A)
+        z -= combination(w, Z)
+        residual -= combination(w, A)
+        return z, w, residual
 
     step = np.zeros_like(residual)
     # The residual's component A^T w along the constraints is moved into the multiplier at
     # every step ("residual update", Gould et al., Sec. 6): left in r it grows to dominate it
-    # and rounding destroys the projection.
+    # and rounding destroys the projection.  The preconditioned residual g lives in the
+    # preconditioner's buffer until the next projection; the vectors are updated in place.
     g, w, r = project(np.array(residual, dtype=np.float64))
     multiplier = w.copy()
     if norm(r) <= target:
         return Correction(step, -multiplier, 0)
     direction = -g
+    scaled = np.empty_like(direction)
     rg = inner(r, g)
     for iteration in range(1, max_iterations + 1):
         packed, full = product(direction)
@@ -396,19 +469,25 @@ def projected_cg(
                 "not positive definite on these elements"
             )
         alpha = rg / curvature
-        step += alpha * direction
+        step += np.multiply(direction, alpha, out=scaled)
         if image is None or full is None:
-            r += alpha * packed
+            r += np.multiply(packed, alpha, out=scaled)
         else:  # scaled once, for the residual and the image
             full *= alpha
             r += full[where]
             image += full
         g, w, r = project(r)
         multiplier += w
-        if norm(r) <= target:
+        size = norm(r)
+        if size <= target:
             return Correction(step, -multiplier, iteration)
+        if checkpoint is not None and size <= checkpoint.target:
+            if not checkpoint.go_on(step, -multiplier):
+                return Correction(step, -multiplier, iteration, abandoned=True)
+            checkpoint = None
         rg_next = inner(r, g)
-        direction = -g + (rg_next / rg) * direction
+        direction *= rg_next / rg
+        direction -= g
         rg = rg_next
     raise SolverError(
         f"conjugate gradients did not reach a relative residual of {CG_TOLERANCE:g} in "
@@ -479,11 +558,12 @@ def unpack(packed: FloatArray, runs: Runs, count: int, fill: float = 0.0) -> Flo
 
 __all__: Sequence[str] = (
     "CG_TOLERANCE",
+    "Checkpoint",
     "Correction",
     "Runs",
     "SolverError",
     "ToeplitzOperator",
-    "fast_length",
+    "quick_length",
     "onto_constraints",
     "pack",
     "projected_cg",
