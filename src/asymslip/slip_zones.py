@@ -21,7 +21,7 @@ from .core.edge_state import EdgeState, missing_edge
 from .core.evaluation import Evaluation, evaluate, evaluate_arrays, evaluate_one
 from .core.flags import MEASURE_KEYS, NUMBER_KEYS, warning_texts
 from .cycle import LoadCycle
-from .edge import Edge
+from .edge import LEFT, RIGHT, Edge
 from .errors import InputError
 from .laws.base import ContactLaw
 
@@ -258,15 +258,15 @@ def slip_zone(
     if one is not None and not isinstance(one, Evaluation):  # one valid cycle, on floats
         right_edge, left_edge = one
         if edge == "right":
-            return _scalar_result(right_edge, law.for_edge(Edge.RIGHT), True, None)
+            return _scalar_result(right_edge, law.for_edge(RIGHT), True, None)
         if edge == "left":
-            return _scalar_result(left_edge, law.for_edge(Edge.LEFT), True, None)
+            return _scalar_result(left_edge, law.for_edge(LEFT), True, None)
         return _scalar_result(
             right_edge,
-            law.for_edge(Edge.RIGHT),
+            law.for_edge(RIGHT),
             True,
             None,
-            _scalar_result(left_edge, law.for_edge(Edge.LEFT), True, None),
+            _scalar_result(left_edge, law.for_edge(LEFT), True, None),
         )
     evaluation = evaluate_arrays(law, cycle, mu) if one is None else one
     errors = None
@@ -279,17 +279,15 @@ def slip_zone(
     if evaluation.shape == ():
         evaluated = evaluation.law
         if edge == "left":
-            return _scalar_result(edges[Edge.LEFT], evaluated.for_edge(Edge.LEFT), valid, errors)
+            return _scalar_result(edges[LEFT], evaluated.for_edge(LEFT), valid, errors)
         left = None
         if edge == "both":
-            left = _scalar_result(edges[Edge.LEFT], evaluated.for_edge(Edge.LEFT), valid, errors)
-        return _scalar_result(
-            edges[Edge.RIGHT], evaluated.for_edge(Edge.RIGHT), valid, errors, left
-        )
+            left = _scalar_result(edges[LEFT], evaluated.for_edge(LEFT), valid, errors)
+        return _scalar_result(edges[RIGHT], evaluated.for_edge(RIGHT), valid, errors, left)
     if edge == "left":
-        return _array_result(evaluation, Edge.LEFT, errors)
-    left = _array_result(evaluation, Edge.LEFT, errors) if edge == "both" else None
-    return _array_result(evaluation, Edge.RIGHT, errors, left)
+        return _array_result(evaluation, LEFT, errors)
+    left = _array_result(evaluation, LEFT, errors) if edge == "both" else None
+    return _array_result(evaluation, RIGHT, errors, left)
 
 
 #: The numbers of an invalid single cycle: none.

@@ -41,7 +41,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ..cycle import LoadCycle
-from ..edge import EDGES, Edge
+from ..edge import EDGES, LEFT, RIGHT, Edge
 from ..errors import InputError, as_numbers
 from ..laws.base import (
     ContactLaw,
@@ -107,7 +107,7 @@ def evaluate(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> Evaluation:
     one = evaluate_one(law, cycle, mu)
     if one is not None and not isinstance(one, Evaluation):  # valid: (right, left)
         right, left = one
-        return Evaluation(law, (), {Edge.RIGHT: right, Edge.LEFT: left})
+        return Evaluation(law, (), {RIGHT: right, LEFT: left})
     if one is not None:
         return one
     return evaluate_arrays(law, cycle, mu)
@@ -215,7 +215,7 @@ def _arrays(law: ContactLaw, cycle: LoadCycle, mu: ArrayLike) -> Evaluation:
         dP = P2 - P1
         ops = ArrayOperations(verdict)
         right, left = _both_edges(ops, law, friction, P1, dP, dQ / dP, dsigma / dP)
-    return Evaluation(law, shape, {Edge.RIGHT: right, Edge.LEFT: left}, verdict)
+    return Evaluation(law, shape, {RIGHT: right, LEFT: left}, verdict)
 
 
 def _both_edges(
@@ -224,16 +224,14 @@ def _both_edges(
     """The pipeline: the law's state of the cycle, each edge's shear, estimates and checks;
     the right edge and the left one."""
     symmetric = law.symmetric
-    right_law = law.for_edge(Edge.RIGHT)
-    left_law = right_law if symmetric else law.for_edge(Edge.LEFT)
+    right_law = law.for_edge(RIGHT)
+    left_law = right_law if symmetric else law.for_edge(LEFT)
     right_state = _law_state(ops, right_law, P1, dP)
     left_state = right_state if symmetric else _law_state(ops, left_law, P1, dP)
     right_traits = law_traits(right_law)
     left_traits = right_traits if symmetric else law_traits(left_law)
     own = right_traits.own_shear_multipliers
     # The left edge is the right edge of the mirrored cycle: lam -> -lam, eta kept.
-    right_estimates = left_estimates = None  # each edge's own, from _edge
-    mirror = False
     if ops.scalar and symmetric and not own and eta != 0:
         # One cycle under bulk tension: no mirror image; both edges in one program, the law's
         # quantities shared.  (Arrays take each edge alone: the pair's intermediates of both
@@ -242,21 +240,52 @@ def _both_edges(
         right_shear, left_shear, right_estimates, left_estimates = both_edges_estimates(
             ops, mu, lam, eta, right_state, dP
         )
-    else:
-        right_shear = shear_multipliers(ops, right_law, right_state, mu, lam, eta, own)
-        # A symmetric contact without bulk tension whose right edge slips is its own mirror
-        # image (derivations/edge_symmetry.py): the left edge slips the other way in its own
-        # frame, is asked exactly what the right edge was (the same oriented lam and
-        # other-edge factor), and is the right edge with lam, L_II and the direction negated
-        # -- not computed again.
-        mirror = symmetric and not own and ops.everywhere((eta == 0) & (right_shear[2] != 0))
-        left_shear = (
-            right_shear
-            if mirror
-            else shear_multipliers(
-                ops, left_law, left_state, mu, -lam, eta, left_traits.own_shear_multipliers
-            )
+        # Each edge straight from its estimates (what _edge does once it has them).
+        extrapolates = right_traits.extrapolates
+        right = edge_state(
+            ops,
+            right_law,
+            right_state,
+            mu,
+            lam,
+            eta,
+            dP,
+            RIGHT,
+            right_shear,
+            left_shear[2],
+            right_estimates,
+            extrapolates,
         )
+        left = edge_state(
+            ops,
+            right_law,
+            right_state,
+            mu,
+            -lam,
+            eta,
+            dP,
+            LEFT,
+            left_shear,
+            right_shear[2],
+            left_estimates,
+            extrapolates,
+        )
+        _check_meeting(ops, right, left)
+        return right, left
+    right_shear = shear_multipliers(ops, right_law, right_state, mu, lam, eta, own)
+    # A symmetric contact without bulk tension whose right edge slips is its own mirror
+    # image (derivations/edge_symmetry.py): the left edge slips the other way in its own
+    # frame, is asked exactly what the right edge was (the same oriented lam and
+    # other-edge factor), and is the right edge with lam, L_II and the direction negated
+    # -- not computed again.
+    mirror = symmetric and not own and ops.everywhere((eta == 0) & (right_shear[2] != 0))
+    left_shear = (
+        right_shear
+        if mirror
+        else shear_multipliers(
+            ops, left_law, left_state, mu, -lam, eta, left_traits.own_shear_multipliers
+        )
+    )
     right = _edge(
         ops,
         right_law,
@@ -266,10 +295,9 @@ def _both_edges(
         lam,
         eta,
         dP,
-        Edge.RIGHT,
+        RIGHT,
         right_shear,
         -right_shear[2] if mirror else left_shear[2],
-        right_estimates,
     )
     if mirror:
         left = mirrored(right)
@@ -283,10 +311,9 @@ def _both_edges(
             -lam,
             eta,
             dP,
-            Edge.LEFT,
+            LEFT,
             left_shear,
             right_shear[2],
-            left_estimates,
         )
     _check_meeting(ops, right, left)
     return right, left
@@ -313,12 +340,12 @@ def _edge(
     edge: Edge,
     shear: Shear,
     other_direction: Number,
-    estimates: EdgeEstimates | None = None,
 ) -> EdgeState:
     """One edge through the pipeline (``other_direction``: the other edge's slip direction in
-    its own frame; ``estimates``: the edge's, where the program of both edges gave them)."""
+    its own frame)."""
     own, extrapolates = traits
-    if not own and estimates is None:  # an edge with its own multipliers has none of (21)'s
+    estimates: EdgeEstimates | None = None  # an edge with its own multipliers has none of (21)'s
+    if not own:
         estimates = edge_estimates(ops, mu, lam, eta, state, dP, shear[2], other_direction)
     return edge_state(
         ops, law, state, mu, lam, eta, dP, edge, shear, other_direction, estimates, extrapolates
