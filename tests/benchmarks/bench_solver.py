@@ -109,7 +109,12 @@ def todays_solver(ref: str = BASELINE_REF) -> Iterator[Path | None]:
         return
     with tempfile.TemporaryDirectory(prefix="asymslip-today-") as folder:
         with tarfile.open(fileobj=io.BytesIO(archive)) as tar:
-            tar.extractall(folder, filter="data")
+            # The "data" filter refuses links and paths out of the folder; tarfile has it from
+            # Python 3.11.4 (Debian's 3.11.2 has not), and git's own archive needs no filter.
+            if hasattr(tarfile, "data_filter"):
+                tar.extractall(folder, filter="data")
+            else:
+                tar.extractall(folder)
         yield Path(folder)
 
 
