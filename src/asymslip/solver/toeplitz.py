@@ -49,6 +49,12 @@ PRECONDITIONER_STRETCH = 1.1
 SPECTRUM_CACHE = 8
 #: NumPy 2 lets an FFT write into a given array (``out=``); NumPy 1 allocates.
 _FFT_OUT = "out" in inspect.signature(np.fft.rfft).parameters
+#: Circulants at least this long are applied as two-dimensional transforms (:class:`CrtLayout`).
+CRT_MIN_LENGTH = 2**20
+#: The odd factor of a two-dimensional layout is at least this (else the 2-D form gains nothing).
+CRT_MIN_ODD = 5
+#: Layouts of preconditioner circulants kept per operator.
+CRT_LAYOUTS = 2
 
 
 class SolverError(RuntimeError):
@@ -145,6 +151,109 @@ def _keep_fft_scratch_on_the_heap() -> None:
     del scratch
 
 
+class CrtLayout:
+    """A cyclic convolution of length L = L1 L2 (L1 odd, L2 a power of 2) as a 2-D one.
+
+    The map n -> (n mod L1, u n mod L2), u = 1/L1 modulo L2, is a group isomorphism from
+    Z_L onto Z_L1 x Z_L2 (Chinese remainder theorem; L1 and L2 are coprime), so a circulant
+    product of length L is a 2-D cyclic convolution of the arrays it maps to, computed by 2-D
+    FFTs (real along the contiguous L2 axis, complex along the L1 axis) with no twiddle factors
+    (Good 1958, Thomas 1963).  The 2-D transforms work on rows of L2 points: measured on the
+    development machine at L = 2,048,000 = 125 x 16,384 (rfft, product, irfft), 32-41 ms
+    against 64-71 ms for the one-dimensional transform, whose passes over 16 MB leave the
+    cache; the two maps (in and out) add about 7 ms at N = 10^6.  With the factor u the
+    entries n = r, r + L1, r + 2 L1, ... go to consecutive columns of row r, so each map is
+    two slice copies a row.  Exact up to rounding (~1e-15 relative).
+
+    Parameters
+    ----------
+    length
+        L = odd * 2^a with odd >= ``CRT_MIN_ODD`` (see :meth:`split`).
+    count
+        How many leading entries of a length-L vector are ever nonzero, and read back.
+    """
+
+    def __init__(self, length: int, count: int) -> None:
+        odd = length
+        while odd % 2 == 0:
+            odd //= 2
+        self.shape = (odd, length // odd)
+        rows, columns = self.shape
+        self.length = length
+        self._inverse = pow(rows, -1, columns)
+        self._values = np.zeros(self.shape)
+        self._spectrum = np.empty((rows, columns // 2 + 1), dtype=np.complex128)
+        self._result = np.empty(self.shape)
+        self._rows = self._plan(count)
+        self.count = count  # the entries written last; the others' positions hold zeros
+
+    def _plan(self, count: int) -> list[tuple[int, int, int, int]]:
+        """Row r holds the entries r, r + L1, r + 2 L1, ... from column u r on (wrapping once
+        at most: fewer than L2 of them): two slice copies a row, no index array (measured at
+        N = 10^6: 7 ms for both maps against 12 ms by fancy indexing)."""
+        rows, columns = self.shape
+        plan = []
+        for row in range(rows):
+            taken = len(range(row, count, rows))
+            start = (self._inverse * row) % columns
+            plan.append((row, start, min(taken, columns - start), taken))
+        return plan
+
+    @staticmethod
+    def split(length: int) -> bool:
+        """Whether ``length`` is odd * 2^a with odd >= ``CRT_MIN_ODD`` and a >= 1."""
+        odd = length
+        while odd % 2 == 0:
+            odd //= 2
+        return odd >= CRT_MIN_ODD and odd < length
+
+    def positions(self, n: NDArray[np.intp]) -> NDArray[np.intp]:
+        """Flat positions in the 2-D array of the entries n of the length-L vector."""
+        rows, columns = self.shape
+        return (n % rows) * columns + (n * self._inverse) % columns
+
+    def transform(self, values: FloatArray) -> NDArray[np.complex128]:
+        """The 2-D spectrum of a length-L vector given as its first entries (the rest zero)."""
+        mapped, step = self._values, self.shape[0]
+        if values.size != self.count:  # another run length: clear the last one's entries
+            mapped.fill(0.0)
+            self._rows, self.count = self._plan(values.size), values.size
+        for row, start, first, taken in self._rows:
+            source = values[row::step]
+            mapped[row, start : start + first] = source[:first]
+            if taken > first:
+                mapped[row, : taken - first] = source[first:]
+        spectrum = np.fft.rfft(self._values, axis=-1, out=self._spectrum)
+        return np.fft.fft(spectrum, axis=0, out=spectrum)
+
+    def spectrum_of(self, vector: FloatArray) -> NDArray[np.complex128]:
+        """The 2-D spectrum of a whole length-L vector (a new array)."""
+        mapped = np.empty(self.shape)
+        mapped.reshape(-1)[self.positions(np.arange(self.length, dtype=np.intp))] = vector
+        return np.fft.fft(np.fft.rfft(mapped, axis=-1), axis=0)
+
+    def inverse(self, spectrum: NDArray[np.complex128], out: FloatArray) -> FloatArray:
+        """The entries of the inverse transform of ``spectrum`` (overwritten) that the last
+        :meth:`transform` was given, written into ``out`` (as many)."""
+        np.fft.ifft(spectrum, axis=0, out=spectrum)
+        result = np.fft.irfft(spectrum, self.shape[1], axis=-1, out=self._result)
+        step = self.shape[0]
+        for row, start, first, taken in self._rows:
+            target = out[row::step]
+            target[:first] = result[row, start : start + first]
+            if taken > first:
+                target[first:] = result[row, : taken - first]
+        return out
+
+
+def crt_layout(length: int, count: int) -> CrtLayout | None:
+    """The two-dimensional layout of a circulant of ``length``, when it pays (``CRT_MIN_LENGTH``
+    and an odd factor of at least ``CRT_MIN_ODD``), else None."""
+    if not _FFT_OUT or length < CRT_MIN_LENGTH or not CrtLayout.split(length):
+        return None
+    return CrtLayout(length, count)
+
+
 class _SpectrumCache:
     """At most ``size`` spectra, the least recently used dropped first."""
 
@@ -197,9 +306,21 @@ class ToeplitzOperator:
         # complex in place without a cast (measured: 60 us against 95 us by reals and 365 us
         # dividing by reals, for 51,201 entries).
         self._spectrum = np.fft.rfft(embedded).real.astype(np.complex128)
+        # Long circulants are applied in two dimensions (CrtLayout): the embedding is even, so
+        # its 2-D spectrum is real too.
+        self._layout = crt_layout(self._circulant_length, count)
+        self._spectrum_2d = (
+            None
+            if self._layout is None
+            else self._layout.spectrum_of(embedded).real.astype(np.complex128)
+        )
         # Reciprocal eigenvalues of preconditioner circulants, by circulant length; the length
         # each run length uses; and which circulant lengths are definite.
         self._preconditioners = _SpectrumCache(SPECTRUM_CACHE)
+        # Long preconditioner circulants in two dimensions: layouts (three arrays of the
+        # circulant's length each) and reciprocal eigenvalues in the layout's order.
+        self._layouts: OrderedDict[int, CrtLayout] = OrderedDict()
+        self._preconditioners_2d = _SpectrumCache(CRT_LAYOUTS)
         self._lengths: dict[int, int] = {}
         self._definite: dict[int, bool] = {}
         self._blocks = _SpectrumCache(SPECTRUM_CACHE)
@@ -222,6 +343,11 @@ class ToeplitzOperator:
         in its first N entries, which are returned; otherwise a new array is returned.
         """
         length = self._circulant_length
+        if self._layout is not None and self._spectrum_2d is not None and values.ndim == 1:
+            transformed = self._layout.transform(values)
+            transformed *= self._spectrum_2d
+            target = np.empty(self.count) if out is None else out[: self.count]
+            return self._layout.inverse(transformed, target)
         if values.ndim != 1 or not _FFT_OUT:
             transformed = np.fft.rfft(values, length, axis=-1)
             transformed *= self._spectrum
@@ -300,6 +426,29 @@ class ToeplitzOperator:
             "logarithm must be at least a quarter of the grid's length"
         )
 
+    def _layout_of(self, length: int) -> tuple[CrtLayout, NDArray[np.complex128]] | None:
+        """The 2-D layout of a preconditioner circulant and its reciprocal eigenvalues in the
+        layout's order, or None when the one-dimensional transform is used."""
+        if crt_layout(length, 0) is None:
+            return None
+        layout = self._layouts.get(length)
+        if layout is None:
+            layout = self._layouts[length] = CrtLayout(length, 0)
+            while len(self._layouts) > CRT_LAYOUTS:
+                self._layouts.popitem(last=False)
+        else:
+            self._layouts.move_to_end(length)
+
+        def build(n: int) -> NDArray[np.complex128]:
+            k = np.arange(1, n)
+            circulant = np.empty(n)
+            circulant[0] = self.column[0]
+            circulant[1:] = ((n - k) * self.column[1:n] + k * self.column[n - k]) / n
+            return (1.0 / layout.spectrum_of(circulant).real).astype(np.complex128)
+
+        inverse: NDArray[np.complex128] = self._preconditioners_2d.get(length, build)  # type: ignore[assignment]
+        return layout, inverse
+
     def preconditioner_buffer(self, runs: Runs) -> FloatArray | None:
         """An array :meth:`precondition` may write into for these runs (``out``), or None."""
         if len(runs.starts) != 1 or not _FFT_OUT:
@@ -316,6 +465,12 @@ class ToeplitzOperator:
         """
         if len(runs.starts) == 1:
             length, inverse = self._preconditioner_length(runs.count)
+            layout = self._layout_of(length) if residual.ndim == 1 else None
+            if layout is not None:
+                transformed = layout[0].transform(residual)
+                transformed *= layout[1]
+                target = np.empty(runs.count) if out is None else out[: runs.count]
+                return layout[0].inverse(transformed, target)
             if residual.ndim == 1 and _FFT_OUT:
                 transformed = np.fft.rfft(residual, length, out=self._transform_buffer(length))
                 transformed *= inverse
@@ -559,6 +714,7 @@ def unpack(packed: FloatArray, runs: Runs, count: int, fill: float = 0.0) -> Flo
 __all__: Sequence[str] = (
     "CG_TOLERANCE",
     "Checkpoint",
+    "CrtLayout",
     "Correction",
     "Runs",
     "SolverError",
