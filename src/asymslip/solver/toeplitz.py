@@ -50,7 +50,7 @@ SPECTRUM_CACHE = 8
 #: NumPy 2 lets an FFT write into a given array (``out=``); NumPy 1 allocates.
 _FFT_OUT = "out" in inspect.signature(np.fft.rfft).parameters
 #: Circulants at least this long are applied as two-dimensional transforms (:class:`CrtLayout`).
-CRT_MIN_LENGTH = 2**20
+CRT_MIN_LENGTH = 2**19
 #: The odd factor of a two-dimensional layout is at least this (else the 2-D form gains nothing).
 CRT_MIN_ODD = 5
 #: Layouts of preconditioner circulants kept per operator.
