@@ -246,6 +246,22 @@ class CrtLayout:
         return out
 
 
+def transform_length(n: int) -> int:
+    """The length the solver transforms for at least ``n`` points: :func:`quick_length`, or from
+    ``CRT_MIN_LENGTH`` on the smallest such length with an odd factor to lay out in two
+    dimensions (2^20 has none, and its one-dimensional transform is the slowest per point)."""
+    length = quick_length(n)
+    if not _FFT_OUT or length < CRT_MIN_LENGTH or CrtLayout.split(length):
+        return length
+    candidates = []
+    for odd in QUICK_ODD_PARTS[1:]:
+        candidate = 2 * odd
+        while candidate < n:
+            candidate *= 2
+        candidates.append(candidate)
+    return min(candidates)
+
+
 def crt_layout(length: int, count: int) -> CrtLayout | None:
     """The two-dimensional layout of a circulant of ``length``, when it pays (``CRT_MIN_LENGTH``
     and an odd factor of at least ``CRT_MIN_ODD``), else None."""
@@ -295,8 +311,8 @@ class ToeplitzOperator:
     def __init__(self, coefficient: Callable[[FloatArray], FloatArray], count: int) -> None:
         _keep_fft_scratch_on_the_heap()
         self.count = count
-        self._circulant_length = quick_length(2 * count - 1)
-        longest = quick_length(math.ceil(PRECONDITIONER_STRETCH * count))
+        self._circulant_length = transform_length(2 * count - 1)
+        longest = transform_length(math.ceil(PRECONDITIONER_STRETCH * count))
         self.column = np.asarray(coefficient(np.arange(longest + 1, dtype=np.float64)))
         embedded = np.zeros(self._circulant_length)
         embedded[:count] = self.column[:count]
@@ -409,9 +425,9 @@ class ToeplitzOperator:
         chosen = self._lengths.get(run_length)
         if chosen is not None:
             return chosen, self._inverse_eigenvalues(chosen)
-        stretched = quick_length(math.ceil(PRECONDITIONER_STRETCH * run_length))
+        stretched = transform_length(math.ceil(PRECONDITIONER_STRETCH * run_length))
         smallest = np.inf
-        for length in (stretched, quick_length(run_length)):
+        for length in (stretched, transform_length(run_length)):
             if length not in self._definite:
                 eigenvalues = self._chan_eigenvalues(length)
                 self._definite[length] = bool(np.all(eigenvalues > 0))
@@ -465,12 +481,19 @@ class ToeplitzOperator:
         """
         if len(runs.starts) == 1:
             length, inverse = self._preconditioner_length(runs.count)
-            layout = self._layout_of(length) if residual.ndim == 1 else None
-            if layout is not None:
+            layout = self._layout_of(length) if residual.ndim <= 2 else None
+            if layout is not None and residual.ndim == 1:
                 transformed = layout[0].transform(residual)
                 transformed *= layout[1]
                 target = np.empty(runs.count) if out is None else out[: runs.count]
                 return layout[0].inverse(transformed, target)
+            if layout is not None:  # a few rows (the constraints): one at a time
+                solved = np.empty_like(residual)
+                for row, target in zip(residual, solved, strict=True):
+                    transformed = layout[0].transform(row)
+                    transformed *= layout[1]
+                    layout[0].inverse(transformed, target)
+                return solved
             if residual.ndim == 1 and _FFT_OUT:
                 transformed = np.fft.rfft(residual, length, out=self._transform_buffer(length))
                 transformed *= inverse
@@ -720,6 +743,7 @@ __all__: Sequence[str] = (
     "SolverError",
     "ToeplitzOperator",
     "quick_length",
+    "transform_length",
     "onto_constraints",
     "pack",
     "projected_cg",
