@@ -3,7 +3,10 @@
 On a uniform grid of N elements with collocation at the centres, the influence of element j
 on element i depends on i - j only (``asymslip_gen.solver_influence``): the N x N matrix is
 Toeplitz.  Embedded in a circulant of a quick FFT length >= 2N - 1 (:func:`quick_length`), a
-product costs two real FFTs, O(N log N), instead of O(N^2).
+product costs two real FFTs, O(N log N), instead of O(N^2).  From ``CRT_MIN_LENGTH`` = 2^19
+points on, where a one-dimensional transform's passes leave the cache, a circulant is applied
+as a two-dimensional cyclic convolution (:class:`CrtLayout`, lengths from
+:func:`transform_length`).
 
 The contact problems solve with a *principal submatrix* (the stick or contact elements, one
 or a few runs of consecutive elements) under one or two equality constraints (force, moment).
@@ -168,7 +171,7 @@ class CrtLayout:
     Parameters
     ----------
     length
-        L = odd * 2^a with odd >= ``CRT_MIN_ODD`` (see :meth:`split`).
+        L = odd * 2^a with odd >= ``CRT_MIN_ODD`` (see ``CrtLayout.split``).
     count
         How many leading entries of a length-L vector are ever nonzero, and read back.
     """
@@ -234,7 +237,7 @@ class CrtLayout:
 
     def inverse(self, spectrum: NDArray[np.complex128], out: FloatArray) -> FloatArray:
         """The entries of the inverse transform of ``spectrum`` (overwritten) that the last
-        :meth:`transform` was given, written into ``out`` (as many)."""
+        ``transform`` was given, written into ``out`` (as many)."""
         np.fft.ifft(spectrum, axis=0, out=spectrum)
         result = np.fft.irfft(spectrum, self.shape[1], axis=-1, out=self._result)
         step = self.shape[0]
@@ -396,15 +399,19 @@ class ToeplitzOperator:
         transformed = np.fft.rfft(values, length, axis=-1)
         return np.fft.irfft(transformed * spectrum, length, axis=-1)[..., :size]
 
-    def _chan_eigenvalues(self, length: int) -> NDArray[np.float64]:
-        """Eigenvalues (rfft half) of T. Chan's optimal circulant for the first ``length``."""
+    def _chan_circulant(self, length: int) -> FloatArray:
+        """The first column of T. Chan's optimal circulant for the first ``length``."""
         k = np.arange(1, length)
         circulant = np.empty(length)
         circulant[0] = self.column[0]
         circulant[1:] = (
             (length - k) * self.column[1:length] + k * self.column[length - k]
         ) / length
-        return np.fft.rfft(circulant).real
+        return circulant
+
+    def _chan_eigenvalues(self, length: int) -> NDArray[np.float64]:
+        """Eigenvalues (rfft half) of T. Chan's optimal circulant for the first ``length``."""
+        return np.fft.rfft(self._chan_circulant(length)).real
 
     def _inverse_eigenvalues(self, length: int) -> NDArray[np.complex128]:
         """1 / the eigenvalues of a definite circulant, as complex numbers (kept: a solve
@@ -456,11 +463,8 @@ class ToeplitzOperator:
             self._layouts.move_to_end(length)
 
         def build(n: int) -> NDArray[np.complex128]:
-            k = np.arange(1, n)
-            circulant = np.empty(n)
-            circulant[0] = self.column[0]
-            circulant[1:] = ((n - k) * self.column[1:n] + k * self.column[n - k]) / n
-            return (1.0 / layout.spectrum_of(circulant).real).astype(np.complex128)
+            eigenvalues = layout.spectrum_of(self._chan_circulant(n)).real
+            return (1.0 / eigenvalues).astype(np.complex128)
 
         inverse: NDArray[np.complex128] = self._preconditioners_2d.get(length, build)  # type: ignore[assignment]
         return layout, inverse
