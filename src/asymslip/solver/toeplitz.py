@@ -218,8 +218,9 @@ class CrtLayout:
     def transform(self, values: FloatArray) -> NDArray[np.complex128]:
         """The 2-D spectrum of a length-L vector given as its first entries (the rest zero)."""
         mapped, step = self._values, self.shape[0]
-        if values.size != self.count:  # another run length: clear the last one's entries
-            mapped.fill(0.0)
+        if values.size != self.count:  # another run length
+            if values.size < self.count:  # clear the longer one's entries
+                mapped.fill(0.0)
             self._rows, self.count = self._plan(values.size), values.size
         for row, start, first, taken in self._rows:
             source = values[row::step]
@@ -265,12 +266,15 @@ def transform_length(n: int) -> int:
     return min(candidates)
 
 
+def laid_out(length: int) -> bool:
+    """Whether a circulant of ``length`` is applied in two dimensions (``CRT_MIN_LENGTH`` and an
+    odd factor of at least ``CRT_MIN_ODD``)."""
+    return _FFT_OUT and length >= CRT_MIN_LENGTH and CrtLayout.split(length)
+
+
 def crt_layout(length: int, count: int) -> CrtLayout | None:
-    """The two-dimensional layout of a circulant of ``length``, when it pays (``CRT_MIN_LENGTH``
-    and an odd factor of at least ``CRT_MIN_ODD``), else None."""
-    if not _FFT_OUT or length < CRT_MIN_LENGTH or not CrtLayout.split(length):
-        return None
-    return CrtLayout(length, count)
+    """The two-dimensional layout of a circulant of ``length`` when :func:`laid_out`, else None."""
+    return CrtLayout(length, count) if laid_out(length) else None
 
 
 class _SpectrumCache:
@@ -452,7 +456,7 @@ class ToeplitzOperator:
     def _layout_of(self, length: int) -> tuple[CrtLayout, NDArray[np.complex128]] | None:
         """The 2-D layout of a preconditioner circulant and its reciprocal eigenvalues in the
         layout's order, or None when the one-dimensional transform is used."""
-        if crt_layout(length, 0) is None:
+        if not laid_out(length):  # (asked at every solve: builds nothing)
             return None
         layout = self._layouts.get(length)
         if layout is None:
