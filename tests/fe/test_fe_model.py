@@ -20,7 +20,8 @@ import pytest
 
 from asymslip import HertzLaw, LoadCycle, slip_zone
 from asymslip.calibration import calibrate, read_traces
-from asymslip.fe import CylinderOnBlock, run_model
+from asymslip.calibration.traces import Trace, Traces
+from asymslip.fe import CylinderOnBlock, FeRun, run_model
 from asymslip.solver import solve
 from tests.fe.ccx import require_ccx
 
@@ -118,7 +119,7 @@ def test_tension_moves_the_two_edges_apart_as_slip_zone_says(run):
     assert abs(fe - expected) <= 2 * model.element_size
 
 
-def fe_centre(trace) -> float:
+def fe_centre(trace: Trace) -> float:
     """Where the FE contact is centred: its resultant's line of action, sum x p / sum p over
     the slave nodes (the fine zone's nodes are evenly spaced, so the nodal pressures weigh as
     the nodal forces do).
@@ -134,7 +135,7 @@ def fe_centre(trace) -> float:
     return float(np.sum(trace.x * p) / np.sum(p))
 
 
-def fe_edges(traces) -> dict[tuple[str, int], float]:
+def fe_edges(traces: Traces) -> dict[tuple[str, int], float]:
     """The FE model's own edge positions x at each load: fe_centre +- Hertz's a."""
     found = {}
     for trace in traces.traces:
@@ -181,7 +182,7 @@ def test_calibrate_on_the_fe_traces_recovers_a_and_L_I_within_their_reported_err
             assert abs(fit.L_I - hertz_L_I(fit.P)) <= fit.L_I_error, (side, fit.P)
 
 
-def _true_over_reported(outcome) -> tuple[list[float], list[float]]:
+def _true_over_reported(outcome: FeRun) -> tuple[list[float], list[float]]:
     """|true| / reported of a and L_I over both edges and the four loads: a against the FE
     model's own edges (fe_edges), L_I against Hertz's (31) (a tilt leaves L_I as it is)."""
     traces = read_traces(outcome.deck.with_suffix(".frd"))
