@@ -44,16 +44,25 @@ print(f"ccx: {run.seconds:.0f} s, element size {model.element_size:.4f} mm")
 
 # %%
 # ``calibrate`` reads the .frd: each step's CPRESS at the block's surface nodes, the load from
-# the base's reaction force, negative pressures beyond the edge clipped (and counted).
+# the base's reaction force, negative pressures beyond the edge clipped (and counted).  Each
+# fitted edge is compared with the FE model's own: Hertz's a about the FE contact's centre,
+# the line of action of its resultant, which moves with Q (the FE cylinder bends under the
+# shear it carries from its top and tilts its contact, about a tenth of an element here).
 traces = read_traces(run.frd)
 for note in traces.notes[:2]:
     print("read:", note)
 calibration = calibrate(traces, origin=0.0)
 hertz = HertzLaw(R=R, E_star=E_STAR)
+centres = {
+    trace.P: float(np.sum(trace.x * np.clip(trace.p, 0, None)) / np.sum(np.clip(trace.p, 0, None)))
+    for trace in traces.traces
+}
 for fit in calibration.right:
     a, L_I = float(hertz.half_width(fit.P)), float(hertz.normal_multiplier(fit.P))
+    centre = centres[fit.P]
     print(
-        f"P = {fit.P:6.0f}: a = {fit.x_edge:.4f} +- {fit.a_error:.4f} (Hertz {a:.4f}), "
+        f"P = {fit.P:6.0f}: x_edge = {fit.x_edge:.4f} +- {fit.a_error:.4f} (FE: centre "
+        f"{centre:+.4f} + Hertz's a {a:.4f} = {centre + a:.4f}), "
         f"L_I = {fit.L_I:7.1f} +- {fit.L_I_error:5.1f} (Hertz {L_I:7.1f})"
     )
 

@@ -425,7 +425,9 @@ FE_ALLOWANCE_NOTE = (
     "FE nodal pressures: each error includes, in quadrature, an allowance for the FE's own "
     f"discretisation error of {FE_ALLOWANCE_A:g} element at the edge (a) and "
     f"{FE_ALLOWANCE_L:g} h/a of L_I (h the spacing at the edge, a the half-width), fixed a "
-    "priori: one FE run cannot show it; a run on a mesh twice as fine or coarse can"
+    "priori: the largest errors of the project's CalculiX model (15 to 30 elements per a) "
+    "with a margin; one FE run cannot show its own, and a model unlike that one may err more "
+    "(compare a run on a finer mesh)"
 )
 
 
