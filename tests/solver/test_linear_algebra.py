@@ -6,9 +6,17 @@ import numpy as np
 import pytest
 
 from asymslip.solver import qp as qp_module
+from asymslip.solver import toeplitz
 from asymslip.solver.grid import Grid, InfluenceOperators
 from asymslip.solver.qp import BoxQP, solve_box_qp
-from asymslip.solver.toeplitz import Runs, SolverError, quick_length, solve_constrained
+from asymslip.solver.toeplitz import (
+    Runs,
+    SolverError,
+    crt_layout,
+    quick_length,
+    solve_constrained,
+    transform_length,
+)
 
 GRID = Grid.spanning(-1.0, 1.0, 160)
 OPERATORS = InfluenceOperators(GRID, 1.0)
@@ -27,6 +35,68 @@ def test_quick_length_is_the_next_power_of_2_times_at_most_9_and_125():
 def test_fft_product_equals_the_dense_toeplitz_product():
     values = RNG.standard_normal((3, 160))
     assert np.allclose(OPERATORS.gap.apply(values), values @ DENSE.T, rtol=0, atol=1e-13)
+
+
+@pytest.mark.parametrize("count", [160, 1000])
+def test_two_dimensional_product_equals_the_dense_toeplitz_product(count, monkeypatch):
+    # The layout of long circulants (CrtLayout), forced here on short ones: 320 = 5 x 64 and
+    # 2000 = 125 x 16; into a kept buffer (the conjugate gradients' way) and into a new array.
+    monkeypatch.setattr(toeplitz, "CRT_MIN_LENGTH", 0)
+    operators = InfluenceOperators(Grid.spanning(-1.0, 1.0, count), 1.0)
+    assert operators.gap._layout is not None
+    dense = operators.gap.column[np.abs(np.subtract.outer(np.arange(count), np.arange(count)))]
+    for _ in range(2):  # the second product reuses the layout's buffers
+        values = RNG.standard_normal(count)
+        expected = dense @ values
+        buffer = operators.gap.product_buffer()
+        assert np.allclose(operators.gap.apply(values, out=buffer), expected, rtol=0, atol=1e-13)
+        assert np.allclose(operators.gap.apply(values), expected, rtol=0, atol=1e-13)
+
+
+def test_two_dimensional_preconditioner_equals_the_one_dimensional_one(monkeypatch):
+    # Runs of 800 and 810 elements share a circulant of 900 = 225 x 4 points (one layout,
+    # refilled when the run length changes).
+    count = 1000
+    one_dimensional = InfluenceOperators(Grid.spanning(-1.0, 1.0, count), 1.0).gap
+    monkeypatch.setattr(toeplitz, "CRT_MIN_LENGTH", 0)
+    two_dimensional = InfluenceOperators(Grid.spanning(-1.0, 1.0, count), 1.0).gap
+    for start, stop in ((100, 900), (95, 905), (100, 900)):
+        mask = np.zeros(count, dtype=bool)
+        mask[start:stop] = True
+        runs = Runs.of(mask)
+        residual = RNG.standard_normal(stop - start)
+        rows = RNG.standard_normal((2, stop - start))  # the constraint rows' way: a 2-D array
+        buffer = two_dimensional.preconditioner_buffer(runs)
+        got = two_dimensional.precondition(runs, residual, out=buffer)
+        got_rows = two_dimensional.precondition(runs, rows)
+        monkeypatch.setattr(toeplitz, "CRT_MIN_LENGTH", 10**9)
+        expected = one_dimensional.precondition(runs, residual)
+        expected_rows = one_dimensional.precondition(runs, rows)
+        monkeypatch.setattr(toeplitz, "CRT_MIN_LENGTH", 0)
+        assert np.allclose(got, expected, rtol=0, atol=1e-13 * np.max(np.abs(expected)))
+        assert np.allclose(
+            got_rows, expected_rows, rtol=0, atol=1e-13 * np.max(np.abs(expected_rows))
+        )
+    assert list(two_dimensional._layouts) == [900]
+
+
+def test_the_circulant_of_a_million_elements_is_applied_as_125_by_16384():
+    layout = crt_layout(quick_length(2 * 10**6 - 1), 64)
+    assert layout is not None and layout.shape == (125, 16_384)
+    assert crt_layout(quick_length(2 * 10**5 - 1), 64) is None  # 204,800: one dimension
+    assert crt_layout(2**21, 64) is None  # no odd factor to split off
+
+
+def test_long_transforms_skip_the_powers_of_2():
+    # From 2^19 points a length must split into an odd factor and a power of 2: for 1,048,571
+    # points 2^20 is the quick length, 1,152,000 = 1125 x 2^10 the one transformed.
+    assert quick_length(1_048_571) == 2**20
+    assert transform_length(1_048_571) == 1_152_000
+    assert [transform_length(n) for n in (199_999, 1_000_000, 1_999_999)] == [
+        204_800,
+        1_024_000,
+        2_048_000,
+    ]
 
 
 def test_block_product_equals_the_dense_leading_block():

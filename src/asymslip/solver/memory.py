@@ -23,11 +23,11 @@ The paper's cycle with 20 steps per segment keeps 40 steps' tractions and 21 nor
 >>> path = LoadPath.from_cycle(LoadCycle(100, 0, 105, 1))
 >>> need = estimate(10**6, 20, path)
 >>> need.steps_kept, need.loads_kept, readable(need.total)
-(40, 21, '1.18 GB')
+(40, 21, '1.38 GB')
 >>> check_memory(10**9, 20, path, available=16 * 10**9)  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
-asymslip.errors.InputError: elements: 1,000,000,000 elements need about 1.08 TB of memory ...
+asymslip.errors.InputError: elements: 1,000,000,000 elements need about 1.28 TB of memory ...
 """
 
 from __future__ import annotations
@@ -43,8 +43,11 @@ from .path import LoadPath
 
 #: Bytes per element of everything that does not grow with the steps or the loads: the
 #: operators' columns and spectra, the active-set iteration's vectors, the FFT buffers, the
-#: preconditioners' spectra and the result's arrays (fitted to the measured peak with margin).
-WORKING_BYTES = 400
+#: preconditioners' spectra and the result's arrays, and above 2^18 elements the 2-D transforms'
+#: arrays (``toeplitz.CrtLayout``), fitted to the measured peak with margin: the Fig. 5 cycle at
+#: N = 10^6 peaked at 1.32 GB (1,213 bytes per element beyond ``BASE_BYTES``; 1.22 GB before
+#: the 2-D transforms, above the 1.18 GB that 400 bytes here estimated).
+WORKING_BYTES = 600
 #: Bytes per element of one normal solution: pressure (8), contact flag (1), gap (8).
 NORMAL_BYTES = 17
 #: Bytes per element of one step's shear tractions kept for the steady period.
