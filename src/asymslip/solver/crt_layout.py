@@ -2,6 +2,21 @@
 
 Used by :mod:`asymslip.solver.toeplitz` (products and preconditioners from ``CRT_MIN_LENGTH``
 points on) and :mod:`asymslip.solver.halved_product`.
+
+Examples
+--------
+The circulant (2 1 0 ... 0 1) of 40 = 5 x 8 points applied to (1, 0, 0) in two dimensions:
+
+>>> import numpy as np
+>>> from asymslip.solver.crt_layout import CrtLayout
+>>> layout = CrtLayout(40, 3)
+>>> layout.shape
+(5, 8)
+>>> kernel = np.zeros(40)
+>>> kernel[[0, 1, 39]] = [2.0, 1.0, 1.0]
+>>> product = layout.transform(np.array([1.0, 0.0, 0.0])) * layout.spectrum_of(kernel)
+>>> layout.inverse(product, np.empty(3)).round(12).tolist()
+[2.0, 1.0, 0.0]
 """
 
 from __future__ import annotations

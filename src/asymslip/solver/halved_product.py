@@ -17,6 +17,18 @@ matrix embedded in a circulant of the same length L' >= 2 n1 - 1 (about N): T21'
 the transpose of T12's, so its spectrum is the complex conjugate of T12's.  Two forward and two
 inverse transforms of L' points and four spectrum products replace two transforms of 2 L'
 points.  Exact up to rounding, like any circulant product.
+
+Examples
+--------
+A 6 x 6 Toeplitz matrix c(|i - j|) by blocks in circulants of 10 = 5 x 2 points:
+
+>>> import numpy as np
+>>> from asymslip.solver.halved_product import HalvedProduct
+>>> column = 1.0 / (1.0 + np.arange(8.0))
+>>> x = np.arange(6.0)
+>>> dense = column[np.abs(np.subtract.outer(np.arange(6), np.arange(6)))]
+>>> bool(np.allclose(HalvedProduct(column, 6, 10).apply(x), (dense * x).sum(axis=1)))
+True
 """
 
 from __future__ import annotations
