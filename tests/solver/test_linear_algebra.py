@@ -53,6 +53,30 @@ def test_two_dimensional_product_equals_the_dense_toeplitz_product(count, monkey
         assert np.allclose(operators.gap.apply(values), expected, rtol=0, atol=1e-13)
 
 
+@pytest.mark.parametrize("count", [1000, 1001])
+def test_product_by_half_size_blocks_equals_the_dense_toeplitz_product(count, monkeypatch):
+    # HalvedProduct, forced on short grids: N = 1000 (halves of 500, sharing their input
+    # array) and 1001 (501 and 500); blocks' circulant 1000 = 125 x 8 laid out in 2-D.
+    monkeypatch.setattr(toeplitz, "CRT_MIN_LENGTH", 0)
+    monkeypatch.setattr(toeplitz, "HALVED_MIN_LENGTH", 0)
+    operators = InfluenceOperators(Grid.spanning(-1.0, 1.0, count), 1.0)
+    assert operators.gap._halves is not None and operators.gap._layout is None
+    dense = operators.gap.column[np.abs(np.subtract.outer(np.arange(count), np.arange(count)))]
+    for _ in range(2):  # the second product reuses the shared arrays
+        values = RNG.standard_normal(count)
+        expected = dense @ values
+        buffer = operators.gap.product_buffer()
+        assert np.allclose(operators.gap.apply(values, out=buffer), expected, rtol=0, atol=1e-13)
+        assert np.allclose(operators.gap.apply(values), expected, rtol=0, atol=1e-13)
+
+
+def test_products_of_a_million_elements_are_taken_by_half_size_blocks():
+    # 2,048,000 points (125 x 16,384) for the whole grid; blocks of 1,024,000 (125 x 8,192).
+    assert transform_length(2 * 10**6 - 1) >= toeplitz.HALVED_MIN_LENGTH
+    assert transform_length(10**6 - 1) == 1_024_000
+    assert transform_length(2 * 10**5 - 1) < toeplitz.HALVED_MIN_LENGTH  # N = 10^5: unchanged
+
+
 def test_two_dimensional_preconditioner_equals_the_one_dimensional_one(monkeypatch):
     # Runs of 800 and 810 elements share a circulant of 900 = 225 x 4 points (one layout,
     # refilled when the run length changes).

@@ -19,7 +19,18 @@ from pathlib import Path
 import pytest
 
 SOLVER = Path(__file__).resolve().parents[2] / "src" / "asymslip" / "solver"
-INNER_LOOP = ("toeplitz", "qp", "tangential", "normal", "period", "run", "inner_products", "grid")
+INNER_LOOP = (
+    "toeplitz",
+    "crt_layout",
+    "halved_product",
+    "qp",
+    "tangential",
+    "normal",
+    "period",
+    "run",
+    "inner_products",
+    "grid",
+)
 BLAS_NAMES = {"dot", "vdot", "inner", "matmul", "tensordot"}
 LINALG = {"norm", "solve", "lstsq", "inv"}
 

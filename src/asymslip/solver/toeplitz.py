@@ -5,8 +5,9 @@ on element i depends on i - j only (``asymslip_gen.solver_influence``): the N x 
 Toeplitz.  Embedded in a circulant of a quick FFT length >= 2N - 1 (:func:`quick_length`), a
 product costs two real FFTs, O(N log N), instead of O(N^2).  From ``CRT_MIN_LENGTH`` = 2^19
 points on, where a one-dimensional transform's passes leave the cache, a circulant is applied
-as a two-dimensional cyclic convolution (:class:`CrtLayout`, lengths from
-:func:`transform_length`).
+as a two-dimensional cyclic convolution (:class:`~asymslip.solver.crt_layout.CrtLayout`,
+lengths from :func:`transform_length`); from ``HALVED_MIN_LENGTH`` on, a product is taken by
+four half-size blocks (:class:`~asymslip.solver.halved_product.HalvedProduct`).
 
 The contact problems solve with a *principal submatrix* (the stick or contact elements, one
 or a few runs of consecutive elements) under one or two equality constraints (force, moment).
@@ -37,6 +38,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from .crt_layout import CrtLayout
+from .halved_product import HalvedProduct
 from .inner_products import combination, gram, inner, norm, row_products, solve_small
 
 FloatArray = NDArray[np.float64]
@@ -52,10 +55,15 @@ PRECONDITIONER_STRETCH = 1.1
 SPECTRUM_CACHE = 8
 #: NumPy 2 lets an FFT write into a given array (``out=``); NumPy 1 allocates.
 _FFT_OUT = "out" in inspect.signature(np.fft.rfft).parameters
-#: Circulants at least this long are applied as two-dimensional transforms (:class:`CrtLayout`).
+#: Circulants at least this long are applied as two-dimensional transforms
+#: (:class:`~asymslip.solver.crt_layout.CrtLayout`).
 CRT_MIN_LENGTH = 2**19
-#: The odd factor of a two-dimensional layout is at least this (else the 2-D form gains nothing).
-CRT_MIN_ODD = 5
+#: Products whose circulant is at least this long are taken as four half-size blocks
+#: (:class:`~asymslip.solver.halved_product.HalvedProduct`).  Measured (CPU time, best of 10,
+#: one process, load average 1.6): at N = 10^6 (2,048,000 points against blocks of 1,024,000)
+#: 39.4 ms a product against 44.1 ms; at N = 800,000 (1,638,400 against 819,200) 33.9 ms
+#: against 30.2 ms, a loss: so only from 2,048,000 points, the quick length for N = 10^6.
+HALVED_MIN_LENGTH = 2_000_000
 #: Layouts of preconditioner circulants kept per operator.
 CRT_LAYOUTS = 2
 
@@ -154,102 +162,6 @@ def _keep_fft_scratch_on_the_heap() -> None:
     del scratch
 
 
-class CrtLayout:
-    """A cyclic convolution of length L = L1 L2 (L1 odd, L2 a power of 2) as a 2-D one.
-
-    The map n -> (n mod L1, u n mod L2), u = 1/L1 modulo L2, is a group isomorphism from
-    Z_L onto Z_L1 x Z_L2 (Chinese remainder theorem; L1 and L2 are coprime), so a circulant
-    product of length L is a 2-D cyclic convolution of the arrays it maps to, computed by 2-D
-    FFTs (real along the contiguous L2 axis, complex along the L1 axis) with no twiddle factors
-    (Good 1958, Thomas 1963).  The 2-D transforms work on rows of L2 points: measured on the
-    development machine at L = 2,048,000 = 125 x 16,384 (rfft, product, irfft), 32-41 ms
-    against 64-71 ms for the one-dimensional transform, whose passes over 16 MB leave the
-    cache; the two maps (in and out) add about 7 ms at N = 10^6.  With the factor u the
-    entries n = r, r + L1, r + 2 L1, ... go to consecutive columns of row r, so each map is
-    two slice copies a row.  Exact up to rounding (~1e-15 relative).
-
-    Parameters
-    ----------
-    length
-        L = odd * 2^a with odd >= ``CRT_MIN_ODD`` (see ``CrtLayout.split``).
-    count
-        How many leading entries of a length-L vector are ever nonzero, and read back.
-    """
-
-    def __init__(self, length: int, count: int) -> None:
-        odd = length
-        while odd % 2 == 0:
-            odd //= 2
-        self.shape = (odd, length // odd)
-        rows, columns = self.shape
-        self.length = length
-        self._inverse = pow(rows, -1, columns)
-        self._values = np.zeros(self.shape)
-        self._spectrum = np.empty((rows, columns // 2 + 1), dtype=np.complex128)
-        self._result = np.empty(self.shape)
-        self._rows = self._plan(count)
-        self.count = count  # the entries written last; the others' positions hold zeros
-
-    def _plan(self, count: int) -> list[tuple[int, int, int, int]]:
-        """Row r holds the entries r, r + L1, r + 2 L1, ... from column u r on (wrapping once
-        at most: fewer than L2 of them): two slice copies a row, no index array (measured at
-        N = 10^6: 7 ms for both maps against 12 ms by fancy indexing)."""
-        rows, columns = self.shape
-        plan = []
-        for row in range(rows):
-            taken = len(range(row, count, rows))
-            start = (self._inverse * row) % columns
-            plan.append((row, start, min(taken, columns - start), taken))
-        return plan
-
-    @staticmethod
-    def split(length: int) -> bool:
-        """Whether ``length`` is odd * 2^a with odd >= ``CRT_MIN_ODD`` and a >= 1."""
-        odd = length
-        while odd % 2 == 0:
-            odd //= 2
-        return odd >= CRT_MIN_ODD and odd < length
-
-    def positions(self, n: NDArray[np.intp]) -> NDArray[np.intp]:
-        """Flat positions in the 2-D array of the entries n of the length-L vector."""
-        rows, columns = self.shape
-        return (n % rows) * columns + (n * self._inverse) % columns
-
-    def transform(self, values: FloatArray) -> NDArray[np.complex128]:
-        """The 2-D spectrum of a length-L vector given as its first entries (the rest zero)."""
-        mapped, step = self._values, self.shape[0]
-        if values.size != self.count:  # another run length
-            if values.size < self.count:  # clear the longer one's entries
-                mapped.fill(0.0)
-            self._rows, self.count = self._plan(values.size), values.size
-        for row, start, first, taken in self._rows:
-            source = values[row::step]
-            mapped[row, start : start + first] = source[:first]
-            if taken > first:
-                mapped[row, : taken - first] = source[first:]
-        spectrum = np.fft.rfft(self._values, axis=-1, out=self._spectrum)
-        return np.fft.fft(spectrum, axis=0, out=spectrum)
-
-    def spectrum_of(self, vector: FloatArray) -> NDArray[np.complex128]:
-        """The 2-D spectrum of a whole length-L vector (a new array)."""
-        mapped = np.empty(self.shape)
-        mapped.reshape(-1)[self.positions(np.arange(self.length, dtype=np.intp))] = vector
-        return np.fft.fft(np.fft.rfft(mapped, axis=-1), axis=0)
-
-    def inverse(self, spectrum: NDArray[np.complex128], out: FloatArray) -> FloatArray:
-        """The entries of the inverse transform of ``spectrum`` (overwritten) that the last
-        ``transform`` was given, written into ``out`` (as many)."""
-        np.fft.ifft(spectrum, axis=0, out=spectrum)
-        result = np.fft.irfft(spectrum, self.shape[1], axis=-1, out=self._result)
-        step = self.shape[0]
-        for row, start, first, taken in self._rows:
-            target = out[row::step]
-            target[:first] = result[row, start : start + first]
-            if taken > first:
-                target[first:] = result[row, : taken - first]
-        return out
-
-
 def transform_length(n: int) -> int:
     """The length the solver transforms for at least ``n`` points: :func:`quick_length`, or from
     ``CRT_MIN_LENGTH`` on the smallest such length with an odd factor to lay out in two
@@ -275,6 +187,15 @@ def laid_out(length: int) -> bool:
 def crt_layout(length: int, count: int) -> CrtLayout | None:
     """The two-dimensional layout of a circulant of ``length`` when :func:`laid_out`, else None."""
     return CrtLayout(length, count) if laid_out(length) else None
+
+
+def halved_product(column: FloatArray, count: int, length: int) -> HalvedProduct | None:
+    """The product by half-size blocks when the circulant of ``length`` points is at least
+    ``HALVED_MIN_LENGTH`` and the blocks' circulant is laid out in two dimensions, else None."""
+    if length < HALVED_MIN_LENGTH or count < 2:
+        return None
+    block_length = transform_length(2 * -(-count // 2) - 1)
+    return HalvedProduct(column, count, block_length) if laid_out(block_length) else None
 
 
 class _SpectrumCache:
@@ -329,9 +250,13 @@ class ToeplitzOperator:
         # complex in place without a cast (measured: 60 us against 95 us by reals and 365 us
         # dividing by reals, for 51,201 entries).
         self._spectrum = np.fft.rfft(embedded).real.astype(np.complex128)
-        # Long circulants are applied in two dimensions (CrtLayout): the embedding is even, so
-        # its 2-D spectrum is real too.
-        self._layout = crt_layout(self._circulant_length, count)
+        # The longest products as four half-size blocks (HalvedProduct), and other long
+        # circulants in two dimensions (CrtLayout): the embedding is even, so its 2-D spectrum
+        # is real too.
+        self._halves = halved_product(self.column, count, self._circulant_length)
+        self._layout = (
+            None if self._halves is not None else crt_layout(self._circulant_length, count)
+        )
         self._spectrum_2d = (
             None
             if self._layout is None
@@ -366,6 +291,8 @@ class ToeplitzOperator:
         in its first N entries, which are returned; otherwise a new array is returned.
         """
         length = self._circulant_length
+        if self._halves is not None and values.ndim == 1:
+            return self._halves.apply(values, out)
         if self._layout is not None and self._spectrum_2d is not None and values.ndim == 1:
             transformed = self._layout.transform(values)
             transformed *= self._spectrum_2d
