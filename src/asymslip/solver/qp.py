@@ -238,7 +238,8 @@ def settling_tolerance(count: int) -> float:
     So from ``SETTLING_REFERENCE`` elements on, the tolerance falls like N^-3/2: 4 solves for
     that step at 10^6, and 3 (unchanged) at 10^5.
     """
-    return LOOSE_TOLERANCE * min(1.0, (SETTLING_REFERENCE / count) ** 1.5)
+    finer: float = (SETTLING_REFERENCE / count) ** 1.5  # float ** float: typed Any
+    return LOOSE_TOLERANCE * min(1.0, finer)
 
 
 def settle_ends(
