@@ -108,8 +108,9 @@ FLAT_BEND = 1e-3
 #:
 #: * between the last node in contact and the first node out (the fit stands): FE_ALLOWANCE_A
 #:   element, in quadrature with the fit's own error.  There the FE's pressures put the fitted
-#:   edge inside the FE's own edge, by 0.055-0.165 element (every such fit measured), more
-#:   where the edge falls a quarter to a half of the way to the next node than at two thirds;
+#:   edge inside the FE's own edge, by 0.055-0.165 element (every such fit measured): by
+#:   0.074-0.165 where the edge falls a quarter to a half of the way to the next node, by
+#:   0.055-0.064 beyond half of it (a trend, too loose for a rule of its own);
 #: * moved to the last node in contact (the fit put it before that node, which carries
 #:   pressure): the larger of the fit's own error -- which then holds the distance it was
 #:   moved -- and FE_ALLOWANCE_A_AT_NODE element.  The FE's edge lies within 0.04-0.19 element
