@@ -26,10 +26,10 @@ How
   discretisation error: on the census of every built-in law (tests/calibration/census.py:
   uniform and graded meshes of 20 to 200 nodes, 240 fits) it covers every true error, and the
   true error is typically half of it (median true/reported 0.48; within a factor of three in
-  89 % of fits, the others on 20-node meshes and near the corner of the rounded flat punch).
+  88 % of fits, the others on 20-node meshes and near the corner of the rounded flat punch).
   For data with scatter it is a 95 % bound: on the census with 1 % scatter (40 draws per
-  mesh) it covers 93-98 % of the true errors, and per mesh the RMS true error is a median
-  0.40-0.52 of the reported one (docs/guide/calibration.md for the distribution).
+  mesh) it covers 94-98 % of the true errors, and per mesh the RMS true error is a median
+  0.42-0.52 of the reported one (docs/guide/calibration.md for the distribution).
 * **the last node in contact is often wrong** in a finite-element result (its element is only
   partly in contact).  The fit is done with and without it; it is kept only when its pressure
   agrees with the fit of the other nodes within that fit's uncertainty, and that uncertainty
