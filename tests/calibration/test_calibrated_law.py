@@ -117,8 +117,15 @@ def test_with_bulk_tension_too():
 def test_every_mesh_size_and_noise(name, kind):
     """20, 50 and 200 nodes, exact and with 1 % noise (the 20-node meshes without noise only:
     with 1 % noise the edges are known to about one node spacing, and the loads here are too
-    close together for that -- see the refusal below)."""
+    close together for that -- see the refusal below).  The rounded flat punch on 20 graded
+    nodes is refused even exact: its edge is known to +-3-4 (a fifth of the half-width, the
+    corner read as scatter) and both fits at P = 70 and 85 put it at the same node, so the
+    calibration refuses the pair by name instead of giving a law."""
     for nodes, noise in ((20, 0.0), (50, 0.0), (50, 0.01), (200, 0.0), (200, 0.01)):
+        if (name, kind, nodes) == ("flat-rounded", "graded", 20):
+            with pytest.raises(InputError, match="the right edge does not advance between"):
+                _law(name, kind, nodes, noise, seed=nodes + 1)
+            continue
         _check_stick_boundaries(name, _law(name, kind, nodes, noise, seed=nodes + 1))
 
 
