@@ -113,3 +113,27 @@ def test_a_checkpoint_answered_no_stops_the_conjugate_gradients_there():
     assert stopped.abandoned and not full.abandoned
     assert seen == [runs.count]  # asked once, with the step over the runs
     assert 0 < stopped.iterations < full.iterations
+
+
+def test_settled_ends_on_a_fine_grid_land_on_the_contact():
+    # At N = 10^5 the solves at LOOSE_TOLERANCE leave the settled ends 2 elements off (measured);
+    # at settling_tolerance (falling like N^-3/2 beyond 10^4 elements) they land on the contact.
+    law = HertzLaw(R=1.0, E_star=1.0)
+    grid = Grid.spanning(-12.0, 12.0, 100_000)
+    solver = NormalSolver(grid, InfluenceOperators(grid, 1.0), law.profile(grid.centres))
+    exact = solver.solve(100.0, 0.0, settle=False).contact
+    first, last = int(np.argmax(exact)), exact.size - 1 - int(np.argmax(exact[::-1]))
+    short = np.zeros_like(exact)
+    shift = (last - first) * 3 // 200
+    short[first + shift : last - shift + 1] = True
+    qp = solver.problem(100.0, 0.0)
+    lower, _, solves = settle_ends(qp, ~short, np.zeros_like(short), Workspace())
+    assert np.count_nonzero(~lower != exact) == 0  # each end moved by about 1,400 elements
+    assert solves <= qp_module.SETTLING_SOLVES
+
+
+def test_the_settling_tolerance_is_the_loose_one_up_to_ten_thousand_elements():
+    assert qp_module.settling_tolerance(2_000) == qp_module.LOOSE_TOLERANCE
+    assert qp_module.settling_tolerance(10_000) == qp_module.LOOSE_TOLERANCE
+    # 10^6 elements: (10^4 / 10^6)^(3/2) = 10^-3 of it.
+    assert np.isclose(qp_module.settling_tolerance(1_000_000), 1e-3 * qp_module.LOOSE_TOLERANCE)

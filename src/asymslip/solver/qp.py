@@ -52,6 +52,9 @@ Method = Literal["primal-dual", "primal (fallback)"]
 DECISION_TOLERANCE = 1e-9
 #: Relative residual of the solves made while the stick/slip sets are still moving.
 LOOSE_TOLERANCE = 1e-6
+#: Grids of up to this many elements settle ends with solves at ``LOOSE_TOLERANCE``; finer
+#: ones at a tolerance falling like N^-3/2 (:func:`settling_tolerance`).
+SETTLING_REFERENCE = 10_000
 #: Moves of the sets after which the solves are loose until the sets settle.
 EXACT_MOVES = 2
 #: Loose solves at most by which :func:`settle_ends` moves the ends of a free run.
@@ -221,6 +224,24 @@ def _band(flags: BoolArray, start: int, step: int) -> int:
     return count
 
 
+def settling_tolerance(count: int) -> float:
+    """The relative residual of :func:`settle_ends`'s solves on a grid of ``count`` elements.
+
+    An end is moved by the bands where the solution crosses its bound or the gradient has the
+    wrong sign, and near a square-root edge both are of order d^(3/2) at d elements from it, in
+    units of the element size h: one element's worth shrinks like h^(3/2) ~ N^-3/2 against the
+    whole solution, which sets the residual's scale.  At ``LOOSE_TOLERANCE`` the bands of a
+    fine grid are lost in the solves' error: measured at N = 10^6 (the paper's Fig. 5 cycle),
+    the solves after the first stopped at once (0 conjugate-gradient iterations) and the ends
+    crept one element a solve, leaving the exact solves that followed 6 elements to walk one or
+    two at a time (14 solves for the first step after the reversal, against 3 at N = 10^5).
+    So from ``SETTLING_REFERENCE`` elements on, the tolerance falls like N^-3/2: 4 solves for
+    that step at 10^6, and 3 (unchanged) at 10^5.
+    """
+    finer: float = (SETTLING_REFERENCE / count) ** 1.5  # float ** float: typed Any
+    return LOOSE_TOLERANCE * min(1.0, finer)
+
+
 def settle_ends(
     qp: BoxQP,
     at_lower: BoolArray,
@@ -254,7 +275,7 @@ def settle_ends(
     for solve in range(SETTLING_SOLVES):
         solves += 1
         y, _, gradient = workspace.solve(
-            qp, lower, upper, guess if solve == 0 else None, LOOSE_TOLERANCE
+            qp, lower, upper, guess if solve == 0 else None, settling_tolerance(qp.domain.size)
         )
         value_tol, gradient_tol = _scales(qp, y)
         outside_wrong = (lower & (gradient < -gradient_tol)) | (upper & (gradient > gradient_tol))
