@@ -117,8 +117,15 @@ def test_with_bulk_tension_too():
 def test_every_mesh_size_and_noise(name, kind):
     """20, 50 and 200 nodes, exact and with 1 % noise (the 20-node meshes without noise only:
     with 1 % noise the edges are known to about one node spacing, and the loads here are too
-    close together for that -- see the refusal below)."""
+    close together for that -- see the refusal below).  The rounded flat punch on 20 graded
+    nodes is refused even exact: its edge is known to +-3-4 (a fifth of the half-width, the
+    corner read as scatter) and both fits at P = 70 and 85 put it at the same node, so the
+    calibration refuses the pair by name instead of giving a law."""
     for nodes, noise in ((20, 0.0), (50, 0.0), (50, 0.01), (200, 0.0), (200, 0.01)):
+        if (name, kind, nodes) == ("flat-rounded", "graded", 20):
+            with pytest.raises(InputError, match="the right edge does not advance between"):
+                _law(name, kind, nodes, noise, seed=nodes + 1)
+            continue
         _check_stick_boundaries(name, _law(name, kind, nodes, noise, seed=nodes + 1))
 
 
@@ -229,18 +236,27 @@ def test_loads_a_law_cannot_take_are_refused_by_name(call, words):
 
 
 def test_a_calibration_too_coarse_for_the_load_step_is_refused_with_the_reason():
-    """20 graded nodes on the flat-rounded law: the right edge is known only to a few units at
-    P = 100 and 105, against an advance of about 0.2 between them, and the b of its (17) falls
-    outside the contact.  The refusal must say that the data, not the physics, decide it, with
-    numbers that show it (the error larger than the advance)."""
+    """20 graded nodes on the flat-rounded law: the right edge is known only to a few units
+    at each load, against an advance of about 0.2 between P = 100 and 105.  The refusal must
+    say that the data, not the physics, decide it, with numbers that show it: either the
+    calibration finds the edge's advance between its loads within the fits' errors, or the b
+    of (17) falls outside the contact and the error is larger than the advance."""
     P1, Q1, P2, Q2 = CYCLE
     with pytest.raises(InputError) as refused:
         slip_zone(_law("flat-rounded", "graded", 20, 0.0, seed=21), LoadCycle(P1, Q1, P2, Q2), MU)
-    found = re.search(
-        r"known only to \+-([0-9.]+) .* advance a2 - a1 = ([0-9.]+)", str(refused.value)
+    message = str(refused.value)
+    found = re.search(r"known only to \+-([0-9.]+) .* advance a2 - a1 = ([0-9.]+)", message)
+    if found:
+        assert float(found.group(1)) > 10 * float(found.group(2))
+        return
+    still = re.search(
+        r"does not advance between P = \S+ \(a = ([0-9.]+) \+- ([0-9.]+)\) and P = \S+ "
+        r"\(a = ([0-9.]+) \+- ([0-9.]+)\); the change is within the fits' errors",
+        message,
     )
-    assert found, refused.value
-    assert float(found.group(1)) > 10 * float(found.group(2))
+    assert still, message
+    a1, e1, a2, e2 = (float(group) for group in still.groups())
+    assert abs(a2 - a1) < min(e1, e2) and min(e1, e2) > 0.2
 
 
 def test_an_error_the_variants_cannot_answer_is_infinite_not_zero():

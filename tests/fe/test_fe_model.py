@@ -209,11 +209,9 @@ def test_the_reported_error_of_L_I_on_the_fe_traces_is_within_three_times_the_tr
     assert float(np.median(ratios_L)) >= 1 / 3
 
 
-def test_the_reported_error_of_a_on_the_fe_traces_is_within_three_times_the_true_one_mostly(run):
-    """The median and at least 5 of the 8 fits of a run (measured: 0.19-0.81, median 0.42, 5 of
-    8 on both runs).  Not the 6 of 8 the issue asks: the FE's own error of a spans 0.04-0.16
-    element on this mesh, and the allowance (FE_ALLOWANCE_A = 0.2 element) that covers the
-    largest of it on the four meshes measured (0.17) is more than three times the smallest."""
+def test_the_reported_error_of_a_on_the_fe_traces_is_within_three_times_the_true_one(run):
+    """Every one of the 8 fits of a run (measured: 0.35-0.96, median 0.79 over both runs; with
+    the fixed 0.2-element allowance before, 0.19-0.81 and 5 of 8): the allowance follows where
+    the fit put the edge (FE_ALLOWANCE_A, FE_ALLOWANCE_A_AT_NODE)."""
     ratios_a, _ = _true_over_reported(run[1])
-    assert np.sum(np.asarray(ratios_a) >= 1 / 3) >= 5
-    assert float(np.median(ratios_a)) >= 1 / 3
+    assert min(ratios_a) >= 1 / 3

@@ -48,7 +48,14 @@ from numpy.typing import NDArray
 from ..errors import InputError
 from ..files.atomic import atomic_write
 from ..laws.calibrated import CalibratedLaw
-from .edge_fit import FE_ALLOWANCE_A, FE_ALLOWANCE_L, EdgeFit, EdgeFitError, fit_edge
+from .edge_fit import (
+    FE_ALLOWANCE_A,
+    FE_ALLOWANCE_A_AT_NODE,
+    FE_ALLOWANCE_L,
+    EdgeFit,
+    EdgeFitError,
+    fit_edge,
+)
 from .traces import SIDES, Side, Traces
 
 FloatArray = NDArray[np.float64]
@@ -422,12 +429,14 @@ def calibrate(
 
 #: The rule for the errors of fits to an FE solution's nodal pressures, stated with the result.
 FE_ALLOWANCE_NOTE = (
-    "FE nodal pressures: each error includes, in quadrature, an allowance for the FE's own "
-    f"discretisation error of {FE_ALLOWANCE_A:g} element at the edge (a) and "
-    f"{FE_ALLOWANCE_L:g} h/a of L_I (h the spacing at the edge, a the half-width), fixed a "
-    "priori: the largest errors of the project's CalculiX model (15 to 30 elements per a) "
-    "with a margin; one FE run cannot show its own, and a model unlike that one may err more "
-    "(compare a run on a finer mesh)"
+    "FE nodal pressures: each error includes an allowance for the FE's own discretisation "
+    f"error: for a, {FE_ALLOWANCE_A:g} element at the edge in quadrature where the fitted edge "
+    "lies between the last node in contact and the first node out, and where the fit was "
+    "moved to the last node in contact, the larger of the distance moved and "
+    f"{FE_ALLOWANCE_A_AT_NODE:g} element; for L_I, {FE_ALLOWANCE_L:g} h/a in quadrature (h the "
+    "spacing at the edge, a the half-width); fixed a priori from the project's CalculiX "
+    "model (15 to 30 elements per a); one FE run cannot show its own, and a model unlike "
+    "that one may err more (compare a run on a finer mesh)"
 )
 
 
