@@ -243,14 +243,7 @@ def predict_slip(
 
 def distance_to(mask: NDArray[np.bool_]) -> NDArray[np.intp]:
     """Each element's distance, in elements, to the nearest element of ``mask`` (at least
-    twice the grid's length where ``mask`` is empty).
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> distance_to(np.array([False, True, False, False, False, True])).tolist()
-    [1, 0, 1, 2, 1, 0]
-    """
+    twice the grid's length where ``mask`` is empty)."""
     index = np.arange(mask.size)
     far = 2 * mask.size
     left = np.maximum.accumulate(np.where(mask, index, -far))
