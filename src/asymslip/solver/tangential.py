@@ -210,11 +210,11 @@ def predict_slip(
     by at most ``PREDICTION_REACH`` times its last advance plus ``PREDICTION_MARGIN``
     elements (the steps of a segment are equal): the extrapolation also marks elements whose
     reserve falls without vanishing.  Measured on the paper's Fig. 5 cycle, at the end of the
-    reloading it marked bands of about 1 % of the grid per side that stay stuck (elements
-    left at the friction limit by the period before, whose reserve only approaches zero), and
-    the active-set iteration then walked them back: 13 and 9 equality-constrained solves for
-    the last two steps at N = 10^6, 7 and 5 at 10^5; with the reach bounded, 1 and 8 at 10^6,
-    1 and 5 at 10^5.  Like any guess, this affects only the work, never the solution.
+    reloading it marked bands that stay stuck (at N = 10^5, 31 elements a side at the last
+    step), and the active-set iteration then walked them back: 13 and 9 equality-constrained
+    solves for the last two steps at N = 10^6 (as counted before this bound), 7 and 5 at 10^5,
+    4 and 2 at 10^4; with the reach bounded, 1 and 8 at 10^6, 1 and 5 at 10^5, 1 and 2 at
+    10^4.  Like any guess, this affects only the work, never the solution.
     """
     (normal_before, state_before), (normal_now, state_now) = before, now
     guess = state_now.slip_sign.copy()
