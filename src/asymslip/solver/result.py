@@ -131,7 +131,7 @@ class SolverResult:
     cycles: int
     steady: bool
     steady_change: float  # largest change of q over the last period / (mu max p)
-    tolerance: float
+    tolerance: float  # the steady tolerance applied (SolverSettings.steady_tolerance)
     load_steps: int
     active_set_solves: int
     cg_iterations: int

@@ -9,7 +9,9 @@ period earlier, the period that ends there repeats forever, and its stick zones,
 slips and energies are the steady ones.  The steady state is declared at the first point where,
 over the last period, no shear traction changed by more than ``tolerance`` times mu max p, and
 the changes still to come -- the approach is geometric: change r/(1 - r) with r the ratio of
-this change to the one found at the point before -- are within the tolerance too.  The result
+this change to the one found at the point before -- are within the tolerance too.  A change
+smaller than the solves resolve on the grid is not counted
+(:attr:`~.settings.SolverSettings.steady_tolerance`).  The result
 is that period, read from point 1 (:mod:`.steady`).  The paper's cycle is steady one segment
 into its second period (1.5 periods: the state at state 2 repeats; before, the whole second
 period was run to see state 1 repeat); 3.5 when one edge does not slip and tension is present,
@@ -238,7 +240,10 @@ def solve(
         Plane-strain contact modulus; needed with a profile, optional with a law.
     tolerance
         Steady-state tolerance: the largest change of a shear traction over one period,
-        relative to mu max p.
+        relative to mu max p.  Where the solves on this grid resolve less, their resolution
+        is applied instead (:func:`~asymslip.solver.settings.steady_resolution`: 2e-9 up to
+        10^4 elements, growing like N^3/2, so above the default from about 29,000 elements);
+        the result's ``tolerance`` is the one applied.
     max_cycles
         Most periods to run; if the steady state is not reached the result says so
         (``steady`` False, and a warning).
@@ -406,7 +411,7 @@ def _run(settings: SolverSettings, started: float) -> SolverResult:
             ratio = change / last if np.isfinite(last) and last else 0.0
             remaining = change * ratio / (1 - ratio) if ratio < 1 else np.inf
             changes[s, j] = change
-            if change <= settings.tolerance and remaining <= settings.tolerance:
+            if change <= settings.steady_tolerance and remaining <= settings.steady_tolerance:
                 steady = True
                 break
         if steady:

@@ -126,8 +126,8 @@ def build_result(
     if not convergence.steady:
         warnings.append(
             f"no steady state after {convergence.cycles} periods: the tractions still changed "
-            f"by {convergence.change:.3g} mu max p (tolerance {settings.tolerance:g}) or the "
-            "stick/slip state moved; the results are those of the last period"
+            f"by {convergence.change:.3g} mu max p (tolerance {settings.steady_tolerance:g}) "
+            "or the stick/slip state moved; the results are those of the last period"
         )
     records = significant_slip(records)
     count = grid.count
@@ -233,7 +233,7 @@ def build_result(
         cycles=convergence.cycles,
         steady=convergence.steady,
         steady_change=float(convergence.change),
-        tolerance=settings.tolerance,
+        tolerance=settings.steady_tolerance,
         load_steps=convergence.load_steps,
         active_set_solves=convergence.active_set_solves,
         cg_iterations=convergence.cg_iterations,
