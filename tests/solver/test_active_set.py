@@ -19,19 +19,30 @@ from asymslip.solver.toeplitz import Checkpoint, Runs, onto_constraints, project
 from .test_linear_algebra import GRID, _check_kkt, _tangential_problem
 
 
-def test_settled_ends_land_within_a_few_elements_of_the_contact():
-    # The normal problem of a Hertz contact from a guess 3 % short at each end: the primal-dual
-    # iteration alone overshoots and halves its way back; the settled ends land next to it.
+def _settle_hertz_from_short_guess(count: int) -> tuple[np.ndarray, np.ndarray, int]:
+    """The normal problem of a Hertz contact (P = 100) on ``count`` elements, its ends settled
+    from a guess 3 % of the contact short at each end.
+
+    Returns the exact contact, the settled set at the lower bound and the solves taken.
+    """
     law = HertzLaw(R=1.0, E_star=1.0)
-    grid = Grid.spanning(-12.0, 12.0, 20_000)
+    grid = Grid.spanning(-12.0, 12.0, count)
     solver = NormalSolver(grid, InfluenceOperators(grid, 1.0), law.profile(grid.centres))
     exact = solver.solve(100.0, 0.0, settle=False).contact
     first, last = int(np.argmax(exact)), exact.size - 1 - int(np.argmax(exact[::-1]))
     short = np.zeros_like(exact)
     shift = (last - first) * 3 // 200
     short[first + shift : last - shift + 1] = True
-    qp = solver.problem(100.0, 0.0)
-    lower, _, solves = settle_ends(qp, ~short, np.zeros_like(short), Workspace())
+    lower, _, solves = settle_ends(
+        solver.problem(100.0, 0.0), ~short, np.zeros_like(short), Workspace()
+    )
+    return exact, lower, solves
+
+
+def test_settled_ends_land_within_a_few_elements_of_the_contact():
+    # The normal problem of a Hertz contact from a guess 3 % short at each end: the primal-dual
+    # iteration alone overshoots and halves its way back; the settled ends land next to it.
+    exact, lower, solves = _settle_hertz_from_short_guess(20_000)
     settled = ~lower
     assert np.count_nonzero(settled != exact) <= 8  # of 2 x 150 elements moved
     assert solves <= qp_module.SETTLING_SOLVES
@@ -118,16 +129,7 @@ def test_a_checkpoint_answered_no_stops_the_conjugate_gradients_there():
 def test_settled_ends_on_a_fine_grid_land_on_the_contact():
     # At N = 10^5 the solves at LOOSE_TOLERANCE leave the settled ends 2 elements off (measured);
     # at settling_tolerance (falling like N^-3/2 beyond 10^4 elements) they land on the contact.
-    law = HertzLaw(R=1.0, E_star=1.0)
-    grid = Grid.spanning(-12.0, 12.0, 100_000)
-    solver = NormalSolver(grid, InfluenceOperators(grid, 1.0), law.profile(grid.centres))
-    exact = solver.solve(100.0, 0.0, settle=False).contact
-    first, last = int(np.argmax(exact)), exact.size - 1 - int(np.argmax(exact[::-1]))
-    short = np.zeros_like(exact)
-    shift = (last - first) * 3 // 200
-    short[first + shift : last - shift + 1] = True
-    qp = solver.problem(100.0, 0.0)
-    lower, _, solves = settle_ends(qp, ~short, np.zeros_like(short), Workspace())
+    exact, lower, solves = _settle_hertz_from_short_guess(100_000)
     assert np.count_nonzero(~lower != exact) == 0  # each end moved by about 1,400 elements
     assert solves <= qp_module.SETTLING_SOLVES
 
