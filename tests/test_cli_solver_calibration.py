@@ -122,6 +122,18 @@ def test_calibrate_then_slip_zone_with_the_calibrated_law_gives_the_hertz_slip_z
     assert calibrated["b_paper"] is None and calibrated["b_exact"] is None  # not derived here
 
 
+def test_calibrate_s_table_says_whether_each_fit_s_errors_are_estimates_or_bounds(
+    hertz_traces, capsys
+):
+    """Hertz on 121 nodes: every row (six loads, two edges) an estimate."""
+    assert main(["calibrate", str(hertz_traces)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    headers = [line for line in lines if "a_error" in line]
+    assert len(headers) == 2 and all("errors" in line.split() for line in headers)
+    rows = [line.split() for line in lines if line.split()[:1] in (["90"], ["115"])]
+    assert len(rows) == 4 and all(row[5] == "estimate" for row in rows)
+
+
 def test_calibrate_refuses_a_single_load_naming_the_file(tmp_path, capsys):
     traces = tmp_path / "one.csv"
     traces.write_text("P,x,p\n100,-1,0\n100,0,1\n100,1,0\n")

@@ -86,6 +86,10 @@ def test_save_and_load_give_back_the_same_calibration(calibration, tmp_path):
         ),
         (lambda text: text.replace('"P": 95.0', '"P": 70.0'), "the loads P must increase"),
         (
+            lambda text: text.replace('"error_kind": "estimate"', '"error_kind": "maybe"', 1),
+            "right[0]: 'error_kind' must be \"estimate\" or \"bound\" (got 'maybe')",
+        ),
+        (
             lambda text: text.replace('"x_edge": ', '"x_edge": 1e3, "ignored": ', 1),
             "is not the distance of 'x_edge'",
         ),
@@ -99,6 +103,26 @@ def test_a_malformed_calibration_file_is_refused_in_one_line(calibration, tmp_pa
         Calibration.load(path)
     message = str(caught.value)
     assert words in message and "\n" not in message and message.startswith("calibration: ")
+
+
+def test_every_fit_says_whether_its_errors_are_estimates_or_bounds(calibration):
+    """Hertz on 120 graded nodes: the windows show the expansion's order, so estimates."""
+    data = calibration.to_dict()
+    assert {entry["error_kind"] for side in ("right", "left") for entry in data[side]} == {
+        "estimate"
+    }
+
+
+def test_a_file_written_before_the_error_kind_loads_with_estimates(calibration, tmp_path):
+    """Files written before fits told estimates from bounds reported them as estimates."""
+    data = calibration.to_dict()
+    for side in ("right", "left"):
+        for entry in data[side]:
+            del entry["error_kind"]
+    path = tmp_path / "old.json"
+    path.write_text(json.dumps(data))
+    loaded = Calibration.load(path)
+    assert all(fit.error_kind == "estimate" for fit in loaded.right + loaded.left)
 
 
 def test_a_missing_file_is_refused_naming_it(tmp_path):

@@ -115,16 +115,46 @@ def test_a_contact_running_off_the_end_of_the_trace_is_refused():
     fit_edge(x, law.pressure(x, REFERENCE_LOAD), "left", REFERENCE_LOAD)  # the other is fine
 
 
+def test_a_fine_exact_trace_gives_error_estimates():
+    """Hertz's pressure on 200 nodes: the nested windows show the expansion's order, so the
+    errors are estimates (within three times the true error: measured 0.45-0.54 here)."""
+    law = LAWS["hertz"]
+    x = mesh("uniform", float(law.half_width(REFERENCE_LOAD)), 200, np.random.default_rng(100))
+    for _, fit, x_edge, L_I in _fit_both_edges(law, x, law.pressure(x, 90.0), 90.0):
+        assert fit.error_kind == "estimate"
+        assert 1 / 3 <= abs(fit.x_edge - x_edge) / fit.a_error <= 1
+        assert 1 / 3 <= abs(fit.L_I - L_I) / fit.L_I_error <= 1
+
+
+def test_a_coarse_trace_short_of_the_asymptotic_range_gives_bounds_and_says_so():
+    """The power law h ~ |x|^1.5 on 20 uniform nodes: Richardson's estimate exceeds the next
+    term's (the windows do not show the expansion's order), so the errors are bounds, named in
+    a note -- they cover the true errors, but by far (measured true/reported 0.11-0.13 for a,
+    0.19-0.21 for L_I)."""
+    law = LAWS["power-1.5"]
+    x = mesh("uniform", float(law.half_width(REFERENCE_LOAD)), 20, np.random.default_rng(0))
+    P = REFERENCE_LOAD
+    for _, fit, x_edge, L_I in _fit_both_edges(law, x, law.pressure(x, P), P):
+        assert fit.error_kind == "bound"
+        assert any("bounds, not estimates" in n and "asymptotic range" in n for n in fit.notes)
+        assert abs(fit.x_edge - x_edge) <= fit.a_error and abs(fit.L_I - L_I) <= fit.L_I_error
+
+
 @pytest.mark.slow
-def test_on_exact_traces_every_reported_error_covers_the_true_one_and_is_about_twice_it():
+def test_on_exact_traces_every_reported_error_covers_the_true_one_and_estimates_are_within_3x():
     """80 fits (tests/calibration/census.py, one seed): every law, both meshes, 20 to 200 nodes.
     Exact data have a deterministic error (truncation, discretisation): per fit, the reported
-    error covers it, is typically twice it (TRUNCATION_SAFETY) and within three times it in
-    most fits (the exceptions: 20-node meshes and the corner of the rounded flat punch)."""
-    a, L_I = census.exact_distributions(census.exact(seeds=1))
+    error covers it, is typically twice it (TRUNCATION_SAFETY), and where the fit reports an
+    estimate (65 of the 80; the rest bounds, on 20- and 35-node meshes of the rounded flat punch
+    and the power laws) within three times it: measured 0.456-0.541 (a) and 0.444-0.54 (L_I);
+    every fit 0.064-0.548 and 0.167-0.587, 88.8 % within three times."""
+    fits = census.exact(seeds=1)
+    a, L_I = census.exact_distributions(fits)
     assert a.maximum <= 1 and L_I.maximum <= 1
     assert 0.4 <= a.median <= 0.6 and 0.4 <= L_I.median <= 0.6
-    assert a.within_three >= 0.8 and L_I.within_three >= 0.8
+    a, L_I = census.exact_distributions(fits, "estimate")
+    assert a.count >= 60
+    assert a.within_three == 1 and L_I.within_three == 1
 
 
 @pytest.mark.slow

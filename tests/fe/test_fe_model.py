@@ -202,11 +202,11 @@ def test_the_reported_errors_on_the_fe_traces_cover_the_true_ones(run):
 
 
 def test_the_reported_error_of_L_I_on_the_fe_traces_is_within_three_times_the_true_one(run):
-    """At least 6 of the 8 fits of a run, and the median (measured: 0.28-0.67, median 0.59,
-    6 of 8 on both runs; the allowance FE_ALLOWANCE_L = 0.6 h/a dominates)."""
+    """Every one of the 8 fits of a run (measured: 0.36-0.72, median 0.58 over both runs; with
+    the fixed 0.6 h/a allowance before, 0.28-0.67 and 6 of 8): the allowance follows where the
+    fit put the edge (FE_ALLOWANCE_L, FE_ALLOWANCE_L_SLOPE)."""
     _, ratios_L = _true_over_reported(run[1])
-    assert np.sum(np.asarray(ratios_L) >= 1 / 3) >= 6
-    assert float(np.median(ratios_L)) >= 1 / 3
+    assert min(ratios_L) >= 1 / 3
 
 
 def test_the_reported_error_of_a_on_the_fe_traces_is_within_three_times_the_true_one(run):

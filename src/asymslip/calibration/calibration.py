@@ -52,6 +52,7 @@ from .edge_fit import (
     FE_ALLOWANCE_A,
     FE_ALLOWANCE_A_AT_NODE,
     FE_ALLOWANCE_L,
+    FE_ALLOWANCE_L_SLOPE,
     EdgeFit,
     EdgeFitError,
     fit_edge,
@@ -266,6 +267,7 @@ def _fit_to_dict(fit: EdgeFit, origin: float) -> dict[str, object]:
         "noise": fit.noise,
         "noise_relative": fit.noise_relative,
         "last_node_used": fit.last_node_used,
+        "error_kind": fit.error_kind,
         "notes": list(fit.notes),
     }
 
@@ -299,6 +301,10 @@ def _fit_from_dict(
     used = entry.get("last_node_used", True)
     if not isinstance(used, bool):
         raise at("'last_node_used' must be true or false")
+    # Files written before fits told estimates from bounds: as they were reported, estimates.
+    kind = entry.get("error_kind", "estimate")
+    if kind not in ("estimate", "bound"):
+        raise at(f'\'error_kind\' must be "estimate" or "bound" (got {kind!r})')
     return EdgeFit(
         side=side,
         P=P,
@@ -318,6 +324,7 @@ def _fit_from_dict(
             if "noise_relative" in entry
             else 0.0
         ),
+        error_kind="bound" if kind == "bound" else "estimate",
     )
 
 
@@ -433,9 +440,11 @@ FE_ALLOWANCE_NOTE = (
     f"error: for a, {FE_ALLOWANCE_A:g} element at the edge in quadrature where the fitted edge "
     "lies between the last node in contact and the first node out, and where the fit was "
     "moved to the last node in contact, the larger of the distance moved and "
-    f"{FE_ALLOWANCE_A_AT_NODE:g} element; for L_I, {FE_ALLOWANCE_L:g} h/a in quadrature (h the "
-    "spacing at the edge, a the half-width); fixed a priori from the project's CalculiX "
-    "model (15 to 30 elements per a); one FE run cannot show its own, and a model unlike "
+    f"{FE_ALLOWANCE_A_AT_NODE:g} element; for L_I, ({FE_ALLOWANCE_L:g} - "
+    f"{FE_ALLOWANCE_L_SLOPE:g} f) h/a in quadrature, f the fraction of the last gap at which the "
+    "fit put the edge (0 where it was moved to the last node; h the spacing at the edge, a the "
+    "half-width); fixed a priori from the project's CalculiX model (15 to 33 elements per a); "
+    "one FE run cannot show its own, and a model unlike "
     "that one may err more (compare a run on a finer mesh)"
 )
 

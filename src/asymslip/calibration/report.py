@@ -130,7 +130,7 @@ def format_calibration(calibration: Calibration) -> str:
         ),
     ]
     header = (
-        f"{'P':>12} {'a':>12} {'a_error':>9} {'L_I':>12} {'L_I_error':>9}  "
+        f"{'P':>12} {'a':>12} {'a_error':>9} {'L_I':>12} {'L_I_error':>9} {'errors':>8}  "
         f"{'window x':>25} {'nodes':>5}"
     )
     for side in SIDES:
@@ -142,7 +142,8 @@ def format_calibration(calibration: Calibration) -> str:
             window = f"{fit.window[0]:.6g} .. {fit.window[1]:.6g}"
             lines.append(
                 f"{fit.P:12.6g} {fit.position(calibration.origin):12.6g} {fit.a_error:9.2g} "
-                f"{fit.L_I:12.6g} {fit.L_I_error:9.2g}  {window:>25} {fit.nodes:5d}"
+                f"{fit.L_I:12.6g} {fit.L_I_error:9.2g} {fit.error_kind:>8}  {window:>25} "
+                f"{fit.nodes:5d}"
             )
             lines += [f"{'':12} note: {note}" for note in fit.notes]
     found = checks(calibration)
