@@ -47,7 +47,7 @@ Where Richardson's estimate is the larger and the truncation part outweighs the 
 census's exact traces the true error was then 0.23-1.2 times Richardson's estimate and
 0.65-3.9 times the next term's, too wide a spread for any one factor (the geometric mean of
 the two, tried, missed held-out fits of the rounded flat punch by up to 4.5 times); elsewhere
-the next term's estimate is the true error within 0.71-1.75 times.  :mod:`.edge_fit` says so
+the next term's estimate is the true error within 0.56-1.75 times.  :mod:`.edge_fit` says so
 with the fit (``EdgeFit.error_kind``).
 
 Measured on the census of :mod:`tests.calibration.census` (every built-in law; uniform and
