@@ -182,6 +182,20 @@ def test_two_loads_make_a_law_and_say_that_its_fit_error_is_not_estimated():
     assert any("cannot be estimated" in note for note in edge.load_warnings(100.0, 105.0))
 
 
+def test_an_edge_whose_calibrated_errors_are_bounds_says_so_with_its_loads():
+    """The power law h ~ |x|^1.5 on 20 uniform nodes: its fits' errors are bounds (the nodes
+    next to the edge are short of the expansion's asymptotic range), at every load of the left
+    edge; Hertz on 100 nodes has none."""
+    edge = _law("power-1.5", "uniform", 20, 0.0, seed=0).for_edge("left")
+    notes = [note for note in edge.load_warnings(100.0, 105.0) if "are bounds" in note]
+    assert notes == [
+        "the calibrated left edge's errors at P = 70, 85, 100, 115, 130, 150 are bounds, not "
+        "estimates (the calibration's notes say why): errors propagated from them are bounds too"
+    ]
+    hertz = _law("hertz", "uniform", 100, 0.0, seed=8).for_edge("left")
+    assert not any("are bounds" in note for note in hertz.load_warnings(100.0, 105.0))
+
+
 def test_loads_outside_the_calibration_are_flagged():
     calibrated = _law("hertz", "uniform", 50, 0.0, seed=3)
     edge = calibrated.for_edge("left")

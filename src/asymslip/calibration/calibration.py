@@ -124,6 +124,10 @@ class Calibration:
             "L_I_error": np.array([fit.L_I_error for fit in fits]),
         }
 
+    def bound_loads(self, side: Side) -> tuple[float, ...]:
+        """The loads at which the edge's errors are bounds, not estimates (EdgeFit.error_kind)."""
+        return tuple(fit.P for fit in self.fits(side) if fit.error_kind == "bound")
+
     def law(self) -> CalibratedLaw:
         """Each edge's law a(P), L_I(P) from this calibration (refused if an edge does not
         advance or has fewer than 2 loads): ``Calibration.load(path).law()``."""

@@ -70,6 +70,8 @@ class CalibrationData(Protocol):
 
     def columns(self, side: Side) -> dict[str, FloatArray]: ...
 
+    def bound_loads(self, side: Side) -> tuple[float, ...]: ...
+
 
 #: The fewest loads an edge law can be fitted through (a power law through two points).
 MIN_LOADS = 2
@@ -337,6 +339,13 @@ class CalibratedEdge:
                 f"the {self.side} edge has {self.points.P.size} calibrated loads: the "
                 "error of its fit between them cannot be estimated (only the data's "
                 "own errors are propagated)"
+            )
+        bounds = self.law.calibration.bound_loads(self.side)
+        if bounds:
+            notes.append(
+                f"the calibrated {self.side} edge's errors at P = "
+                f"{', '.join(f'{P:.6g}' for P in bounds)} are bounds, not estimates (the "
+                "calibration's notes say why): errors propagated from them are bounds too"
             )
         return notes
 
