@@ -145,7 +145,7 @@ def test_on_exact_traces_every_reported_error_covers_the_true_one_and_estimates_
     """80 fits (tests/calibration/census.py, one seed): every law, both meshes, 20 to 200 nodes.
     Exact data have a deterministic error (truncation, discretisation): per fit, the reported
     error covers it, is typically twice it (TRUNCATION_SAFETY), and where the fit reports an
-    estimate (65 of the 80; the rest bounds, on 20- and 35-node meshes of the rounded flat punch
+    estimate (65 of the 80; the rest bounds, on 20- to 50-node meshes of the rounded flat punch
     and the power laws) within three times it: measured 0.456-0.541 (a) and 0.444-0.54 (L_I);
     every fit 0.064-0.548 and 0.167-0.587, 88.8 % within three times."""
     fits = census.exact(seeds=1)

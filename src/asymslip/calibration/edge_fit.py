@@ -33,8 +33,8 @@ How
   with a note): a *bound* where the edge can only be placed at the last node in contact or in
   the gap after it, or where the truncation part outweighs the scatter part and rests on
   Richardson's estimate at an order the windows do not show (the nodes next to the edge are
-  short of the expansion's asymptotic range: 20- and 35-node meshes of the rounded flat punch
-  and the power laws); an *estimate* otherwise.  On the census's exact traces the 200
+  short of the expansion's asymptotic range: mostly 20- and 35-node meshes of the rounded flat
+  punch and the power laws); an *estimate* otherwise.  On the census's exact traces the 200
   estimates of 240 fits lie within a factor of three of the true error (0.36-0.55 for a, all;
   0.33-0.54 for L_I, 99 %), on 400 more 99.1 % and 98.5 %; the bounds cover it but may exceed
   it many times (true/reported down to 0.011).
