@@ -44,8 +44,8 @@ error.  The error of a window's a (and likewise of its L_I) has two parts, added
 
 Where Richardson's estimate is the larger and the truncation part outweighs the scatter part
 (:attr:`WindowErrors.richardson_dominates`), the error is a bound, not an estimate: on the
-census's exact traces the true error was then 0.23-1.2 times Richardson's estimate and
-0.65-3.9 times the next term's, too wide a spread for any one factor (the geometric mean of
+census's exact traces the true error was then 0.23-1.5 times Richardson's estimate and
+0.62-3.9 times the next term's, too wide a spread for any one factor (the geometric mean of
 the two, tried, missed held-out fits of the rounded flat punch by up to 4.5 times); elsewhere
 the next term's estimate is the true error within 0.56-1.75 times.  :mod:`.edge_fit` says so
 with the fit (``EdgeFit.error_kind``).

@@ -130,9 +130,9 @@ FLAT_BEND = 1e-3
 #: quadrature: FE_ALLOWANCE_L less FE_ALLOWANCE_L_SLOPE times the fraction f (0 to 1) of the
 #: last gap at which the fit put the edge (f = 0 for a fit moved to the last node).  L_I's FE
 #: error follows a's: a fit whose edge lies inside the FE's edge makes up for it with a larger
-#: L_I (over the 80 fits that stand, the two errors correlate at -0.84, 2.3 h/a of L_I per
-#: element), and the edge lies further inside where f is small -- L_I's error in h/a falls
-#: from 0.39-0.54 at f = 0.2-0.3 to 0.13-0.24 at f = 0.5-0.6 (0.41 - 0.30 f by least
+#: L_I (over the 75 fits that stand on the twelve runs below, the errors correlate at -0.90,
+#: 2.6 h/a per element), and the edge lies further inside where f is small -- L_I's error in
+#: h/a falls from 0.39-0.54 at f = 0.2-0.3 to 0.13-0.24 at f = 0.5-0.6 (0.41 - 0.30 f by least
 #: squares, scatter 0.07).  Set on the twelve runs below (96 fits): every error covered (at
 #: most 0.91), 91 within a factor of three (84 with a fixed 0.6 h/a, which 12 runs before
 #: were set with); on three runs not used to set it (21 elements; 26 with tension; 19 with the
@@ -171,8 +171,8 @@ FE_ALLOWANCE_L = 0.62
 FE_ALLOWANCE_L_SLOPE = 0.25
 #: Why a fit's errors are bounds, not estimates (the note printed with it): its truncation
 #: part rests on Richardson's estimate at an order the windows do not show (larger than the
-#: next term's: on the census's exact traces the true error was then 0.23-1.2 times
-#: Richardson's estimate and 0.65-3.9 times the next term's, so that no one factor brings it
+#: next term's: on the census's exact traces the true error was then 0.23-1.5 times
+#: Richardson's estimate and 0.62-3.9 times the next term's, so that no one factor brings it
 #: within three times), or the edge could only be placed in the last gap or at the last node.
 BOUND_RICHARDSON = (
     "the nested windows do not show the edge expansion's order (the nodes next to the edge "
